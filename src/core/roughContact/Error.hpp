@@ -1,0 +1,41 @@
+// Errors of the core. Every failure on bad input names where it came from:
+// InputError a file and line, ParameterError the parameter. Nothing returns NaN.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace roughContact {
+
+/// Bad content of an input file; what() reads "FILE:LINE: message" (LINE omitted when 0).
+class InputError : public std::runtime_error {
+public:
+    InputError(const std::string& file, long line, const std::string& message);
+
+    const std::string& file() const noexcept { return file_; }
+    long line() const noexcept { return line_; }
+    const std::string& message() const noexcept { return message_; }
+
+private:
+    std::string file_;
+    long line_;
+    std::string message_;
+};
+
+/// A parameter out of its range or missing; what() reads "NAME: message".
+class ParameterError : public std::invalid_argument {
+public:
+    ParameterError(const std::string& parameter, const std::string& message);
+
+    const std::string& parameter() const noexcept { return parameter_; }
+
+private:
+    std::string parameter_;
+};
+
+/// Throws ParameterError unless value is finite and > 0.
+double requirePositive(const std::string& parameter, double value);
+/// Throws ParameterError unless value is finite.
+double requireFinite(const std::string& parameter, double value);
+
+} // namespace roughContact

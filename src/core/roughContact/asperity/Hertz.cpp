@@ -1,0 +1,35 @@
+#include "roughContact/asperity/Hertz.hpp"
+
+#include "roughContact/Error.hpp"
+
+#include <cmath>
+
+namespace roughContact {
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+}
+
+Hertz::Hertz(double Eprime) : Eprime_(requirePositive("reduced modulus E'", Eprime)) {}
+
+double Hertz::area(double w, double R) const
+{
+    return pi * R * w;
+}
+
+double Hertz::force(double w, double R) const
+{
+    return (4.0 / 3.0) * Eprime_ * std::sqrt(R) * w * std::sqrt(w);
+}
+
+double Hertz::areaAtForce(double F, double R) const
+{
+    return pi * std::cbrt(std::pow(3.0 * F * R / (4.0 * Eprime_), 2.0)); // seed Eq. 20
+}
+
+double Hertz::interference(double F, double R) const
+{
+    return std::cbrt(std::pow(3.0 * F / (4.0 * Eprime_ * std::sqrt(R)), 2.0));
+}
+
+} // namespace roughContact

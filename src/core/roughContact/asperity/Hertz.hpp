@@ -1,0 +1,24 @@
+// Hertz: an elastic sphere against a rigid flat (seed Eq. 20).
+#pragma once
+
+#include "roughContact/asperity/SphericalAsperity.hpp"
+
+namespace roughContact {
+
+/// A = pi R w, F = (4/3) E' R^(1/2) w^(3/2); from the force, A = pi (3 F R / (4 E'))^(2/3).
+class Hertz final : public SphericalAsperity {
+public:
+    explicit Hertz(double Eprime);
+
+    std::string name() const override { return "hertz"; }
+    double area(double w, double R) const override;
+    double force(double w, double R) const override;
+    double areaAtForce(double F, double R) const override;
+    /// Interference at force F: w = (3 F / (4 E' R^(1/2)))^(2/3).
+    double interference(double F, double R) const;
+
+private:
+    double Eprime_;
+};
+
+} // namespace roughContact

@@ -1,0 +1,165 @@
+#include "roughContact/asperity/JacksonGreen.hpp"
+
+#include "roughContact/Error.hpp"
+
+#include <Eigen/Dense>
+#include <boost/math/tools/roots.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace roughContact {
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+
+// H_G / S_y of seed Eq. 19 and its slope in x = a/R.
+double eq19(double x)
+{
+    return 2.84 * (1.0 - std::exp(-0.82 * std::pow(x, -0.7)));
+}
+double eq19Slope(double x)
+{
+    return -2.84 * std::exp(-0.82 * std::pow(x, -0.7)) * 0.82 * 0.7 * std::pow(x, -1.7);
+}
+} // namespace
+
+JacksonGreen::JacksonGreen(double Eprime, double nu, double E, double Sy)
+    : onset_(Eprime, nu, Sy), Sy_(Sy)
+{
+    requirePositive("Young's modulus E", E);
+    B_ = 0.14 * std::exp(23.0 * Sy / E);       // seed Eqs. 17-18
+    floorCoefficient_ = 1.5 / onset_.C();      // A_c S_y / F_c
+
+    // The cubic of seed §2.2: value and slope of Eq. 19 at x0 = 0.41, value 1 and slope 0 at 1.
+    const double x0 = cubicStart;
+    Eigen::Matrix4d M;
+    M << 1.0, x0, x0 * x0, x0 * x0 * x0,   //
+        0.0, 1.0, 2.0 * x0, 3.0 * x0 * x0, //
+        1.0, 1.0, 1.0, 1.0,                //
+        0.0, 1.0, 2.0, 3.0;
+    const Eigen::Vector4d rhs(eq19(x0), eq19Slope(x0), 1.0, 0.0);
+    const Eigen::Vector4d c = M.fullPivLu().solve(rhs);
+    cubic_ = {c[0], c[1], c[2], c[3]};
+
+    // Complete contact where a/R = 1, i.e. A/A_c = 1 / kappa (A_c = pi R w_c, a^2 = A/pi).
+    const double kappa = onset_.interferenceRatio();
+    if (elasticLimit * kappa >= 1.0) {
+        wStarComplete_ = 1.0 / kappa; // reached while still Hertzian
+    } else {
+        wStarComplete_ = std::exp((-std::log(kappa) + B_ * std::log(elasticLimit)) / (1.0 + B_));
+    }
+
+    // Bracketing table of the loading path above w* = 1.9: 40 points a decade.
+    if (wStarComplete_ > elasticLimit) {
+        const double decades = std::log10(wStarComplete_ / elasticLimit);
+        const auto n = static_cast<std::size_t>(std::ceil(40.0 * decades)) + 1;
+        tableW_.resize(n + 1);
+        tableF_.resize(n + 1);
+        for (std::size_t j = 0; j <= n; ++j) {
+            const double w = j == n ? wStarComplete_
+                                    : elasticLimit * std::pow(10.0, decades * double(j) / double(n));
+            tableW_[j] = w;
+            tableF_[j] = forceRatioRaw(w);
+            if (j > 0) {
+                tableF_[j] = std::max(tableF_[j], tableF_[j - 1]);
+            }
+        }
+    }
+}
+
+double JacksonGreen::hardnessRatio(double x) const
+{
+    if (x <= cubicStart) {
+        return eq19(x);
+    }
+    if (x >= 1.0) {
+        return 1.0;
+    }
+    return cubic_[0] + x * (cubic_[1] + x * (cubic_[2] + x * cubic_[3]));
+}
+
+double JacksonGreen::areaRatio(double wStar) const
+{
+    const double w = std::min(wStar, wStarComplete_);
+    if (w < elasticLimit) {
+        return w;
+    }
+    return w * std::pow(w / elasticLimit, B_); // seed Eq. 15 over A_c = pi R w_c
+}
+
+double JacksonGreen::forceRatioEq16(double w) const
+{
+    const double aOverR = std::sqrt(onset_.interferenceRatio() * areaRatio(w));
+    const double HG = hardnessRatio(aOverR); // H_G / S_y
+    return std::exp(-0.25 * std::pow(w, 5.0 / 12.0)) * std::pow(w, 1.5) +
+           4.0 * HG / onset_.C() * (1.0 - std::exp(-std::pow(w, 5.0 / 9.0) / 25.0)) * w;
+}
+
+double JacksonGreen::forceRatioRaw(double w) const
+{
+    if (w < elasticLimit) {
+        return w * std::sqrt(w);
+    }
+    return std::max(forceRatioEq16(w), floorCoefficient_ * areaRatio(w)); // floor F >= A S_y
+}
+
+double JacksonGreen::forceRatio(double wStar) const
+{
+    return forceRatioRaw(std::min(wStar, wStarComplete_));
+}
+
+double JacksonGreen::area(double w, double R) const
+{
+    return onset_.area(R) * areaRatio(w / onset_.interference(R));
+}
+
+double JacksonGreen::force(double w, double R) const
+{
+    return onset_.force(R) * forceRatio(w / onset_.interference(R));
+}
+
+double JacksonGreen::interferenceRatioAtForce(double q) const
+{
+    const double hertzTop = elasticLimit * std::sqrt(elasticLimit);
+    if (q <= hertzTop || tableW_.empty()) {
+        return std::min(std::cbrt(q * q), wStarComplete_);
+    }
+    if (q <= tableF_.front()) {
+        return elasticLimit; // inside the force jump at 1.9 w_c
+    }
+    if (q > tableF_.back()) {
+        return std::numeric_limits<double>::infinity(); // beyond complete contact
+    }
+    const auto it = std::lower_bound(tableF_.begin(), tableF_.end(), q);
+    const std::size_t j = static_cast<std::size_t>(it - tableF_.begin()); // tableF_[j-1] < q <= tableF_[j]
+    double lo = tableW_[j - 1];
+    double hi = tableW_[j];
+    // The running maximum can sit above the raw law where it dips; the loading path then holds.
+    if (forceRatioRaw(hi) < q) {
+        return hi;
+    }
+    const auto f = [&](double w) { return forceRatioRaw(w) - q; };
+    double flo = f(lo);
+    if (flo >= 0.0) {
+        return lo;
+    }
+    std::uintmax_t iterations = 100;
+    const auto r = boost::math::tools::toms748_solve(f, lo, hi, flo, f(hi),
+                                                     boost::math::tools::eps_tolerance<double>(48),
+                                                     iterations);
+    return 0.5 * (r.first + r.second);
+}
+
+double JacksonGreen::areaAtForce(double F, double R) const
+{
+    const double w = interferenceRatioAtForce(F / onset_.force(R));
+    if (!(w < wStarComplete_)) {
+        return std::numeric_limits<double>::infinity();
+    }
+    return onset_.area(R) * areaRatio(w);
+}
+
+} // namespace roughContact

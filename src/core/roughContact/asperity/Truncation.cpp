@@ -1,0 +1,37 @@
+#include "roughContact/asperity/Truncation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace roughContact {
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+}
+
+Truncation::Truncation(double Eprime, double nu, double Sy)
+    : hertz_(Eprime), onset_(Eprime, nu, Sy), H_(hardnessCoefficient * Sy)
+{
+}
+
+double Truncation::area(double w, double R) const
+{
+    return w < onset_.interference(R) ? hertz_.area(w, R) : 2.0 * pi * R * w;
+}
+
+double Truncation::force(double w, double R) const
+{
+    return w < onset_.interference(R) ? hertz_.force(w, R) : H_ * 2.0 * pi * R * w;
+}
+
+double Truncation::areaAtForce(double F, double R) const
+{
+    if (F < onset_.force(R)) {
+        return hertz_.areaAtForce(F, R);
+    }
+    // Plastic branch: w = F / (2 pi R H), held at w_c inside the force jump.
+    const double w = std::max(onset_.interference(R), F / (2.0 * pi * R * H_));
+    return 2.0 * pi * R * w;
+}
+
+} // namespace roughContact

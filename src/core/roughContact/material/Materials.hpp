@@ -1,0 +1,49 @@
+// Elastic and plastic properties of a contact pair (physics.md §1, seed Table 1).
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace roughContact {
+
+/// One solid: Young's modulus E [Pa], Poisson's ratio nu, yield strength S_y [Pa] (optional:
+/// only the elasto-plastic models need it).
+struct Material {
+    double E = 0.0;
+    double nu = 0.0;
+    std::optional<double> Sy;
+};
+
+/// What the contact models need of the pair:
+/// - E' from 1/E' = (1-nu1^2)/E1 + (1-nu2^2)/E2 (physics.md §1),
+/// - the yield strength S_y, Poisson's ratio nu and modulus E of the material that yields
+///   first (seed Eq. 12: C uses "the Poisson ratio of the material that yields first";
+///   Eq. 18: e_y = S_y/E).
+class ContactMaterials {
+public:
+    /// A rough solid against a rigid flat: E' = E/(1-nu^2).
+    static ContactMaterials againstRigidFlat(const Material& m);
+    /// Two solids; the one with the lower S_y yields first (the first when neither has S_y).
+    static ContactMaterials pair(const Material& a, const Material& b);
+    /// E' given directly. nu (optional) of the yielding material; its E is taken as
+    /// E'(1-nu^2), the rigid-flat reading of the seed's Table 1 (E' = 200 GPa, nu = 0.32).
+    static ContactMaterials fromReducedModulus(double Eprime, std::optional<double> nu,
+                                               std::optional<double> Sy);
+
+    double reducedModulus() const noexcept { return Eprime_; }
+    bool hasYieldStrength() const noexcept { return Sy_.has_value(); }
+    bool hasPoissonRatio() const noexcept { return nu_.has_value(); }
+    /// Throw ParameterError naming `model` when the property is missing.
+    double yieldStrength(const std::string& model) const;
+    double poissonRatio(const std::string& model) const;
+    /// Young's modulus of the yielding material (seed Eq. 18).
+    double youngModulus(const std::string& model) const;
+
+private:
+    double Eprime_ = 0.0;
+    std::optional<double> nu_;
+    std::optional<double> E_;
+    std::optional<double> Sy_;
+};
+
+} // namespace roughContact

@@ -1,0 +1,27 @@
+// What every rough-surface contact model answers: real contact area at a load.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace roughContact {
+
+class ContactModel {
+public:
+    virtual ~ContactModel() = default;
+
+    /// The name users select it by (`hertz`, ..., `greenwoodWilliamson`, `majumdarBhushan`).
+    virtual std::string name() const = 0;
+
+    /// Real contact area fraction A_r / A_n (in [0, 1]) at the dimensionless load
+    /// F / (A_n E') (>= 0, finite; ParameterError otherwise).
+    virtual double areaFraction(double load) const = 0;
+
+    /// areaFraction at each load.
+    std::vector<double> areaFractions(const std::vector<double>& loads) const;
+};
+
+/// Throws ParameterError unless load is finite and >= 0.
+double checkLoad(double load);
+
+} // namespace roughContact

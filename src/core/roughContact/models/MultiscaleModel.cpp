@@ -1,0 +1,73 @@
+#include "roughContact/models/MultiscaleModel.hpp"
+
+#include "roughContact/Error.hpp"
+
+#include <cmath>
+
+namespace roughContact {
+
+MultiscaleModel::MultiscaleModel(const Spectrum& spectrum, double Eprime,
+                                 std::shared_ptr<const AsperityModel> asperity)
+    : An_(spectrum.nominalArea()), Eprime_(requirePositive("reduced modulus E'", Eprime)),
+      asperity_(std::move(asperity))
+{
+    if (!asperity_) {
+        throw ParameterError("asperity model", "none given");
+    }
+    for (std::size_t i = 0; i < spectrum.size(); ++i) {
+        if (spectrum.amplitude(i) > 0.0) {
+            levels_.push_back(Level::of(spectrum.frequency(i), spectrum.amplitude(i)));
+            index_.push_back(i);
+        }
+    }
+}
+
+double MultiscaleModel::areaFraction(double load) const
+{
+    if (checkLoad(load) == 0.0) {
+        return 0.0;
+    }
+    const double F = load * An_ * Eprime_;
+    double A = An_;
+    for (const Level& level : levels_) {
+        const double r = asperity_->areaRatio(F / A, level);
+        if (r < 1.0) { // assumption 5
+            A *= r;
+        }
+    }
+    return A / An_;
+}
+
+std::vector<LevelState> MultiscaleModel::trace(double load) const
+{
+    checkLoad(load);
+    std::vector<LevelState> out;
+    out.reserve(levels_.size());
+    const double F = load * An_ * Eprime_;
+    double A = An_;
+    for (std::size_t k = 0; k < levels_.size(); ++k) {
+        const Level& level = levels_[k];
+        LevelState s;
+        s.index = index_[k];
+        s.frequency = level.frequency;
+        s.amplitude = level.amplitude;
+        s.density = level.density;
+        s.radius = level.radius;
+        s.asperities = level.density * A;
+        s.asperityForce = F / s.asperities;
+        if (F > 0.0) {
+            const double r = asperity_->areaRatio(F / A, level);
+            s.complete = !(r < 1.0);
+            if (!s.complete) {
+                A *= r;
+            }
+        } else {
+            A = 0.0;
+        }
+        s.area = A;
+        out.push_back(s);
+    }
+    return out;
+}
+
+} // namespace roughContact

@@ -1,0 +1,53 @@
+// The multi-scale framework of seed §2.1 (Eqs. 1-2, assumptions 1-5).
+#pragma once
+
+#include "roughContact/asperity/AsperityModel.hpp"
+#include "roughContact/models/ContactModel.hpp"
+#include "roughContact/surface/Spectrum.hpp"
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace roughContact {
+
+/// The state of one frequency level at one load (the seed's Fig. 5).
+struct LevelState {
+    std::size_t index = 0;      ///< position in the spectrum (0-based)
+    double frequency = 0.0;     ///< f_i [1/m]
+    double amplitude = 0.0;     ///< beta_i [m]
+    double density = 0.0;       ///< eta_i [1/m^2]
+    double radius = 0.0;        ///< R_i [m]
+    double asperities = 0.0;    ///< N_i = eta_i A_{i-1}
+    double asperityForce = 0.0; ///< Fbar_i = F / N_i [N]
+    double area = 0.0;          ///< A_i [m^2]
+    bool complete = false;      ///< assumption 5 held the area: A_i = A_{i-1}
+};
+
+/// Built once from a surface, the materials (inside the asperity model) and an asperity law;
+/// then asked for A_r/A_n at many loads, each a single pass over the levels:
+///   A_0 = A_n; N_i = eta_i A_{i-1}; Fbar_i = F / N_i; A_i = min(A_{i-1}, N_i Abar_i);
+///   A_r = A_imax. Levels with zero amplitude carry nothing and are skipped.
+class MultiscaleModel final : public ContactModel {
+public:
+    MultiscaleModel(const Spectrum& spectrum, double Eprime, std::shared_ptr<const AsperityModel> asperity);
+
+    std::string name() const override { return asperity_->name(); }
+    double areaFraction(double load) const override;
+    /// Every level's state at the load (levels with zero amplitude omitted).
+    std::vector<LevelState> trace(double load) const;
+
+    const AsperityModel& asperityModel() const noexcept { return *asperity_; }
+    double nominalArea() const noexcept { return An_; }
+    double reducedModulus() const noexcept { return Eprime_; }
+    const std::vector<Level>& levels() const noexcept { return levels_; }
+
+private:
+    std::vector<Level> levels_;
+    std::vector<std::size_t> index_;
+    double An_;
+    double Eprime_;
+    std::shared_ptr<const AsperityModel> asperity_;
+};
+
+} // namespace roughContact

@@ -1,0 +1,271 @@
+#include "roughContact/surface/Spectrum.hpp"
+
+#include "roughContact/Error.hpp"
+#include "roughContact/surface/Profile.hpp"
+
+#include <fftw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <memory>
+#include <sstream>
+
+namespace roughContact {
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+
+std::string where(const std::string& source)
+{
+    return source.empty() ? std::string("spectrum") : source;
+}
+} // namespace
+
+Spectrum::Spectrum(std::vector<double> frequencies, std::vector<double> amplitudes, double length,
+                   std::string source)
+    : f_(std::move(frequencies)), beta_(std::move(amplitudes)), length_(length),
+      source_(std::move(source))
+{
+    const std::string w = where(source_);
+    requirePositive(w + ": scan length L", length_);
+    if (f_.size() != beta_.size()) {
+        throw InputError(w, 0, "frequencies and amplitudes differ in number");
+    }
+    if (f_.empty()) {
+        throw InputError(w, 0, "a spectrum needs at least one level");
+    }
+    for (std::size_t i = 0; i < f_.size(); ++i) {
+        if (!std::isfinite(f_[i]) || !(f_[i] > 0.0)) {
+            std::ostringstream os;
+            os << "level " << i + 1 << ": frequency must be finite and positive, got " << f_[i];
+            throw InputError(w, 0, os.str());
+        }
+        if (i > 0 && !(f_[i] > f_[i - 1])) {
+            std::ostringstream os;
+            os << "level " << i + 1 << ": frequencies must increase strictly (" << f_[i - 1]
+               << " then " << f_[i] << ")";
+            throw InputError(w, 0, os.str());
+        }
+        if (!std::isfinite(beta_[i]) || beta_[i] < 0.0) {
+            std::ostringstream os;
+            os << "level " << i + 1 << ": amplitude must be finite and >= 0, got " << beta_[i];
+            throw InputError(w, 0, os.str());
+        }
+    }
+}
+
+Spectrum Spectrum::fromProfile(const Profile& profile)
+{
+    const Profile p = profile.detrended();
+    const std::size_t n = p.size();
+    std::vector<double> in(p.heights());
+    const std::size_t nc = n / 2 + 1;
+    std::unique_ptr<fftw_complex, decltype(&fftw_free)> out(
+        static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * nc)), &fftw_free);
+    if (!out) {
+        throw std::bad_alloc();
+    }
+    // FFTW_ESTIMATE does not overwrite the input and plans in microseconds.
+    fftw_plan plan = fftw_plan_dft_r2c_1d(static_cast<int>(n), in.data(), out.get(), FFTW_ESTIMATE);
+    fftw_execute(plan);
+    fftw_destroy_plan(plan);
+
+    const double L = p.length();
+    const double nd = static_cast<double>(n);
+    const std::size_t kmax = n / 2;
+    std::vector<double> f;
+    std::vector<double> beta;
+    f.reserve(kmax);
+    beta.reserve(kmax);
+    for (std::size_t k = 1; k <= kmax; ++k) {
+        const double mag = std::hypot(out.get()[k][0], out.get()[k][1]);
+        const bool nyquist = (n % 2 == 0) && (k == kmax);
+        f.push_back(static_cast<double>(k) / L);
+        beta.push_back((nyquist ? 1.0 : 2.0) * mag / nd);
+    }
+    Spectrum s(std::move(f), std::move(beta), L, profile.source());
+    s.nyquist_ = (n % 2 == 0);
+    return s;
+}
+
+Spectrum Spectrum::powerLaw(double bm, double m, double fmin, double fmax, double length)
+{
+    requirePositive("power law b_m", bm);
+    requireFinite("power law m", m);
+    requirePositive("power law fmin", fmin);
+    requirePositive("power law fmax", fmax);
+    if (!(fmax >= fmin)) {
+        throw ParameterError("power law fmax", "must not be below fmin");
+    }
+    const double L = length > 0.0 ? requirePositive("power law length", length) : 1.0 / fmin;
+    // Levels i/L inside [fmin, fmax]; the small slack keeps i = fmin L when it is an integer.
+    const auto i0 = static_cast<long long>(std::ceil(fmin * L * (1.0 - 1e-12)));
+    const auto i1 = static_cast<long long>(std::floor(fmax * L * (1.0 + 1e-12)));
+    if (i1 < std::max(1LL, i0)) {
+        throw ParameterError("power law", "no level i/L lies between fmin and fmax");
+    }
+    std::vector<double> f;
+    std::vector<double> beta;
+    for (long long i = std::max(1LL, i0); i <= i1; ++i) {
+        const double fi = static_cast<double>(i) / L;
+        f.push_back(fi);
+        beta.push_back(bm * std::pow(fi, -m));
+    }
+    return Spectrum(std::move(f), std::move(beta), L, "power law");
+}
+
+Spectrum Spectrum::fractal(double D, double G, double fmin, double fmax, double length)
+{
+    requireFinite("fractal dimension D", D);
+    if (!(D > 1.0 && D < 2.0)) {
+        throw ParameterError("fractal dimension D", "must lie strictly between 1 and 2");
+    }
+    requirePositive("fractal roughness G", G);
+    const double L = length > 0.0 ? requirePositive("fractal length", length) : 1.0 / fmin;
+    // beta^2 = 2 S(f) df with df = 1/L and S(f) = G^(2(D-1)) / (2 ln(gamma) f^(5-2D)):
+    // a power law beta = b_m f^-m with m = (5-2D)/2, b_m = sqrt(G^(2(D-1)) / (ln(gamma) L)).
+    const double lnGamma = std::log(1.5);
+    const double bm = std::sqrt(std::pow(G, 2.0 * (D - 1.0)) / (lnGamma * L));
+    Spectrum s = powerLaw(bm, 0.5 * (5.0 - 2.0 * D), fmin, fmax, L);
+    s.source_ = "fractal spectrum";
+    return s;
+}
+
+double Spectrum::variance() const
+{
+    double s = 0.0;
+    for (double b : beta_) {
+        s += 0.5 * b * b;
+    }
+    return s;
+}
+
+double Spectrum::profileVariance() const
+{
+    double s = variance();
+    if (nyquist_) {
+        s += 0.5 * beta_.back() * beta_.back();
+    }
+    return s;
+}
+
+Spectrum Spectrum::truncated(double fmax) const
+{
+    std::vector<double> f;
+    std::vector<double> beta;
+    for (std::size_t i = 0; i < f_.size() && f_[i] <= fmax; ++i) {
+        f.push_back(f_[i]);
+        beta.push_back(beta_[i]);
+    }
+    if (f.empty()) {
+        std::ostringstream os;
+        os << "no level at or below " << fmax << " 1/m";
+        throw ParameterError("fmax", os.str());
+    }
+    Spectrum s(std::move(f), std::move(beta), length_, source_);
+    s.nyquist_ = nyquist_ && s.size() == size();
+    return s;
+}
+
+namespace {
+// A level's power spread evenly over its frequency bin, for re-binning.
+struct Bin {
+    double lo;
+    double hi;
+    double power;
+};
+
+std::vector<Bin> binsOf(const Spectrum& s)
+{
+    const auto& f = s.frequencies();
+    const auto& b = s.amplitudes();
+    std::vector<Bin> bins(f.size());
+    for (std::size_t i = 0; i < f.size(); ++i) {
+        const double left = i > 0 ? 0.5 * (f[i] + f[i - 1])
+                                  : (f.size() > 1 ? f[0] - 0.5 * (f[1] - f[0]) : 0.5 * f[0]);
+        const double right = i + 1 < f.size() ? 0.5 * (f[i] + f[i + 1]) : f[i] + (f[i] - left);
+        double power = 0.5 * b[i] * b[i];
+        if (s.hasNyquistLevel() && i + 1 == f.size()) {
+            power *= 2.0;
+        }
+        bins[i] = {std::max(left, 0.0), right, power};
+    }
+    return bins;
+}
+
+// Power of `bins` falling in [lo, hi).
+double powerIn(const std::vector<Bin>& bins, double lo, double hi)
+{
+    double p = 0.0;
+    for (const Bin& b : bins) {
+        const double overlap = std::min(hi, b.hi) - std::max(lo, b.lo);
+        if (overlap > 0.0 && b.hi > b.lo) {
+            p += b.power * overlap / (b.hi - b.lo);
+        }
+    }
+    return p;
+}
+
+bool sameGrid(const Spectrum& a, const Spectrum& b)
+{
+    if (a.size() != b.size() || std::abs(a.length() - b.length()) > 1e-12 * a.length()) {
+        return false;
+    }
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (std::abs(a.frequency(i) - b.frequency(i)) > 1e-12 * a.frequency(i)) {
+            return false;
+        }
+    }
+    return true;
+}
+} // namespace
+
+Spectrum Spectrum::combine(const Spectrum& a, const Spectrum& b)
+{
+    const std::string source = a.source() + " + " + b.source();
+    if (sameGrid(a, b)) {
+        std::vector<double> beta(a.size());
+        for (std::size_t i = 0; i < a.size(); ++i) {
+            beta[i] = std::hypot(a.amplitude(i), b.amplitude(i));
+        }
+        Spectrum s(a.frequencies(), std::move(beta), a.length(), source);
+        s.nyquist_ = a.nyquist_ && b.nyquist_;
+        return s;
+    }
+    // Re-bin both onto k/L, L the longer scan, up to the highest frequency either holds.
+    const double L = std::max(a.length(), b.length());
+    const std::vector<Bin> ba = binsOf(a);
+    const std::vector<Bin> bb = binsOf(b);
+    const double top = std::max(ba.back().hi, bb.back().hi);
+    std::vector<double> f;
+    std::vector<double> beta;
+    for (long long k = 1;; ++k) {
+        const double fk = static_cast<double>(k) / L;
+        const double lo = k == 1 ? 0.0 : fk - 0.5 / L;
+        const double hi = fk + 0.5 / L;
+        if (lo >= top) {
+            break;
+        }
+        const double p = powerIn(ba, lo, hi) + powerIn(bb, lo, hi);
+        f.push_back(fk);
+        beta.push_back(std::sqrt(2.0 * p));
+    }
+    return Spectrum(std::move(f), std::move(beta), L, source);
+}
+
+double asperityDensity(double frequency)
+{
+    return 2.0 * frequency * frequency; // seed Eq. 4
+}
+
+double asperityRadius(double frequency, double amplitude)
+{
+    if (amplitude <= 0.0) {
+        return std::numeric_limits<double>::infinity();
+    }
+    return 1.0 / (4.0 * pi * pi * amplitude * frequency * frequency); // seed Eq. 5
+}
+
+} // namespace roughContact

@@ -1,0 +1,75 @@
+// The surface as frequency levels f_i with amplitudes beta_i (seed §2.1, physics.md §1).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace roughContact {
+
+class Profile;
+
+class Spectrum {
+public:
+    /// Levels f_i [1/m] (positive, strictly increasing) with single-sided amplitudes
+    /// beta_i [m] (finite, >= 0), for a scan of length L [m]; A_n = L^2 (seed §2.1).
+    /// source names the origin for error messages.
+    Spectrum(std::vector<double> frequencies, std::vector<double> amplitudes, double length,
+             std::string source = "");
+
+    /// FFT (FFTW) of the profile after removing its mean and linear tilt: f_k = k/L,
+    /// beta_k = 2|Z_k|/N for 0 < k < N/2 and |Z_{N/2}|/N at Nyquist (physics.md §1).
+    static Spectrum fromProfile(const Profile& profile);
+
+    /// Power law beta = b_m f^-m at the levels f_i = i/L with fmin <= f_i <= fmax
+    /// (seed §2.3). length defaults to 1/fmin when <= 0.
+    static Spectrum powerLaw(double bm, double m, double fmin, double fmax, double length = 0.0);
+
+    /// Weierstrass-Mandelbrot (Majumdar-Bhushan) surface of fractal dimension D and roughness
+    /// G [m]: one-sided PSD S(f) = G^(2(D-1)) / (2 ln(gamma) f^(5-2D)), gamma = 1.5 (physics.md
+    /// §4), sampled at f_i = i/L, fmin <= f_i <= fmax: beta_i^2 = 2 S(f_i) / L.
+    static Spectrum fractal(double D, double G, double fmin, double fmax, double length = 0.0);
+
+    /// Equivalent surface of two rough surfaces in contact: their powers add level by level
+    /// (physics.md §1). On different frequency grids each level's power is spread over its
+    /// frequency bin and re-binned onto f_k = k/L, L the longer scan, so the total variance is
+    /// conserved exactly.
+    static Spectrum combine(const Spectrum& a, const Spectrum& b);
+
+    std::size_t size() const noexcept { return f_.size(); }
+    const std::vector<double>& frequencies() const noexcept { return f_; }
+    const std::vector<double>& amplitudes() const noexcept { return beta_; }
+    double frequency(std::size_t i) const { return f_.at(i); }
+    double amplitude(std::size_t i) const { return beta_.at(i); }
+    double length() const noexcept { return length_; }
+    /// A_n = L^2 (seed §2.1).
+    double nominalArea() const noexcept { return length_ * length_; }
+    const std::string& source() const noexcept { return source_; }
+
+    /// Sum of beta_i^2/2: the variance of the sinusoids (physics.md §1). For a spectrum from
+    /// an even-length profile the Nyquist level is a cosine sampled at its crests, whose
+    /// variance is beta^2 rather than beta^2/2; profileVariance() accounts for that.
+    double variance() const;
+    /// Variance of the profile this spectrum came from (Parseval), exact for fromProfile().
+    double profileVariance() const;
+    /// True when the last level is the Nyquist level of an even-length profile.
+    bool hasNyquistLevel() const noexcept { return nyquist_; }
+
+    /// The levels with f <= fmax only.
+    Spectrum truncated(double fmax) const;
+
+private:
+    std::vector<double> f_;
+    std::vector<double> beta_;
+    double length_;
+    std::string source_;
+    bool nyquist_ = false;
+};
+
+/// Per-level asperity quantities of seed Eqs. 4-5.
+/// eta = 2 f^2 [1/m^2]
+double asperityDensity(double frequency);
+/// R = 1 / (4 pi^2 beta f^2) [m]; +inf for beta = 0.
+double asperityRadius(double frequency, double amplitude);
+
+} // namespace roughContact
