@@ -2,7 +2,10 @@
 
 #include "roughContact/Error.hpp"
 
+#include <boost/math/tools/roots.hpp>
+
 #include <cmath>
+#include <cstdint>
 
 namespace roughContact {
 
@@ -13,6 +16,14 @@ constexpr double pi = 3.14159265358979323846;
 JohnsonGreenwoodHigginson::JohnsonGreenwoodHigginson(double Eprime, Form form)
     : Eprime_(requirePositive("reduced modulus E'", Eprime)), form_(form)
 {
+    if (form_ == Form::consistent) {
+        // Eq. 9 - Eq. 10 changes sign once in [0.7, 0.8] (it is -0.015 at 0.7, +4e-4 at 0.8).
+        std::uintmax_t iterations = 100;
+        const auto gap = [this](double x) { return eq9(x) - eq10(x); };
+        const auto r = boost::math::tools::toms748_solve(
+            gap, 0.7, blendLimit, boost::math::tools::eps_tolerance<double>(52), iterations);
+        switch_ = 0.5 * (r.first + r.second);
+    }
 }
 
 std::string JohnsonGreenwoodHigginson::name() const
@@ -26,16 +37,22 @@ double JohnsonGreenwoodHigginson::completeContactPressure(const Level& level) co
     return c * Eprime_ * level.amplitude * level.frequency;
 }
 
-double JohnsonGreenwoodHigginson::areaRatioAt(double x) const
+// Areas in units of the asperity cell 1/eta = 1/(2 f^2), so eta * Abar is dimensionless.
+double JohnsonGreenwoodHigginson::eq10(double x) const
 {
-    // Areas in units of the asperity cell 1/eta = 1/(2 f^2), so eta * Abar is dimensionless.
+    return 1.0 - 3.0 / (2.0 * pi) * (1.0 - x); // Eq. 8 (= Eq. 10)
+}
+
+double JohnsonGreenwoodHigginson::eq9(double x) const
+{
     const double perCell = form_ == Form::seed ? 1.0 : 0.5;
     const double a1 = perCell * 2.0 * pi * std::cbrt(std::pow(3.0 * x / (8.0 * pi), 2.0)); // Eq. 7
-    const double a2 = 1.0 - 3.0 / (2.0 * pi) * (1.0 - x);                                // Eq. 8
-    if (x < blendLimit) {
-        return a1 * (1.0 - std::pow(x, 1.51)) + a2 * std::pow(x, 1.04); // Eq. 9
-    }
-    return a2; // Eq. 10
+    return a1 * (1.0 - std::pow(x, 1.51)) + eq10(x) * std::pow(x, 1.04);                // Eq. 9
+}
+
+double JohnsonGreenwoodHigginson::areaRatioAt(double x) const
+{
+    return x < switch_ ? eq9(x) : eq10(x);
 }
 
 double JohnsonGreenwoodHigginson::areaRatio(double pbar, const Level& level) const

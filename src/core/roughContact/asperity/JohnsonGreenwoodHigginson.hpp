@@ -20,7 +20,9 @@ namespace roughContact {
 /// - Form::consistent (`jghConsistent`): the JGH surface z = beta [1 - cos(2 pi f x)
 ///   cos(2 pi f y)] has p* = sqrt(2) pi E' beta f and two asperities per wavelength cell, so
 ///   Eq. 7 is the area of a cell and half of it belongs to one asperity. Then the light-load
-///   limit equals Hertz with R of Eq. 5 exactly, and Eq. 9 meets Eq. 10 at x = 0.8 to 0.1 %.
+///   limit equals Hertz with R of Eq. 5 exactly, and Eq. 9 meets Eq. 10 near x = 0.8 to
+///   0.05 %. The switch from Eq. 9 to Eq. 10 is moved from 0.8 to where the two cross
+///   (x_s = 0.796), so the law is continuous and never decreases with pressure.
 class JohnsonGreenwoodHigginson final : public AsperityModel {
 public:
     enum class Form { seed, consistent };
@@ -35,11 +37,18 @@ public:
     /// eta * Abar as a function of x = pbar/p* alone (x < 1).
     double areaRatioAt(double x) const;
 
-    static constexpr double blendLimit = 0.8; ///< Eq. 9 below, Eq. 10 from here (seed)
+    /// Eq. 9 below, Eq. 10 from here: 0.8 (seed), or x_s in the consistent form.
+    double blendSwitch() const noexcept { return switch_; }
+
+    static constexpr double blendLimit = 0.8; ///< the seed's switch
 
 private:
+    double eq9(double x) const;
+    double eq10(double x) const;
+
     double Eprime_;
     Form form_;
+    double switch_ = blendLimit;
 };
 
 } // namespace roughContact

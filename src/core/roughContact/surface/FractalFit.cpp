@@ -1,0 +1,73 @@
+#include "roughContact/surface/FractalFit.hpp"
+
+#include "roughContact/Error.hpp"
+#include "roughContact/surface/Spectrum.hpp"
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+namespace roughContact {
+
+FractalParameters fitFractal(const Spectrum& spectrum, double fmin, double fmax)
+{
+    if (std::isnan(fmin) || fmin < 0.0 || fmin == std::numeric_limits<double>::infinity()) {
+        std::ostringstream os;
+        os << "must be finite and >= 0, got " << fmin;
+        throw ParameterError("fractal fit fmin", os.str());
+    }
+    if (std::isnan(fmax) || !(fmax > fmin)) {
+        std::ostringstream os;
+        os << "must exceed fmin = " << fmin << ", got " << fmax;
+        throw ParameterError("fractal fit fmax", os.str());
+    }
+    const double L = spectrum.length();
+    std::vector<double> x;
+    std::vector<double> y;
+    for (std::size_t i = 0; i < spectrum.size(); ++i) {
+        const double f = spectrum.frequency(i);
+        const double beta = spectrum.amplitude(i);
+        if (f < fmin || f > fmax || !(beta > 0.0)) {
+            continue; // outside the band, or a level that carries nothing (physics.md §1)
+        }
+        // One-sided PSD S = beta^2 / (2 df), df = 1/L (physics.md §4; Spectrum::fractal).
+        x.push_back(std::log(f));
+        y.push_back(std::log(0.5 * beta * beta * L));
+    }
+    if (x.size() < 3) {
+        std::ostringstream os;
+        os << "needs at least 3 levels with beta > 0 in [" << fmin << ", " << fmax
+           << "] 1/m, found " << x.size();
+        throw ParameterError("fractal fit frequency range", os.str());
+    }
+
+    // ln S = c + s ln f by least squares; ln f centred on its mean for conditioning.
+    const auto n = static_cast<Eigen::Index>(x.size());
+    const Eigen::Map<const Eigen::VectorXd> lnF(x.data(), n);
+    const Eigen::Map<const Eigen::VectorXd> lnS(y.data(), n);
+    const double xMean = lnF.mean();
+    Eigen::MatrixXd A(n, 2);
+    A.col(0).setOnes();
+    A.col(1) = lnF.array() - xMean;
+    const Eigen::Vector2d coef = A.colPivHouseholderQr().solve(lnS);
+    const double s = coef[1];
+    const double c = coef[0] - s * xMean;
+
+    FractalParameters p{};
+    p.D = 0.5 * (5.0 + s); // slope -(5 - 2D) of the W-M PSD (physics.md §4)
+    if (!std::isfinite(p.D) || !(p.D > 1.0 && p.D < 2.0)) {
+        std::ostringstream os;
+        os << "the fitted PSD slope " << s << " gives D = " << p.D
+           << ", outside (1, 2): not a W-M fractal in this band";
+        throw ParameterError("fractal dimension D", os.str());
+    }
+    // Intercept: ln S(1) = 2 (D-1) ln G - ln(2 ln gamma), gamma = 1.5 (physics.md §4).
+    const double lnGamma = std::log(1.5);
+    p.G = std::exp((c + std::log(2.0 * lnGamma)) / (2.0 * (p.D - 1.0)));
+    requirePositive("fractal roughness G", p.G);
+    return p;
+}
+
+} // namespace roughContact

@@ -1,0 +1,161 @@
+// The multi-scale framework (seed §2.1) against the closed forms of seed §2.3.
+#include "roughContact/asperity/Hertz.hpp"
+#include "roughContact/asperity/JacksonGreen.hpp"
+#include "roughContact/asperity/JohnsonGreenwoodHigginson.hpp"
+#include "roughContact/asperity/Truncation.hpp"
+#include "roughContact/models/MultiscaleModel.hpp"
+#include "roughContact/surface/Spectrum.hpp"
+#include "roughContact/surface/SyntheticProfile.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace roughContact;
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+constexpr double Ep = 200e9; // seed Table 1
+constexpr double nu = 0.32;
+constexpr double Sy = 0.2e9;
+const double E = Ep * (1.0 - nu * nu);
+
+Spectrum standIn()
+{
+    return Spectrum::fromProfile(generateSyntheticProfile({}));
+}
+
+std::vector<std::shared_ptr<const AsperityModel>> allAsperityModels()
+{
+    using Form = JohnsonGreenwoodHigginson::Form;
+    return {std::make_shared<Hertz>(Ep), std::make_shared<JohnsonGreenwoodHigginson>(Ep),
+            std::make_shared<JohnsonGreenwoodHigginson>(Ep, Form::consistent),
+            std::make_shared<JacksonGreen>(Ep, nu, E, Sy), std::make_shared<Truncation>(Ep, nu, Sy)};
+}
+} // namespace
+
+TEST(MultiscaleModel, hertzFollowsRecursionOfSeedEquation26)
+{
+    const Spectrum s = standIn();
+    const MultiscaleModel m(s, Ep, std::make_shared<Hertz>(Ep));
+    for (double load : {1e-6, 7.94e-5, 1e-3}) {
+        const auto trace = m.trace(load);
+        const double An = s.nominalArea();
+        double previous = 1.0; // A_{i-1}/A_n
+        double worst = 0.0;
+        for (const LevelState& st : trace) {
+            double eq26 = 0.25 * std::cbrt(9.0 / (2.0 * pi)) * std::cbrt(load * load) *
+                          std::cbrt(std::pow(1.0 / (st.frequency * st.amplitude), 2.0)) *
+                          std::cbrt(previous);
+            eq26 = std::min(eq26, previous); // assumption 5
+            worst = std::max(worst, std::abs(st.area / An / eq26 - 1.0));
+            previous = st.area / An;
+        }
+        // Each level adds a few ulp (pow, cbrt, products) and errors carry forward with
+        // exponent 1/3, so they do not accumulate beyond ~10 eps.
+        EXPECT_LT(worst, 1e-13) << "load " << load;
+        EXPECT_DOUBLE_EQ(m.areaFraction(load), trace.back().area / An);
+    }
+}
+
+TEST(MultiscaleModel, hertzReachesClosedFormOfSeedEquations29And30)
+{
+    // beta_i = b / f_i at every level (i* = 0, A_{i*} = A_n): A_k/A_n = C^(3/2 (1 - 3^-k)),
+    // C = (1/4)(9/(2 pi))^(1/3) (F/(E' A_n b))^(2/3) (Eqs. 28-29), -> C^(3/2) (Eq. 30).
+    const double L = 1e-3;
+    const double b = 3e-4;
+    for (std::size_t levels : {1u, 2u, 5u, 40u}) {
+        std::vector<double> f;
+        std::vector<double> beta;
+        for (std::size_t i = 1; i <= levels; ++i) {
+            f.push_back(double(i) / L);
+            beta.push_back(b / f.back());
+        }
+        const MultiscaleModel m(Spectrum(f, beta, L), Ep, std::make_shared<Hertz>(Ep));
+        for (double load : {1e-7, 1e-5, 1e-4}) {
+            const double C = 0.25 * std::cbrt(9.0 / (2.0 * pi)) * std::cbrt(std::pow(load / b, 2.0));
+            const double eq29 = std::pow(C, 1.5 * (1.0 - std::pow(3.0, -double(levels))));
+            // Round-off: ~10 ulp per level, damped by the 1/3 power (see the test above).
+            EXPECT_NEAR(m.areaFraction(load) / eq29, 1.0, 1e-13) << levels << " levels, load " << load;
+            if (levels == 40) {
+                const double eq30 = 3.0 * load / (8.0 * std::sqrt(2.0 * pi) * b); // A_r/A_n
+                EXPECT_NEAR(m.areaFraction(load) / eq30, 1.0, 1e-13);
+            }
+        }
+    }
+}
+
+TEST(MultiscaleModel, areaBetweenZeroAndNominalAndNeverDecreasingWithLoad)
+{
+    const Spectrum s = standIn();
+    for (const auto& asperity : allAsperityModels()) {
+        const MultiscaleModel m(s, Ep, asperity);
+        double previous = 0.0;
+        std::size_t drops = 0;
+        double worstDrop = 0.0;
+        for (double load = 1e-9; load < 10.0; load *= 1.02) {
+            const double a = m.areaFraction(load);
+            ASSERT_TRUE(std::isfinite(a)) << asperity->name() << " load " << load;
+            ASSERT_GE(a, 0.0);
+            ASSERT_LE(a, 1.0);
+            if (a < previous) {
+                ++drops;
+                worstDrop = std::max(worstDrop, 1.0 - a / previous);
+            }
+            previous = std::max(previous, a);
+        }
+        if (asperity->name() == "jgh") {
+            // The seed's JGH form drops by up to 9.5 % where a level crosses p/p* = 0.8
+            // (Eq. 9 > 1 is capped at complete contact, then Eq. 10 = 0.905): a documented
+            // inconsistency of the seed, absent from jghConsistent.
+            std::printf("jgh (seed form): %zu drops, worst %.3g %%\n", drops, 100 * worstDrop);
+            EXPECT_LE(worstDrop, 1.0 - (1.0 - 3.0 / (2.0 * pi) * 0.2) + 1e-12);
+        } else {
+            EXPECT_EQ(drops, 0u) << asperity->name() << " worst drop " << worstDrop;
+        }
+        EXPECT_EQ(m.areaFraction(0.0), 0.0);
+    }
+}
+
+TEST(MultiscaleModel, completeContactAtVeryHighLoad)
+{
+    const Spectrum s = standIn();
+    // At F/(A_n E') far above every level's p*/E' the JGH levels are all in complete contact.
+    const MultiscaleModel m(s, Ep, std::make_shared<JohnsonGreenwoodHigginson>(Ep));
+    EXPECT_EQ(m.areaFraction(1.0), 1.0);
+    const MultiscaleModel jg(s, Ep, std::make_shared<JacksonGreen>(Ep, nu, E, Sy));
+    EXPECT_EQ(jg.areaFraction(1e3), 1.0);
+}
+
+TEST(MultiscaleModel, skipsLevelsWithZeroAmplitude)
+{
+    const MultiscaleModel a(Spectrum({1e3, 2e3, 3e3}, {1e-7, 0.0, 2e-8}, 1e-3), Ep, std::make_shared<Hertz>(Ep));
+    const MultiscaleModel b(Spectrum({1e3, 3e3}, {1e-7, 2e-8}, 1e-3), Ep, std::make_shared<Hertz>(Ep));
+    EXPECT_EQ(a.levels().size(), 2u);
+    EXPECT_DOUBLE_EQ(a.areaFraction(1e-4), b.areaFraction(1e-4));
+    EXPECT_EQ(a.trace(1e-4).back().index, 2u);
+}
+
+TEST(MultiscaleModel, rejectsBadLoads)
+{
+    const MultiscaleModel m(standIn(), Ep, std::make_shared<Hertz>(Ep));
+    EXPECT_THROW(m.areaFraction(-1e-5), std::invalid_argument);
+    EXPECT_THROW(m.areaFraction(std::nan("")), std::invalid_argument);
+    EXPECT_THROW(m.areaFraction(INFINITY), std::invalid_argument);
+}
+
+TEST(MultiscaleModel, traceIsConsistentWithAssumptions2And3)
+{
+    const Spectrum s = standIn();
+    const double load = 7.94e-5; // seed Fig. 5
+    const MultiscaleModel m(s, Ep, std::make_shared<Hertz>(Ep));
+    const double F = load * s.nominalArea() * Ep;
+    double previous = s.nominalArea();
+    for (const LevelState& st : m.trace(load)) {
+        EXPECT_NEAR(st.asperities / (st.density * previous), 1.0, 1e-15); // N_i = eta_i A_{i-1}
+        EXPECT_NEAR(st.asperityForce * st.asperities / F, 1.0, 1e-15);   // every level carries F
+        EXPECT_LE(st.area, previous);                                     // assumption 5
+        EXPECT_EQ(st.complete, st.area == previous);
+        previous = st.area;
+    }
+}
