@@ -1,1 +1,309 @@
-int main() { return 0; }
+// multiscaleContact: real contact area of rough surfaces against load, from the command line.
+// The interface is fixed (issue 2): scripts rely on --profile/--spectrum, --model, the
+// material options, --loads/--load-range, --levels and the CSV columns load and area.
+#include "roughContact/Error.hpp"
+#include "roughContact/io/ProfileReader.hpp"
+#include "roughContact/io/SpectrumReader.hpp"
+#include "roughContact/io/Units.hpp"
+#include "roughContact/material/Materials.hpp"
+#include "roughContact/models/ModelFactory.hpp"
+#include "roughContact/models/MultiscaleModel.hpp"
+#include "roughContact/surface/FractalFit.hpp"
+#include "roughContact/surface/Profile.hpp"
+#include "roughContact/surface/SpectralMoments.hpp"
+#include "roughContact/surface/Spectrum.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace roughContact;
+
+namespace {
+
+struct Options {
+    std::vector<std::string> profiles;
+    std::vector<std::string> spectra;
+    std::vector<double> powerLaw; // b_m, m, fmin, fmax
+    std::vector<double> fractal;  // D, G, fmin, fmax
+    std::string units;
+    std::optional<double> dx;
+    std::optional<double> length;
+    std::size_t stride = 1;
+    std::string model;
+    std::vector<double> E;
+    std::vector<double> nu;
+    std::optional<double> Eprime;
+    std::vector<double> Sy;
+    std::vector<double> loads;
+    std::string loadRange;
+    std::optional<double> D;
+    std::optional<double> G;
+    std::string fitRange;
+    bool levels = false;
+    bool info = false;
+};
+
+std::vector<double> splitNumbers(const std::string& text, char sep, const std::string& option)
+{
+    std::vector<double> out;
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, sep)) {
+        char* end = nullptr;
+        const double v = std::strtod(item.c_str(), &end);
+        if (item.empty() || *end != '\0' || !std::isfinite(v)) {
+            throw ParameterError(option, "'" + item + "' is not a finite number");
+        }
+        out.push_back(v);
+    }
+    return out;
+}
+
+std::vector<double> loadsOf(const Options& o)
+{
+    if (!o.loadRange.empty()) {
+        const std::vector<double> r = splitNumbers(o.loadRange, ':', "--load-range");
+        if (r.size() != 3) {
+            throw ParameterError("--load-range", "expects MIN:MAX:N");
+        }
+        const double lo = r[0];
+        const double hi = r[1];
+        const double n = r[2];
+        if (!(lo > 0.0) || !(hi >= lo) || n < 1 || n != std::floor(n) || n > 1e7) {
+            throw ParameterError("--load-range", "needs 0 < MIN <= MAX and a whole N >= 1");
+        }
+        std::vector<double> out;
+        const auto count = static_cast<std::size_t>(n);
+        for (std::size_t i = 0; i < count; ++i) {
+            out.push_back(count == 1 ? lo : lo * std::pow(hi / lo, double(i) / double(count - 1)));
+        }
+        return out;
+    }
+    for (double l : o.loads) {
+        checkLoad(l);
+    }
+    return o.loads;
+}
+
+Spectrum surfaceOf(const Options& o)
+{
+    if (!o.profiles.empty()) {
+        ProfileReadOptions ro;
+        if (!o.units.empty()) {
+            ro.units = parseLengthUnit(o.units);
+        }
+        ro.spacing = o.dx;
+        std::optional<Spectrum> total;
+        for (const std::string& path : o.profiles) {
+            const Profile p = readProfile(path, ro).subsampled(o.stride);
+            const Spectrum s = Spectrum::fromProfile(p);
+            total = total ? Spectrum::combine(*total, s) : s;
+        }
+        return *total;
+    }
+    if (!o.spectra.empty()) {
+        std::optional<Spectrum> total;
+        for (const std::string& path : o.spectra) {
+            const Spectrum s = readSpectrum(path, o.length);
+            total = total ? Spectrum::combine(*total, s) : s;
+        }
+        return *total;
+    }
+    if (!o.powerLaw.empty()) {
+        const auto& p = o.powerLaw;
+        return Spectrum::powerLaw(p[0], p[1], p[2], p[3], o.length.value_or(0.0));
+    }
+    const auto& p = o.fractal;
+    return Spectrum::fractal(p[0], p[1], p[2], p[3], o.length.value_or(0.0));
+}
+
+ContactMaterials materialsOf(const Options& o)
+{
+    if (o.Eprime) {
+        if (o.nu.size() > 1 || o.Sy.size() > 1) {
+            throw ParameterError("--Eprime", "takes one --nu and one --Sy (of the material that yields first)");
+        }
+        return ContactMaterials::fromReducedModulus(
+            *o.Eprime, o.nu.empty() ? std::nullopt : std::optional<double>(o.nu[0]),
+            o.Sy.empty() ? std::nullopt : std::optional<double>(o.Sy[0]));
+    }
+    if (o.E.empty()) {
+        throw ParameterError("--E", "give --E (with --nu) or --Eprime");
+    }
+    if (o.nu.size() != o.E.size()) {
+        throw ParameterError("--nu", "give one Poisson's ratio per --E value");
+    }
+    if (!o.Sy.empty() && o.Sy.size() != o.E.size()) {
+        throw ParameterError("--Sy", "give one yield strength per --E value");
+    }
+    std::vector<Material> m(o.E.size());
+    for (std::size_t i = 0; i < m.size(); ++i) {
+        m[i].E = o.E[i];
+        m[i].nu = o.nu[i];
+        if (!o.Sy.empty()) {
+            m[i].Sy = o.Sy[i];
+        }
+    }
+    return m.size() == 1 ? ContactMaterials::againstRigidFlat(m[0]) : ContactMaterials::pair(m[0], m[1]);
+}
+
+void printInfo(const Spectrum& s, std::ostream& os)
+{
+    os << "# surface: " << s.source() << "\n# levels: " << s.size() << ", f = " << s.frequencies().front()
+       << " .. " << s.frequencies().back() << " 1/m, L = " << s.length() << " m, A_n = " << s.nominalArea()
+       << " m^2\n# rms height (Parseval): " << std::sqrt(s.profileVariance()) << " m\n";
+    try {
+        const SummitParameters p = mcCoolParameters(s);
+        os << "# McCool: eta = " << p.eta << " 1/m^2, R = " << p.R << " m, sigma_s = " << p.sigmaS
+           << " m, alpha = " << p.alpha << "\n";
+    } catch (const std::exception& e) {
+        os << "# McCool: " << e.what() << "\n";
+    }
+    try {
+        const FractalParameters f = fitFractal(s);
+        os << "# fractal fit: D = " << f.D << ", G = " << f.G << " m\n";
+    } catch (const std::exception& e) {
+        os << "# fractal fit: " << e.what() << "\n";
+    }
+}
+
+int run(const Options& o)
+{
+    const Spectrum spectrum = surfaceOf(o);
+    if (o.info) {
+        printInfo(spectrum, std::cerr);
+    }
+    const ContactMaterials materials = materialsOf(o);
+    ModelOptions mo;
+    if (o.D || o.G) {
+        if (!(o.D && o.G)) {
+            throw ParameterError("--D/--G", "give both or neither");
+        }
+        mo.fractal = FractalParameters{*o.D, *o.G};
+    } else if (!o.fractal.empty()) {
+        mo.fractal = FractalParameters{o.fractal[0], o.fractal[1]};
+    } else if (o.model == "majumdarBhushan" && !o.fitRange.empty()) {
+        const std::vector<double> r = splitNumbers(o.fitRange, ':', "--fit-range");
+        if (r.size() != 2) {
+            throw ParameterError("--fit-range", "expects FMIN:FMAX");
+        }
+        mo.fractal = fitFractal(spectrum, r[0], r[1]);
+    }
+    const std::vector<double> loads = loadsOf(o);
+    const auto model = makeContactModel(o.model, spectrum, materials, mo);
+
+    std::cout.precision(10);
+    if (o.levels) {
+        const auto* ms = dynamic_cast<const MultiscaleModel*>(model.get());
+        if (ms == nullptr) {
+            throw ParameterError("--levels", "the per-level trace exists for the multi-scale models only");
+        }
+        const double An = spectrum.nominalArea();
+        std::cout << "load,level,frequency,amplitude,eta,radius,asperities,asperity_force,area,complete\n";
+        for (double load : loads) {
+            for (const LevelState& s : ms->trace(load)) {
+                std::cout << load << ',' << s.index + 1 << ',' << s.frequency << ',' << s.amplitude << ','
+                          << s.density << ',' << s.radius << ',' << s.asperities << ',' << s.asperityForce
+                          << ',' << s.area / An << ',' << (s.complete ? 1 : 0) << '\n';
+            }
+        }
+        return 0;
+    }
+    std::cout << "load,area,pressure\n";
+    for (double load : loads) {
+        const double a = model->areaFraction(load);
+        std::cout << load << ',' << a << ',';
+        if (a > 0.0) {
+            std::cout << load / a; // F/(A_r E'), seed Eq. 34
+        }
+        std::cout << '\n';
+    }
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    CLI::App app{
+        "multiscaleContact: real contact area A_r/A_n of a rough surface against a flat, or of two rough\n"
+        "surfaces, as a function of the load F/(A_n E'), by the multi-scale model of Jackson & Streator\n"
+        "(2006) and the models it is compared with. Prints CSV on stdout: load,area,pressure with\n"
+        "load = F/(A_n E'), area = A_r/A_n and pressure = F/(A_r E'); errors go to stderr, exit 1.",
+        "multiscaleContact"};
+    Options o;
+
+    auto* surface = app.add_option_group("surface", "exactly one surface description");
+    surface->add_option("--profile", o.profiles,
+                        "measured profile: columns 'x z', or 'z' with --dx; comma or whitespace separated, "
+                        "# comments and one header line allowed, Dektak CSV exports read as is; mean and tilt "
+                        "are removed. Give it twice for two rough surfaces")
+        ->expected(1, 2)
+        ->check(CLI::ExistingFile);
+    surface->add_option("--spectrum", o.spectra,
+                        "spectrum table: columns 'frequency [1/m]  amplitude [m]'; twice for two surfaces")
+        ->expected(1, 2)
+        ->check(CLI::ExistingFile);
+    surface->add_option("--power-law", o.powerLaw, "BM,M,FMIN,FMAX: amplitude BM f^-M [m] at f = i/L in [FMIN, FMAX]")
+        ->delimiter(',')
+        ->expected(4);
+    surface->add_option("--fractal", o.fractal,
+                        "D,G,FMIN,FMAX: Majumdar-Bhushan (Weierstrass-Mandelbrot) spectrum, G in m")
+        ->delimiter(',')
+        ->expected(4);
+    surface->require_option(1);
+
+    app.add_option("--units", o.units, "units of profile files: m (default), um or nm; a Dektak export's "
+                                       "own header (um) is used when this is not given");
+    app.add_option("--dx", o.dx, "sample spacing of one-column profiles, in --units");
+    app.add_option("--length", o.length, "scan length L [m] for --spectrum/--power-law/--fractal "
+                                         "(default 1/lowest frequency); A_n = L^2");
+    app.add_option("--stride", o.stride, "use every K-th profile sample (sampling interval K dx; seed Fig. 8)")
+        ->check(CLI::PositiveNumber);
+
+    app.add_option("--model", o.model,
+                   "hertz | jgh | jghConsistent | jacksonGreen | truncation (multi-scale, seed §2) | "
+                   "greenwoodWilliamson | greenwoodWilliamsonJG | majumdarBhushan")
+        ->required()
+        ->check(CLI::IsMember(modelNames()));
+
+    auto* E = app.add_option("--E", o.E, "Young's modulus [Pa]; E1,E2 for two solids")->delimiter(',')->expected(1, 2);
+    app.add_option("--nu", o.nu, "Poisson's ratio; nu1,nu2 with two moduli")->delimiter(',')->expected(1, 2);
+    auto* Ep = app.add_option("--Eprime", o.Eprime, "reduced modulus E' [Pa] instead of --E/--nu");
+    E->excludes(Ep);
+    app.add_option("--Sy", o.Sy, "yield strength [Pa] (jacksonGreen, truncation, greenwoodWilliamsonJG, "
+                                 "majumdarBhushan); Sy1,Sy2 with two moduli")
+        ->delimiter(',')
+        ->expected(1, 2);
+
+    auto* loads = app.add_option("--loads", o.loads, "loads F/(A_n E'), comma separated")->delimiter(',');
+    auto* range = app.add_option("--load-range", o.loadRange, "MIN:MAX:N, N loads log spaced");
+    loads->excludes(range);
+
+    app.add_option("--D", o.D, "Majumdar-Bhushan fractal dimension (default: fitted to the spectrum)");
+    app.add_option("--G", o.G, "Majumdar-Bhushan fractal roughness [m] (default: fitted)");
+    app.add_option("--fit-range", o.fitRange, "FMIN:FMAX [1/m]: frequencies the D,G fit uses (default all)");
+    app.add_flag("--levels", o.levels, "print the per-level trace (seed Fig. 5) instead of the load curve");
+    app.add_flag("--info", o.info, "print the surface's parameters (McCool, fractal fit) to stderr");
+
+    try {
+        app.parse(argc, argv);
+        if (o.loads.empty() && o.loadRange.empty()) {
+            throw CLI::RequiredError("--loads or --load-range");
+        }
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    }
+    try {
+        return run(o);
+    } catch (const std::exception& e) {
+        std::cerr << "multiscaleContact: error: " << e.what() << '\n';
+        return 1;
+    }
+}

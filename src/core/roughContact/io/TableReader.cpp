@@ -3,6 +3,7 @@
 
 #include "roughContact/Error.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
