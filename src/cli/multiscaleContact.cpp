@@ -93,6 +93,16 @@ std::vector<double> loadsOf(const Options& o)
 
 Spectrum surfaceOf(const Options& o)
 {
+    if (o.profiles.empty() && o.stride != 1) {
+        throw ParameterError("--stride", "subsamples a --profile; there is no profile here");
+    }
+    if (o.profiles.empty() && o.dx) {
+        throw ParameterError("--dx", "is the spacing of a one-column --profile; there is no profile here");
+    }
+    if (!o.profiles.empty() && o.length) {
+        throw ParameterError("--length", "is set by the profile itself (N dx); it is for --spectrum, "
+                                         "--power-law and --fractal");
+    }
     if (!o.profiles.empty()) {
         ProfileReadOptions ro;
         if (!o.units.empty()) {

@@ -60,15 +60,18 @@ Profile generateSyntheticProfile(const SyntheticProfileSpec& spec)
                                           z.data(), FFTW_ESTIMATE);
     fftw_execute(plan);
     fftw_destroy_plan(plan);
+    // Remove mean and tilt first (as every reader of the profile will), then scale, so the
+    // profile that the models see has exactly the requested rms.
+    std::vector<double> h = Profile(std::move(z), spec.spacing).detrended().heights();
     double s = 0.0;
-    for (double v : z) {
+    for (double v : h) {
         s += v * v;
     }
     const double scale = spec.rms / std::sqrt(s / static_cast<double>(n));
-    for (double& v : z) {
+    for (double& v : h) {
         v *= scale;
     }
-    return Profile(std::move(z), spec.spacing, "synthetic profile");
+    return Profile(std::move(h), spec.spacing, "synthetic profile");
 }
 
 } // namespace roughContact

@@ -21,7 +21,8 @@ struct SyntheticProfileSpec {
 /// Method: for k = 1..N/2 draw a complex Gaussian coefficient (Box-Muller on
 /// std::mt19937_64, whose output the C++ standard fixes, so the profile is the same on every
 /// platform up to libm rounding) with variance proportional to f_k^-(5-2D) (the Nyquist
-/// coefficient real), inverse-FFT with FFTW, and scale to the rms. The mean is zero.
+/// coefficient real), inverse-FFT with FFTW, remove mean and linear tilt (least squares), and scale to the
+/// rms, so the detrended profile has exactly spec.rms.
 Profile generateSyntheticProfile(const SyntheticProfileSpec& spec);
 
 } // namespace roughContact

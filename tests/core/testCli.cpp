@@ -1,0 +1,213 @@
+// The command-line tool multiscaleContact: its fixed interface, that its numbers are the
+// library's, and its error paths (stderr, non-zero exit, nothing on stdout).
+#include "RunCommand.hpp"
+
+#include "roughContact/io/ProfileReader.hpp"
+#include "roughContact/material/Materials.hpp"
+#include "roughContact/models/ModelFactory.hpp"
+#include "roughContact/surface/Spectrum.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace roughContact;
+using roughContactTest::CommandResult;
+using roughContactTest::runCommand;
+using roughContactTest::TempDir;
+
+namespace {
+
+const std::string cli = ROUGHCONTACT_CLI;
+const std::string standin = std::string(ROUGHCONTACT_SOURCE_DIR) + "/data/standin-2454.csv";
+// The seed's materials (§3.2): E = 179.52 GPa, nu = 0.32, S_y = 0.2 GPa (against a rigid flat).
+const std::string steel = " --E 179.52e9 --nu 0.32 --Sy 0.2e9";
+
+CommandResult run(const std::string& args)
+{
+    return runCommand("'" + cli + "' " + args);
+}
+
+struct Csv {
+    std::vector<std::string> header;
+    std::vector<std::vector<std::string>> rows;
+};
+
+Csv parseCsv(const std::string& text)
+{
+    Csv csv;
+    std::istringstream in(text);
+    std::string line;
+    bool first = true;
+    while (std::getline(in, line)) {
+        std::vector<std::string> cells;
+        std::istringstream ls(line);
+        std::string cell;
+        while (std::getline(ls, cell, ',')) {
+            cells.push_back(cell);
+        }
+        if (!line.empty() && line.back() == ',') {
+            cells.emplace_back(); // an empty last column
+        }
+        (first ? csv.header : csv.rows.emplace_back()) = cells;
+        first = false;
+    }
+    return csv;
+}
+
+int column(const Csv& csv, const std::string& name)
+{
+    for (std::size_t i = 0; i < csv.header.size(); ++i) {
+        if (csv.header[i] == name) {
+            return static_cast<int>(i);
+        }
+    }
+    ADD_FAILURE() << "no column " << name;
+    return 0;
+}
+
+// An error: non-zero exit, nothing on stdout, a message on stderr containing each of `needles`.
+void expectError(const std::string& args, const std::vector<std::string>& needles)
+{
+    SCOPED_TRACE("multiscaleContact " + args);
+    const CommandResult r = run(args);
+    EXPECT_NE(r.status, 0);
+    EXPECT_EQ(r.out, "") << "an error must not print a partial CSV";
+    for (const std::string& n : needles) {
+        EXPECT_NE(r.err.find(n), std::string::npos) << "stderr lacks '" << n << "':\n" << r.err;
+    }
+}
+
+} // namespace
+
+TEST(Cli, HelpDocumentsEveryOptionAndModel)
+{
+    const CommandResult r = run("--help");
+    EXPECT_EQ(r.status, 0);
+    for (const char* opt : {"--profile", "--units", "--spectrum", "--length", "--power-law", "--fractal", "--model",
+                            "--E", "--nu", "--Eprime", "--Sy", "--loads", "--load-range", "--levels", "--stride"}) {
+        EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+    }
+    for (const std::string& m : modelNames()) {
+        EXPECT_NE(r.out.find(m), std::string::npos) << m;
+    }
+}
+
+TEST(Cli, LoadCurveIsTheLibrarysForEveryModel)
+{
+    // The CLI is plumbing: for every model its CSV must equal the C++ API's answer on the same
+    // surface and materials, to the 10 significant digits it prints (relative 1e-9 allows for
+    // the last printed digit's rounding).
+    const Spectrum s = Spectrum::fromProfile(readProfile(standin));
+    const ContactMaterials mat = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
+    for (const std::string& name : modelNames()) {
+        SCOPED_TRACE(name);
+        const CommandResult r = run("--profile '" + standin + "' --model " + name + steel + " --load-range 1e-6:1e-2:9");
+        ASSERT_EQ(r.status, 0) << r.err;
+        const Csv csv = parseCsv(r.out);
+        const int li = column(csv, "load");
+        const int ai = column(csv, "area");
+        const int pi = column(csv, "pressure");
+        ASSERT_EQ(csv.rows.size(), 9U);
+        const auto model = makeContactModel(name, s, mat);
+        double previousArea = 0.0;
+        for (std::size_t k = 0; k < csv.rows.size(); ++k) {
+            const double load = std::stod(csv.rows[k].at(li));
+            const double area = std::stod(csv.rows[k].at(ai));
+            // Log spacing: load_k = 1e-6 * 10^(4k/8).
+            EXPECT_NEAR(load, 1e-6 * std::pow(10.0, 0.5 * double(k)), 1e-9 * load);
+            EXPECT_NEAR(area, model->areaFraction(load), 1e-9 * area + 1e-300);
+            EXPECT_GE(area, previousArea);
+            EXPECT_LE(area, 1.0);
+            previousArea = area;
+            EXPECT_NEAR(std::stod(csv.rows[k].at(pi)), load / area, 1e-9 * load / area);
+        }
+    }
+}
+
+TEST(Cli, LevelTraceSumsToTheArea)
+{
+    // Seed Eq. 4/5: the area at the last level is the model's answer A_r/A_n; each level's area
+    // is at most the previous one's (a_i = A_i/A_{i-1} <= 1 once capped).
+    const CommandResult curve = run("--profile '" + standin + "' --model hertz" + steel + " --loads 7.94e-5");
+    const CommandResult trace = run("--profile '" + standin + "' --model hertz" + steel + " --loads 7.94e-5 --levels");
+    ASSERT_EQ(curve.status, 0) << curve.err;
+    ASSERT_EQ(trace.status, 0) << trace.err;
+    const Csv c = parseCsv(curve.out);
+    const Csv t = parseCsv(trace.out);
+    ASSERT_GT(t.rows.size(), 100U);
+    const int ai = column(t, "area");
+    double previous = 1.0;
+    for (const auto& row : t.rows) {
+        const double a = std::stod(row.at(ai));
+        EXPECT_LE(a, previous * (1 + 1e-9));
+        previous = a;
+    }
+    EXPECT_NEAR(previous, std::stod(c.rows.at(0).at(column(c, "area"))), 1e-9 * previous);
+}
+
+TEST(Cli, SurfaceDescriptions)
+{
+    // A power law and the spectrum table that lists the same levels give the same curve.
+    TempDir dir;
+    const double L = 1e-3;
+    std::ostringstream table;
+    table << "# frequency [1/m], amplitude [m]\n";
+    table.precision(17);
+    for (int i = 1; i <= 200; ++i) {
+        const double f = i / L;
+        table << f << ',' << 1e-7 * std::pow(f / 1e3, -1.2) << '\n';
+    }
+    const auto path = dir.write("spectrum.csv", table.str());
+    const CommandResult a = run("--spectrum '" + path.string() + "' --model jacksonGreen" + steel + " --loads 1e-4");
+    std::ostringstream bm;
+    bm.precision(17);
+    bm << 1e-7 * std::pow(1e3, 1.2);
+    const CommandResult b = run("--power-law " + bm.str() + ",1.2,1000,200000 --length 1e-3 --model jacksonGreen" +
+                                steel + " --loads 1e-4");
+    ASSERT_EQ(a.status, 0) << a.err;
+    ASSERT_EQ(b.status, 0) << b.err;
+    const double areaA = std::stod(parseCsv(a.out).rows.at(0).at(1));
+    const double areaB = std::stod(parseCsv(b.out).rows.at(0).at(1));
+    // Both describe the same 200 levels to 17 digits; the CLI prints 10 digits.
+    EXPECT_NEAR(areaA, areaB, 1e-9 * areaA);
+    EXPECT_GT(areaA, 0.0);
+}
+
+TEST(Cli, ErrorPaths)
+{
+    const std::string p = "--profile '" + standin + "'";
+    expectError("--profile /no/such/file.csv --model hertz --Eprime 2e11 --loads 1e-4", {"/no/such/file.csv"});
+    expectError(p + " --model nosuchmodel --Eprime 2e11 --loads 1e-4", {"nosuchmodel"});
+    expectError(p + " --model hertz --Eprime 2e11", {"--loads"});
+    expectError(p + " --model hertz --E 2e11 --loads 1e-4", {"--nu"});
+    expectError(p + " --model hertz --E -2e11 --nu 0.3 --loads 1e-4", {"E"});
+    expectError(p + " --model hertz --E 2e11 --nu 0.3 --Eprime 2e11 --loads 1e-4", {"--Eprime"});
+    expectError(p + " --model hertz --Eprime 2e11 --loads -1e-4", {"load"});
+    expectError(p + " --model hertz --Eprime 2e11 --loads 1e-4,abc", {"--loads"});
+    expectError(p + " --model hertz --Eprime 2e11 --load-range 1e-2:1e-4:10", {"--load-range"});
+    expectError(p + " --model hertz --Eprime 2e11 --load-range 1e-4:1e-2", {"--load-range"});
+    expectError(p + " --model hertz --Eprime 2e11 --loads 1e-4 --load-range 1e-4:1e-2:3", {"--load-range"});
+    expectError(p + " --model jacksonGreen --E 2e11 --nu 0.3 --loads 1e-4", {"S_y"});
+    expectError(p + " --model truncation --E 2e11 --nu 0.3 --loads 1e-4", {"S_y"});
+    expectError(p + " --model greenwoodWilliamson --Eprime 2e11 --loads 1e-4 --levels", {"--levels"});
+    expectError(p + " --model majumdarBhushan --Eprime 2e11 --Sy 2e8 --D 1.5 --loads 1e-4", {"--D/--G"});
+    expectError(p + " --spectrum '" + standin + "' --model hertz --Eprime 2e11 --loads 1e-4", {"Exactly 1"});
+    expectError("--power-law 1e-4,1.2,1e3,1e6 --length 1e-3 --stride 2 --model hertz --Eprime 2e11 --loads 1e-4",
+                {"--stride"});
+    expectError(p + " --units furlong --model hertz --Eprime 2e11 --loads 1e-4", {"furlong"});
+
+    // A bad file: the message names the file and the line.
+    TempDir dir;
+    const auto bad = dir.write("bad.csv", "x,z\n0,1\n1,2\n2,oops\n3,4\n4,5\n5,6\n6,7\n7,8\n8,9\n");
+    expectError("--profile '" + bad.string() + "' --model hertz --Eprime 2e11 --loads 1e-4",
+                {bad.string(), ":4:"});
+    const auto nan = dir.write("nan.csv", "0,1\n1,2\n2,3\n3,nan\n4,5\n5,6\n6,7\n7,8\n8,9\n");
+    expectError("--profile '" + nan.string() + "' --model hertz --Eprime 2e11 --loads 1e-4", {nan.string(), ":4:"});
+    const auto shortFile = dir.write("short.csv", "0,1\n1,2\n2,3\n");
+    expectError("--profile '" + shortFile.string() + "' --model hertz --Eprime 2e11 --loads 1e-4",
+                {shortFile.string(), "8"});
+}
