@@ -1,0 +1,193 @@
+#include "roughContact/thermal/ContactTable.hpp"
+
+#include "roughContact/Error.hpp"
+#include "roughContact/thermal/ConstrictionConductance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace roughContact {
+
+namespace {
+
+struct Sample {
+    double P;
+    double area;
+    double h;
+};
+
+// Table accuracy: the interpolation error at every interval's midpoint is at most this
+// (relative), a fifth of the 0.5 % the boundary condition is promised.
+constexpr double refineTolerance = 1e-3;
+// Narrowest interval: ln(P1/P0) = 1e-7, i.e. a jump of the model itself is located to 1e-7
+// relative pressure.
+constexpr double minimumLogWidth = 1e-7;
+constexpr std::size_t maximumPoints = 200000;
+// h_c/k_s beyond 1e9 1/m (the resistance of 1 nm of the solid) is perfect contact for any
+// mesh; the table stops there.
+constexpr double conductanceCeiling = 1e9;
+
+// The lowest load F/(A_n E') with A_r/A_n = 1, by bisection in log(load) on the monotone
+// loading path; +infinity when even 1e3 does not reach it.
+double completeContactLoad(const MultiscaleModel& model)
+{
+    double hi = 1e3;
+    if (model.areaFraction(hi) < 1.0) {
+        return std::numeric_limits<double>::infinity();
+    }
+    double lo = 1e-30;
+    while (hi / lo > 1.0 + 1e-10) {
+        const double mid = std::sqrt(lo * hi);
+        (model.areaFraction(mid) < 1.0 ? lo : hi) = mid;
+    }
+    return hi;
+}
+
+} // namespace
+
+ContactTable::ContactTable(const MultiscaleModel& model, double minPressure, double maxPressure,
+                           std::size_t pointsPerDecade)
+    : Eprime_(model.reducedModulus())
+{
+    requirePositive("minimum pressure", minPressure);
+    requirePositive("maximum pressure", maxPressure);
+    if (!(maxPressure > minPressure)) {
+        throw ParameterError("maximum pressure", "must exceed the minimum pressure");
+    }
+    if (pointsPerDecade < 2) {
+        throw ParameterError("points per decade", "must be at least 2");
+    }
+    pComplete_ = completeContactLoad(model) * Eprime_;
+    if (!(minPressure < pComplete_)) {
+        std::ostringstream os;
+        os << "the minimum pressure " << minPressure << " Pa is beyond complete contact (" << pComplete_
+           << " Pa): the table would be empty";
+        throw ParameterError("minimum pressure", os.str());
+    }
+    // The direct solve at one pressure: {A_r/A_n, h_c/k_s}.
+    const auto solve = [&](double P) {
+        const std::vector<LevelState> trace = model.trace(P / Eprime_);
+        const double area = trace.empty() ? 0.0 : trace.back().area / model.nominalArea();
+        const double h = constrictionConductancePerConductivity(trace, model.nominalArea());
+        if (!(area > 0.0 && h > 0.0 && std::isfinite(h))) {
+            std::ostringstream os;
+            os << "the model gives A_r/A_n = " << area << " and h_c/k_s = " << h << " at " << P
+               << " Pa; the table needs positive, finite values";
+            throw ParameterError("contact table", os.str());
+        }
+        return Sample{P, area, h};
+    };
+    // 1. The log-spaced grid, up to maxPressure, complete contact or the conductance ceiling.
+    const double decades = std::log10(maxPressure / minPressure);
+    const auto n = static_cast<std::size_t>(std::ceil(decades * double(pointsPerDecade))) + 1;
+    std::vector<Sample> samples;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double P = minPressure * std::pow(maxPressure / minPressure, double(k) / double(n - 1));
+        if (!(P < pComplete_)) {
+            break;
+        }
+        samples.push_back(solve(P));
+        if (samples.back().h > conductanceCeiling) {
+            break;
+        }
+    }
+    // 2. Adaptive refinement: bisect (in log P) every interval whose log-log interpolation at
+    // the midpoint misses the direct solve by more than refineTolerance, down to a width of
+    // minimumLogWidth (which resolves the models' own jumps, e.g. truncation's area doubling).
+    std::vector<Sample> refined;
+    if (!samples.empty()) {
+        refined.push_back(samples.front());
+    }
+    for (std::size_t k = 1; k < samples.size(); ++k) {
+        std::vector<Sample> stack{samples[k]};
+        while (!stack.empty() && refined.size() < maximumPoints) {
+            const Sample& a = refined.back();
+            const Sample& b = stack.back();
+            const double logWidth = std::log(b.P / a.P);
+            bool accept = logWidth < minimumLogWidth;
+            if (!accept) {
+                const Sample mid = solve(std::sqrt(a.P * b.P));
+                const double area = std::sqrt(a.area * b.area); // log-log linear at the midpoint
+                const double h = std::sqrt(a.h * b.h);
+                if (std::abs(area / mid.area - 1.0) <= refineTolerance &&
+                    std::abs(h / mid.h - 1.0) <= refineTolerance) {
+                    accept = true;
+                } else {
+                    stack.push_back(mid);
+                }
+            }
+            if (accept) {
+                refined.push_back(stack.back());
+                stack.pop_back();
+            }
+        }
+        if (refined.size() >= maximumPoints) {
+            throw ParameterError("contact table", "needs more than " + std::to_string(maximumPoints) +
+                                                      " points to reach its accuracy; narrow the pressure range");
+        }
+    }
+    // 3. The loading path: more pressure never loses contact (running maximum).
+    double area = 0.0;
+    double h = 0.0;
+    for (const Sample& smp : refined) {
+        area = std::max(area, smp.area);
+        h = std::max(h, smp.h);
+        p_.push_back(smp.P);
+        area_.push_back(area);
+        h_.push_back(h);
+    }
+    if (p_.size() < 2) {
+        throw ParameterError("minimum pressure", "is within one table step of complete contact; lower it");
+    }
+    for (std::size_t k = 0; k < p_.size(); ++k) {
+        logP_.push_back(std::log(p_[k]));
+        logArea_.push_back(std::log(area_[k]));
+        logH_.push_back(std::log(h_[k]));
+    }
+}
+
+double ContactTable::interpolate(const std::vector<double>& logValues, double P) const
+{
+    const double x = std::log(P);
+    std::size_t j = 1; // interval [j-1, j]
+    if (x >= logP_.back()) {
+        return std::exp(logValues.back());
+    }
+    if (x > logP_.front()) {
+        j = static_cast<std::size_t>(std::upper_bound(logP_.begin(), logP_.end(), x) - logP_.begin());
+    }
+    const double t = (x - logP_[j - 1]) / (logP_[j] - logP_[j - 1]);
+    return std::exp(logValues[j - 1] + t * (logValues[j] - logValues[j - 1]));
+}
+
+double ContactTable::areaFraction(double P) const
+{
+    if (std::isnan(P)) {
+        throw ParameterError("pressure", "is NaN");
+    }
+    if (P <= 0.0) {
+        return 0.0;
+    }
+    if (P >= pComplete_) {
+        return 1.0;
+    }
+    return std::min(1.0, interpolate(logArea_, P));
+}
+
+double ContactTable::conductancePerConductivity(double P) const
+{
+    if (std::isnan(P)) {
+        throw ParameterError("pressure", "is NaN");
+    }
+    if (P <= 0.0) {
+        return 0.0;
+    }
+    if (P >= pComplete_) {
+        return std::numeric_limits<double>::infinity();
+    }
+    return interpolate(logH_, P);
+}
+
+} // namespace roughContact

@@ -1,0 +1,58 @@
+// A monotone table of the real contact area and the contact conductance against the nominal
+// interface pressure, built once from a multi-scale model and interpolated cheaply: what a
+// boundary condition asks per face and per iteration.
+#pragma once
+
+#include "roughContact/models/MultiscaleModel.hpp"
+
+#include <cstddef>
+#include <vector>
+
+namespace roughContact {
+
+/// Pressures P = F/A_n [Pa] log spaced from minPressure to the end of the table (maxPressure,
+/// or the last point below complete contact, whichever is lower), pointsPerDecade per decade.
+/// At each point the direct solve gives A_r/A_n (MultiscaleModel::areaFraction at P/E') and
+/// h_c/k_s (constrictionConductancePerConductivity); a running maximum makes both
+/// non-decreasing (it only acts on the seed's jgh form, whose area can dip by <= 0.4 %).
+/// Between points both are interpolated linearly in log-log (the curves are near power laws
+/// in P, slope ~1). Queries:
+///   P <= 0                         no contact: 0;
+///   0 < P < minPressure            power-law extrapolation with the first interval's slope;
+///   P beyond the last point but below complete contact: the last point's values (a
+///                                  conservative floor; choose maxPressure to cover the case);
+///   P >= completeContactPressure() complete contact: area 1 and h_c/k_s = +infinity (no
+///                                  constriction left).
+class ContactTable {
+public:
+    ContactTable(const MultiscaleModel& model, double minPressure, double maxPressure,
+                 std::size_t pointsPerDecade = 40);
+
+    /// A_r/A_n at the nominal pressure P [Pa].
+    double areaFraction(double P) const;
+    /// h_c/k_s [1/m] at the nominal pressure P [Pa].
+    double conductancePerConductivity(double P) const;
+
+    /// The lowest pressure [Pa] of complete contact (A_r = A_n), to 1e-10 relative; +infinity
+    /// when the model does not reach it below 1e3 E'.
+    double completeContactPressure() const noexcept { return pComplete_; }
+    /// The table's points: pressures [Pa] and the values there.
+    const std::vector<double>& pressures() const noexcept { return p_; }
+    const std::vector<double>& areaFractions() const noexcept { return area_; }
+    const std::vector<double>& conductancesPerConductivity() const noexcept { return h_; }
+    double reducedModulus() const noexcept { return Eprime_; }
+
+private:
+    double interpolate(const std::vector<double>& values, double P) const;
+
+    double Eprime_;
+    double pComplete_;
+    std::vector<double> p_;
+    std::vector<double> logP_;
+    std::vector<double> area_;
+    std::vector<double> h_;
+    std::vector<double> logArea_;
+    std::vector<double> logH_;
+};
+
+} // namespace roughContact

@@ -1,0 +1,212 @@
+// The multi-scale constriction conductance (physics.md §5) and the pressure table the
+// boundary condition interpolates: closed forms for one and two levels, Holm's limit, the
+// limits at no and at complete contact, and the table's error against the direct solve.
+#include "roughContact/io/ProfileReader.hpp"
+#include "roughContact/material/Materials.hpp"
+#include "roughContact/models/ModelFactory.hpp"
+#include "roughContact/models/MultiscaleModel.hpp"
+#include "roughContact/thermal/ConstrictionConductance.hpp"
+#include "roughContact/thermal/ContactTable.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+
+using namespace roughContact;
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+const ContactMaterials steel = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
+
+std::unique_ptr<MultiscaleModel> multiscale(const std::string& name, const Spectrum& s)
+{
+    return std::make_unique<MultiscaleModel>(s, steel.reducedModulus(), makeAsperityModel(name, steel));
+}
+
+Spectrum standin()
+{
+    return Spectrum::fromProfile(readProfile(std::string(ROUGHCONTACT_SOURCE_DIR) + "/data/standin-2454.csv"));
+}
+
+// Hertz: the contact radius of a sphere of radius R pressed with F, a = (3 F R / (4 E'))^(1/3).
+double hertzRadius(double F, double R, double Eprime)
+{
+    return std::cbrt(3.0 * F * R / (4.0 * Eprime));
+}
+
+} // namespace
+
+TEST(ConstrictionConductance, Factor)
+{
+    EXPECT_EQ(constrictionFactor(0.0), 1.0);
+    EXPECT_EQ(constrictionFactor(1.0), 0.0);
+    EXPECT_NEAR(constrictionFactor(0.75), 0.125, 1e-15); // (1/4)^1.5
+    EXPECT_THROW(constrictionFactor(-0.1), std::invalid_argument);
+    EXPECT_THROW(constrictionFactor(1.1), std::invalid_argument);
+    EXPECT_THROW(constrictionFactor(std::nan("")), std::invalid_argument);
+}
+
+TEST(ConstrictionConductance, HolmsLimitOfTheHarmonicMean)
+{
+    // One spot of radius a between half-spaces k1 and k2: Holm's R = (1/(4a))(1/k1 + 1/k2)
+    // equals 1/(2 k_s a) with k_s = 2 k1 k2/(k1 + k2).
+    const double a = 3e-6, k1 = 15.0, k2 = 200.0;
+    EXPECT_NEAR(1.0 / (2.0 * harmonicMeanConductivity(k1, k2) * a), (1.0 / (4.0 * a)) * (1.0 / k1 + 1.0 / k2),
+                1e-14 / (4.0 * a * k1));
+    EXPECT_THROW(harmonicMeanConductivity(0.0, 1.0), std::invalid_argument);
+    EXPECT_THROW(harmonicMeanConductivity(1.0, -1.0), std::invalid_argument);
+}
+
+TEST(ConstrictionConductance, OneLevelClosedForm)
+{
+    // One sinusoid: N = eta A_n Hertzian spots carrying F/N each, a from Hertz, eps = a/b with
+    // b = 1/sqrt(pi eta); h_c/k_s = 2 a N / (psi(eps) A_n). Round-off only (1e-12).
+    const double L = 1e-3, f = 2e4, beta = 5e-8;
+    const Spectrum s({f}, {beta}, L);
+    const auto m = multiscale("hertz", s);
+    const double Ep = steel.reducedModulus();
+    const double An = L * L;
+    const double eta = 2.0 * f * f;
+    const double R = 1.0 / (4.0 * pi * pi * beta * f * f);
+    for (double load : {1e-7, 1e-5, 1e-4}) {
+        SCOPED_TRACE(load);
+        const double N = eta * An;
+        const double a = hertzRadius(load * An * Ep / N, R, Ep);
+        const double eps = a * std::sqrt(pi * eta);
+        ASSERT_LT(eps, 1.0);
+        const double expected = 2.0 * a * N / (std::pow(1.0 - eps, 1.5) * An);
+        EXPECT_NEAR(constrictionConductancePerConductivity(*m, load), expected, 1e-12 * expected);
+    }
+}
+
+TEST(ConstrictionConductance, TwoLevelsInSeries)
+{
+    // Level 2 sits on the spots of level 1: N2 = eta2 A1 spots carrying F/N2; resistances add.
+    const double L = 1e-3, f1 = 2e4, b1 = 5e-8, f2 = 2e5, b2 = 4e-9;
+    const Spectrum s({f1, f2}, {b1, b2}, L);
+    const auto m = multiscale("hertz", s);
+    const double Ep = steel.reducedModulus();
+    const double An = L * L;
+    const double load = 1e-5;
+    const double F = load * An * Ep;
+    const double eta1 = 2 * f1 * f1, eta2 = 2 * f2 * f2;
+    const double R1 = 1 / (4 * pi * pi * b1 * f1 * f1), R2 = 1 / (4 * pi * pi * b2 * f2 * f2);
+    const double N1 = eta1 * An;
+    const double a1 = hertzRadius(F / N1, R1, Ep);
+    const double A1 = N1 * pi * a1 * a1;
+    const double N2 = eta2 * A1;
+    const double a2 = hertzRadius(F / N2, R2, Ep);
+    const double A2 = N2 * pi * a2 * a2;
+    ASSERT_LT(A2, A1);
+    const double r = std::pow(1 - std::sqrt(A1 / An), 1.5) / (2 * a1 * N1) +
+                     std::pow(1 - std::sqrt(A2 / A1), 1.5) / (2 * a2 * N2);
+    const double expected = 1.0 / (r * An);
+    EXPECT_NEAR(constrictionConductancePerConductivity(*m, load), expected, 1e-12 * expected);
+}
+
+TEST(ConstrictionConductance, LimitsOnTheStandin)
+{
+    const Spectrum s = standin();
+    for (const std::string& name : multiscaleModelNames()) {
+        SCOPED_TRACE(name);
+        const auto m = multiscale(name, s);
+        EXPECT_EQ(constrictionConductancePerConductivity(*m, 0.0), 0.0);
+        double previous = 0.0;
+        for (double load = 1e-8; m->areaFraction(load) < 1.0; load *= 1.5) {
+            const double h = constrictionConductancePerConductivity(*m, load);
+            EXPECT_TRUE(std::isfinite(h)) << load;
+            if (name != "jgh") { // the seed's jgh area can dip by 0.4 % (physics.md)
+                EXPECT_GE(h, previous) << load;
+            }
+            previous = h;
+        }
+        // Complete contact: nothing left to constrict the flow.
+        EXPECT_EQ(constrictionConductancePerConductivity(*m, 1e3), std::numeric_limits<double>::infinity());
+        EXPECT_THROW(constrictionConductancePerConductivity(*m, -1.0), std::invalid_argument);
+    }
+}
+
+TEST(ContactTable, ErrorAgainstTheDirectSolveIsBelowHalfAPercent)
+{
+    // The issue bounds the table's error by 0.5 % over the whole range it covers. Checked at
+    // 1500 log-uniform pressures (fixed seed) plus every interval's midpoint, where linear
+    // interpolation is worst. Two documented exceptions:
+    //  - a jump of the model itself (truncation's area doubles at w_c) cannot be interpolated;
+    //    the table brackets it to 1e-7 relative pressure, and midpoints of such brackets are
+    //    counted and skipped;
+    //  - the seed's jgh is not monotone (its area, and more so h_c/k_s, drop where a level
+    //    switches from Eq. 9 to Eq. 10); its table is the loading-path envelope (running
+    //    maximum), so it may only lie above the direct solve, and it is checked for that.
+    const Spectrum s = standin();
+    const double Ep = steel.reducedModulus();
+    std::mt19937_64 gen(7);
+    for (const std::string& name : multiscaleModelNames()) {
+        SCOPED_TRACE(name);
+        const auto m = multiscale(name, s);
+        const ContactTable table(*m, 1e-9 * Ep, 1e-1 * Ep);
+        const auto& p = table.pressures();
+        ASSERT_GT(p.size(), 10U);
+        std::uniform_real_distribution<double> u(std::log(p.front()), std::log(p.back()));
+        std::vector<double> checks;
+        for (int k = 0; k < 1500; ++k) {
+            checks.push_back(std::exp(u(gen)));
+        }
+        std::size_t brackets = 0;
+        for (std::size_t k = 1; k < p.size(); ++k) {
+            if (std::log(p[k] / p[k - 1]) < 2e-7) {
+                ++brackets;
+            } else {
+                checks.push_back(std::sqrt(p[k - 1] * p[k]));
+            }
+        }
+        double worstArea = 0.0, worstH = 0.0, lowestRatio = 1.0;
+        for (double P : checks) {
+            const double load = P / Ep;
+            const double a = m->areaFraction(load);
+            const double h = constrictionConductancePerConductivity(*m, load);
+            const double ra = table.areaFraction(P) / a;
+            const double rh = table.conductancePerConductivity(P) / h;
+            worstArea = std::max(worstArea, std::abs(ra - 1.0));
+            worstH = std::max(worstH, std::abs(rh - 1.0));
+            lowestRatio = std::min({lowestRatio, ra, rh});
+        }
+        if (name == "jgh") {
+            EXPECT_GT(lowestRatio, 1.0 - 0.005);
+        } else {
+            EXPECT_LT(worstArea, 0.005);
+            EXPECT_LT(worstH, 0.005);
+        }
+        if (name != "truncation" && name != "jgh") {
+            EXPECT_EQ(brackets, 0U) << "only truncation and the seed's jgh have jumps";
+        }
+        std::cout << "[ measured ] " << name << ": " << p.size() << " points (" << brackets
+                  << " jump brackets), worst error area " << worstArea << ", h_c/k_s " << worstH
+                  << ", complete contact at " << table.completeContactPressure() << " Pa\n";
+        // Monotone, and the limits.
+        for (std::size_t k = 1; k < p.size(); ++k) {
+            EXPECT_GE(table.areaFractions()[k], table.areaFractions()[k - 1]);
+            EXPECT_GE(table.conductancesPerConductivity()[k], table.conductancesPerConductivity()[k - 1]);
+        }
+        EXPECT_EQ(table.areaFraction(0.0), 0.0);
+        EXPECT_EQ(table.conductancePerConductivity(-5.0), 0.0);
+        const double pc = table.completeContactPressure();
+        ASSERT_TRUE(std::isfinite(pc));
+        EXPECT_EQ(table.areaFraction(pc), 1.0);
+        EXPECT_EQ(table.conductancePerConductivity(2 * pc), std::numeric_limits<double>::infinity());
+        EXPECT_LT(m->areaFraction(pc / Ep * (1 - 1e-8)), 1.0);
+        EXPECT_THROW(table.areaFraction(std::nan("")), std::invalid_argument);
+    }
+}
+
+TEST(ContactTable, RefusesBadRanges)
+{
+    const auto m = multiscale("hertz", standin());
+    EXPECT_THROW(ContactTable(*m, 0.0, 1e6), std::invalid_argument);
+    EXPECT_THROW(ContactTable(*m, 1e6, 1e5), std::invalid_argument);
+    EXPECT_THROW(ContactTable(*m, 1e3, 1e6, 1), std::invalid_argument);
+    EXPECT_THROW(ContactTable(*m, 1e15, 1e16), std::invalid_argument); // beyond complete contact
+}
