@@ -12,6 +12,7 @@
 #include "roughContact/surface/Profile.hpp"
 #include "roughContact/surface/SpectralMoments.hpp"
 #include "roughContact/surface/Spectrum.hpp"
+#include "roughContact/thermal/ConstrictionConductance.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -46,6 +47,7 @@ struct Options {
     std::optional<double> G;
     std::string fitRange;
     bool levels = false;
+    bool conductance = false;
     bool info = false;
 };
 
@@ -225,12 +227,19 @@ int run(const Options& o)
         }
         return 0;
     }
-    std::cout << "load,area,pressure\n";
+    const auto* ms = dynamic_cast<const MultiscaleModel*>(model.get());
+    if (o.conductance && ms == nullptr) {
+        throw ParameterError("--conductance", "the constriction conductance exists for the multi-scale models only");
+    }
+    std::cout << "load,area,pressure" << (o.conductance ? ",h_per_k" : "") << '\n';
     for (double load : loads) {
         const double a = model->areaFraction(load);
         std::cout << load << ',' << a << ',';
         if (a > 0.0) {
             std::cout << load / a; // F/(A_r E'), seed Eq. 34
+        }
+        if (o.conductance) {
+            std::cout << ',' << constrictionConductancePerConductivity(*ms, load); // inf at complete contact
         }
         std::cout << '\n';
     }
@@ -300,6 +309,9 @@ int main(int argc, char** argv)
     app.add_option("--G", o.G, "Majumdar-Bhushan fractal roughness [m] (default: fitted)");
     app.add_option("--fit-range", o.fitRange, "FMIN:FMAX [1/m]: frequencies the D,G fit uses (default all)");
     app.add_flag("--levels", o.levels, "print the per-level trace (seed Fig. 5) instead of the load curve");
+    app.add_flag("--conductance", o.conductance,
+                 "add the column h_per_k: contact conductance over k_s = 2 k1 k2/(k1 + k2), in 1/m, from the "
+                 "multi-scale constriction resistances in series (inf at complete contact); multi-scale models");
     app.add_flag("--info", o.info, "print the surface's parameters (McCool, fractal fit) to stderr");
 
     try {

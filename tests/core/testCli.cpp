@@ -5,7 +5,9 @@
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/material/Materials.hpp"
 #include "roughContact/models/ModelFactory.hpp"
+#include "roughContact/models/MultiscaleModel.hpp"
 #include "roughContact/surface/Spectrum.hpp"
+#include "roughContact/thermal/ConstrictionConductance.hpp"
 
 #include <gtest/gtest.h>
 
@@ -147,6 +149,27 @@ TEST(Cli, LevelTraceSumsToTheArea)
         previous = a;
     }
     EXPECT_NEAR(previous, std::stod(c.rows.at(0).at(column(c, "area"))), 1e-9 * previous);
+}
+
+TEST(Cli, ConductanceColumnIsTheLibrarys)
+{
+    // --conductance adds h_per_k = h_c/k_s [1/m]; the CLI prints the library's value to 10 digits.
+    const CommandResult r =
+        run("--profile '" + standin + "' --model jacksonGreen" + steel + " --loads 1e-6,1e-4,1e-3 --conductance");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Csv csv = parseCsv(r.out);
+    const int hi = column(csv, "h_per_k");
+    const Spectrum s = Spectrum::fromProfile(readProfile(standin));
+    const ContactMaterials mat = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
+    const MultiscaleModel m(s, mat.reducedModulus(), makeAsperityModel("jacksonGreen", mat));
+    ASSERT_EQ(csv.rows.size(), 3U);
+    for (const auto& row : csv.rows) {
+        const double load = std::stod(row.at(0));
+        const double expected = constrictionConductancePerConductivity(m, load);
+        EXPECT_NEAR(std::stod(row.at(hi)), expected, 1e-9 * expected);
+    }
+    expectError("--profile '" + standin + "' --model greenwoodWilliamson" + steel + " --loads 1e-4 --conductance",
+                {"--conductance"});
 }
 
 TEST(Cli, SurfaceDescriptions)
