@@ -139,7 +139,8 @@ ContactMaterials materialsOf(const Options& o)
 {
     if (o.Eprime) {
         if (o.nu.size() > 1 || o.Sy.size() > 1) {
-            throw ParameterError("--Eprime", "takes one --nu and one --Sy (of the material that yields first)");
+            throw ParameterError("--Eprime",
+                                 "takes one --nu and one --Sy (of the material that yields first)");
         }
         return ContactMaterials::fromReducedModulus(
             *o.Eprime, o.nu.empty() ? std::nullopt : std::optional<double>(o.nu[0]),
@@ -229,7 +230,8 @@ int run(const Options& o)
     }
     const auto* ms = dynamic_cast<const MultiscaleModel*>(model.get());
     if (o.conductance && ms == nullptr) {
-        throw ParameterError("--conductance", "the constriction conductance exists for the multi-scale models only");
+        throw ParameterError("--conductance",
+                             "the constriction conductance exists for the multi-scale models only");
     }
     std::cout << "load,area,pressure" << (o.conductance ? ",h_per_k" : "") << '\n';
     for (double load : loads) {
@@ -259,31 +261,39 @@ int main(int argc, char** argv)
     Options o;
 
     auto* surface = app.add_option_group("surface", "exactly one surface description");
-    surface->add_option("--profile", o.profiles,
-                        "measured profile: columns 'x z', or 'z' with --dx; comma or whitespace separated, "
-                        "# comments and one header line allowed, Dektak CSV exports read as is; mean and tilt "
-                        "are removed. Give it twice for two rough surfaces")
+    surface
+        ->add_option("--profile", o.profiles,
+                     "measured profile: columns 'x z', or 'z' with --dx; comma or whitespace separated, "
+                     "# comments and one header line allowed, Dektak CSV exports read as is; mean and tilt "
+                     "are removed. Give it twice for two rough surfaces")
         ->expected(1, 2)
         ->check(CLI::ExistingFile);
-    surface->add_option("--spectrum", o.spectra,
-                        "spectrum table: columns 'frequency [1/m]  amplitude [m]'; twice for two surfaces")
+    surface
+        ->add_option("--spectrum", o.spectra,
+                     "spectrum table: columns 'frequency [1/m]  amplitude [m]'; twice for two surfaces")
         ->expected(1, 2)
         ->check(CLI::ExistingFile);
-    surface->add_option("--power-law", o.powerLaw, "BM,M,FMIN,FMAX: amplitude BM f^-M [m] at f = i/L in [FMIN, FMAX]")
+    surface
+        ->add_option("--power-law", o.powerLaw,
+                     "BM,M,FMIN,FMAX: amplitude BM f^-M [m] at f = i/L in [FMIN, FMAX]")
         ->delimiter(',')
         ->expected(4);
-    surface->add_option("--fractal", o.fractal,
-                        "D,G,FMIN,FMAX: Majumdar-Bhushan (Weierstrass-Mandelbrot) spectrum, G in m")
+    surface
+        ->add_option("--fractal", o.fractal,
+                     "D,G,FMIN,FMAX: Majumdar-Bhushan (Weierstrass-Mandelbrot) spectrum, G in m")
         ->delimiter(',')
         ->expected(4);
     surface->require_option(1);
 
-    app.add_option("--units", o.units, "units of profile files: m (default), um or nm; a Dektak export's "
-                                       "own header (um) is used when this is not given");
+    app.add_option("--units", o.units,
+                   "units of profile files: m (default), um or nm; a Dektak export's "
+                   "own header (um) is used when this is not given");
     app.add_option("--dx", o.dx, "sample spacing of one-column profiles, in --units");
-    app.add_option("--length", o.length, "scan length L [m] for --spectrum/--power-law/--fractal "
-                                         "(default 1/lowest frequency); A_n = L^2");
-    app.add_option("--stride", o.stride, "use every K-th profile sample (sampling interval K dx; seed Fig. 8)")
+    app.add_option("--length", o.length,
+                   "scan length L [m] for --spectrum/--power-law/--fractal "
+                   "(default 1/lowest frequency); A_n = L^2");
+    app.add_option("--stride", o.stride,
+                   "use every K-th profile sample (sampling interval K dx; seed Fig. 8)")
         ->check(CLI::PositiveNumber);
 
     app.add_option("--model", o.model,
@@ -292,12 +302,15 @@ int main(int argc, char** argv)
         ->required()
         ->check(CLI::IsMember(modelNames()));
 
-    auto* E = app.add_option("--E", o.E, "Young's modulus [Pa]; E1,E2 for two solids")->delimiter(',')->expected(1, 2);
+    auto* E = app.add_option("--E", o.E, "Young's modulus [Pa]; E1,E2 for two solids")
+                  ->delimiter(',')
+                  ->expected(1, 2);
     app.add_option("--nu", o.nu, "Poisson's ratio; nu1,nu2 with two moduli")->delimiter(',')->expected(1, 2);
     auto* Ep = app.add_option("--Eprime", o.Eprime, "reduced modulus E' [Pa] instead of --E/--nu");
     E->excludes(Ep);
-    app.add_option("--Sy", o.Sy, "yield strength [Pa] (jacksonGreen, truncation, greenwoodWilliamsonJG, "
-                                 "majumdarBhushan); Sy1,Sy2 with two moduli")
+    app.add_option("--Sy", o.Sy,
+                   "yield strength [Pa] (jacksonGreen, truncation, greenwoodWilliamsonJG, "
+                   "majumdarBhushan); Sy1,Sy2 with two moduli")
         ->delimiter(',')
         ->expected(1, 2);
 
@@ -309,9 +322,10 @@ int main(int argc, char** argv)
     app.add_option("--G", o.G, "Majumdar-Bhushan fractal roughness [m] (default: fitted)");
     app.add_option("--fit-range", o.fitRange, "FMIN:FMAX [1/m]: frequencies the D,G fit uses (default all)");
     app.add_flag("--levels", o.levels, "print the per-level trace (seed Fig. 5) instead of the load curve");
-    app.add_flag("--conductance", o.conductance,
-                 "add the column h_per_k: contact conductance over k_s = 2 k1 k2/(k1 + k2), in 1/m, from the "
-                 "multi-scale constriction resistances in series (inf at complete contact); multi-scale models");
+    app.add_flag(
+        "--conductance", o.conductance,
+        "add the column h_per_k: contact conductance over k_s = 2 k1 k2/(k1 + k2), in 1/m, from the "
+        "multi-scale constriction resistances in series (inf at complete contact); multi-scale models");
     app.add_flag("--info", o.info, "print the surface's parameters (McCool, fractal fit) to stderr");
 
     try {

@@ -89,8 +89,9 @@ TEST(Cli, HelpDocumentsEveryOptionAndModel)
 {
     const CommandResult r = run("--help");
     EXPECT_EQ(r.status, 0);
-    for (const char* opt : {"--profile", "--units", "--spectrum", "--length", "--power-law", "--fractal", "--model",
-                            "--E", "--nu", "--Eprime", "--Sy", "--loads", "--load-range", "--levels", "--stride"}) {
+    for (const char* opt :
+         {"--profile", "--units", "--spectrum", "--length", "--power-law", "--fractal", "--model", "--E",
+          "--nu", "--Eprime", "--Sy", "--loads", "--load-range", "--levels", "--stride"}) {
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
     }
     for (const std::string& m : modelNames()) {
@@ -107,7 +108,8 @@ TEST(Cli, LoadCurveIsTheLibrarysForEveryModel)
     const ContactMaterials mat = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
     for (const std::string& name : modelNames()) {
         SCOPED_TRACE(name);
-        const CommandResult r = run("--profile '" + standin + "' --model " + name + steel + " --load-range 1e-6:1e-2:9");
+        const CommandResult r =
+            run("--profile '" + standin + "' --model " + name + steel + " --load-range 1e-6:1e-2:9");
         ASSERT_EQ(r.status, 0) << r.err;
         const Csv csv = parseCsv(r.out);
         const int li = column(csv, "load");
@@ -135,7 +137,8 @@ TEST(Cli, LevelTraceSumsToTheArea)
     // Seed Eq. 4/5: the area at the last level is the model's answer A_r/A_n; each level's area
     // is at most the previous one's (a_i = A_i/A_{i-1} <= 1 once capped).
     const CommandResult curve = run("--profile '" + standin + "' --model hertz" + steel + " --loads 7.94e-5");
-    const CommandResult trace = run("--profile '" + standin + "' --model hertz" + steel + " --loads 7.94e-5 --levels");
+    const CommandResult trace =
+        run("--profile '" + standin + "' --model hertz" + steel + " --loads 7.94e-5 --levels");
     ASSERT_EQ(curve.status, 0) << curve.err;
     ASSERT_EQ(trace.status, 0) << trace.err;
     const Csv c = parseCsv(curve.out);
@@ -154,8 +157,8 @@ TEST(Cli, LevelTraceSumsToTheArea)
 TEST(Cli, ConductanceColumnIsTheLibrarys)
 {
     // --conductance adds h_per_k = h_c/k_s [1/m]; the CLI prints the library's value to 10 digits.
-    const CommandResult r =
-        run("--profile '" + standin + "' --model jacksonGreen" + steel + " --loads 1e-6,1e-4,1e-3 --conductance");
+    const CommandResult r = run("--profile '" + standin + "' --model jacksonGreen" + steel +
+                                " --loads 1e-6,1e-4,1e-3 --conductance");
     ASSERT_EQ(r.status, 0) << r.err;
     const Csv csv = parseCsv(r.out);
     const int hi = column(csv, "h_per_k");
@@ -168,7 +171,8 @@ TEST(Cli, ConductanceColumnIsTheLibrarys)
         const double expected = constrictionConductancePerConductivity(m, load);
         EXPECT_NEAR(std::stod(row.at(hi)), expected, 1e-9 * expected);
     }
-    expectError("--profile '" + standin + "' --model greenwoodWilliamson" + steel + " --loads 1e-4 --conductance",
+    expectError("--profile '" + standin + "' --model greenwoodWilliamson" + steel +
+                    " --loads 1e-4 --conductance",
                 {"--conductance"});
 }
 
@@ -185,12 +189,14 @@ TEST(Cli, SurfaceDescriptions)
         table << f << ',' << 1e-7 * std::pow(f / 1e3, -1.2) << '\n';
     }
     const auto path = dir.write("spectrum.csv", table.str());
-    const CommandResult a = run("--spectrum '" + path.string() + "' --model jacksonGreen" + steel + " --loads 1e-4");
+    const CommandResult a =
+        run("--spectrum '" + path.string() + "' --model jacksonGreen" + steel + " --loads 1e-4");
     std::ostringstream bm;
     bm.precision(17);
     bm << 1e-7 * std::pow(1e3, 1.2);
-    const CommandResult b = run("--power-law " + bm.str() + ",1.2,1000,200000 --length 1e-3 --model jacksonGreen" +
-                                steel + " --loads 1e-4");
+    const CommandResult b =
+        run("--power-law " + bm.str() + ",1.2,1000,200000 --length 1e-3 --model jacksonGreen" + steel +
+            " --loads 1e-4");
     ASSERT_EQ(a.status, 0) << a.err;
     ASSERT_EQ(b.status, 0) << b.err;
     const double areaA = std::stod(parseCsv(a.out).rows.at(0).at(1));
@@ -203,7 +209,8 @@ TEST(Cli, SurfaceDescriptions)
 TEST(Cli, ErrorPaths)
 {
     const std::string p = "--profile '" + standin + "'";
-    expectError("--profile /no/such/file.csv --model hertz --Eprime 2e11 --loads 1e-4", {"/no/such/file.csv"});
+    expectError("--profile /no/such/file.csv --model hertz --Eprime 2e11 --loads 1e-4",
+                {"/no/such/file.csv"});
     expectError(p + " --model nosuchmodel --Eprime 2e11 --loads 1e-4", {"nosuchmodel"});
     expectError(p + " --model hertz --Eprime 2e11", {"--loads"});
     expectError(p + " --model hertz --E 2e11 --loads 1e-4", {"--nu"});
@@ -219,8 +226,9 @@ TEST(Cli, ErrorPaths)
     expectError(p + " --model greenwoodWilliamson --Eprime 2e11 --loads 1e-4 --levels", {"--levels"});
     expectError(p + " --model majumdarBhushan --Eprime 2e11 --Sy 2e8 --D 1.5 --loads 1e-4", {"--D/--G"});
     expectError(p + " --spectrum '" + standin + "' --model hertz --Eprime 2e11 --loads 1e-4", {"Exactly 1"});
-    expectError("--power-law 1e-4,1.2,1e3,1e6 --length 1e-3 --stride 2 --model hertz --Eprime 2e11 --loads 1e-4",
-                {"--stride"});
+    expectError(
+        "--power-law 1e-4,1.2,1e3,1e6 --length 1e-3 --stride 2 --model hertz --Eprime 2e11 --loads 1e-4",
+        {"--stride"});
     expectError(p + " --units furlong --model hertz --Eprime 2e11 --loads 1e-4", {"furlong"});
 
     // A bad file: the message names the file and the line.
@@ -229,7 +237,8 @@ TEST(Cli, ErrorPaths)
     expectError("--profile '" + bad.string() + "' --model hertz --Eprime 2e11 --loads 1e-4",
                 {bad.string(), ":4:"});
     const auto nan = dir.write("nan.csv", "0,1\n1,2\n2,3\n3,nan\n4,5\n5,6\n6,7\n7,8\n8,9\n");
-    expectError("--profile '" + nan.string() + "' --model hertz --Eprime 2e11 --loads 1e-4", {nan.string(), ":4:"});
+    expectError("--profile '" + nan.string() + "' --model hertz --Eprime 2e11 --loads 1e-4",
+                {nan.string(), ":4:"});
     const auto shortFile = dir.write("short.csv", "0,1\n1,2\n2,3\n");
     expectError("--profile '" + shortFile.string() + "' --model hertz --Eprime 2e11 --loads 1e-4",
                 {shortFile.string(), "8"});

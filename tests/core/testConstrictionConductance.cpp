@@ -29,7 +29,8 @@ std::unique_ptr<MultiscaleModel> multiscale(const std::string& name, const Spect
 
 Spectrum standin()
 {
-    return Spectrum::fromProfile(readProfile(std::string(ROUGHCONTACT_SOURCE_DIR) + "/data/standin-2454.csv"));
+    return Spectrum::fromProfile(
+        readProfile(std::string(ROUGHCONTACT_SOURCE_DIR) + "/data/standin-2454.csv"));
 }
 
 // Hertz: the contact radius of a sphere of radius R pressed with F, a = (3 F R / (4 E'))^(1/3).

@@ -21,7 +21,8 @@ const ContactMaterials steel = ContactMaterials::againstRigidFlat(Material{179.5
 
 Spectrum standin()
 {
-    return Spectrum::fromProfile(readProfile(std::string(ROUGHCONTACT_SOURCE_DIR) + "/data/standin-2454.csv"));
+    return Spectrum::fromProfile(
+        readProfile(std::string(ROUGHCONTACT_SOURCE_DIR) + "/data/standin-2454.csv"));
 }
 
 // Largest relative decrease of the area over a dense log-spaced sweep of loads [lo, hi].
@@ -85,7 +86,8 @@ TEST(ContactModels, FactoryRefusesWhatItCannotBuild)
 {
     const Spectrum s = standin();
     EXPECT_THROW(makeContactModel("hertzian", s, steel), std::invalid_argument);
-    const ContactMaterials elastic = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, std::nullopt});
+    const ContactMaterials elastic =
+        ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, std::nullopt});
     for (const char* name : {"jacksonGreen", "truncation", "greenwoodWilliamsonJG", "majumdarBhushan"}) {
         SCOPED_TRACE(name);
         try {

@@ -124,8 +124,9 @@ ContactTable::ContactTable(const MultiscaleModel& model, double minPressure, dou
             }
         }
         if (refined.size() >= maximumPoints) {
-            throw ParameterError("contact table", "needs more than " + std::to_string(maximumPoints) +
-                                                      " points to reach its accuracy; narrow the pressure range");
+            throw ParameterError("contact table",
+                                 "needs more than " + std::to_string(maximumPoints) +
+                                     " points to reach its accuracy; narrow the pressure range");
         }
     }
     // 3. The loading path: more pressure never loses contact (running maximum).
