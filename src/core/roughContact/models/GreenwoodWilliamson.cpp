@@ -29,6 +29,10 @@ constexpr double tailExponent = 50.0;
 // tolerance with deep bisection spends millions of evaluations resolving them for nothing.
 constexpr double quadratureTolerance = 1e-10;
 constexpr unsigned quadratureDepth = 10;
+// Growth of ln(load) below which a step of >= 1 in h counts as saturation (complete contact
+// of every summit the Gaussian weight reaches): well above the quadrature's 1e-10 noise, and
+// a step of 1 from a separation where more than ~1e-8 of the force still grows gives more.
+constexpr double saturationGrowth = 1e-9;
 
 // ln phi(x) of the standard normal density.
 double logPhi(double x)
@@ -110,11 +114,23 @@ double GreenwoodWilliamson::logIntegral(Quantity q, double h) const
         const double value = q == Quantity::area ? law.area(w, R) : law.force(w, R);
         return value * weight(t);
     };
-    // (t + h)^2/2 - hp^2/2 >= tailExponent beyond t_max = -h + sqrt(h^2 + 2 tailExponent)
-    // for h <= 0, and t h + t^2/2 >= tailExponent beyond the same t_max for h > 0.
-    const double tMax = -h + std::sqrt(h * h + 2.0 * tailExponent);
+    // The Gaussian weight falls below exp(-tailExponent) of its largest value outside
+    // [t_min, t_max]: for h <= 0 it peaks at t = -h and (t + h)^2/2 >= tailExponent outside
+    // -h -+ sqrt(2 tailExponent); for h > 0 it peaks at t = 0 and t h + t^2/2 >= tailExponent
+    // beyond -h + sqrt(h^2 + 2 tailExponent) = 2 tailExponent / (h + sqrt(h^2 + 2 tailExponent)).
+    // Cutting on both sides matters at heavy loads (h << 0): integrating [0, 2|h|] for a peak
+    // of width 1 at |h| = 1e4 lets the adaptive rule miss the peak altogether.
+    const double halfWidth = std::sqrt(2.0 * tailExponent);
+    const double tMin = h < 0.0 ? std::max(0.0, -h - halfWidth) : 0.0;
+    const double tMax = h < 0.0 ? -h + halfWidth
+                                : 2.0 * tailExponent / (h + std::sqrt(h * h + 2.0 * tailExponent));
+    if (h < 0.0 && !(tMax - tMin >= halfWidth)) { // -h -+ halfWidth no longer resolved
+        std::ostringstream os;
+        os << "|h| = " << std::abs(h) << " is too large to resolve the Gaussian summit heights";
+        throw ParameterError("separation h", os.str());
+    }
     double sum = 0.0;
-    double a = 0.0;
+    double a = tMin;
     const auto panel = [&](double b) {
         if (b > a) {
             sum += boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
@@ -147,30 +163,82 @@ double GreenwoodWilliamson::loadAt(double h) const
     return std::exp(logIntegral(Quantity::force, h)) / Eprime_; // F/(A_n E'), physics.md §4
 }
 
-double GreenwoodWilliamson::separation(double load) const
+double GreenwoodWilliamson::solveSeparation(double load, double* saturated) const
 {
     requirePositive("load", checkLoad(load));
-    // ln(F/(A_n E')) falls strictly and smoothly with h (summits leave contact); solve for
-    // x = exp(h) so that Boost's multiplicative bracketing covers h of either sign.
+    // g(h) = ln(eta int F phi) - ln(load E') falls with h (summits leave contact). It falls
+    // strictly while some summit is below complete contact; a law whose force stops growing
+    // at complete contact (Jackson-Green) saturates as h -> -inf, so loads above
+    // eta F_complete / E' are unreachable.
     const double target = std::log(load) + std::log(Eprime_);
-    const auto g = [&](double x) { return logIntegral(Quantity::force, std::log(x)) - target; };
-    std::uintmax_t iterations = 400;
+    const auto g = [&](double h) { return logIntegral(Quantity::force, h) - target; };
+    // Bracket [lo, hi] with g(lo) >= 0 > g(hi) by steps doubling away from h = 0.
+    double lo = 0.0;
+    double hi = 0.0;
+    double glo = g(0.0);
+    double ghi = glo;
+    double step = 1.0;
+    if (glo >= 0.0) {
+        for (;;) { // root at h > 0: lighter loads
+            hi = lo + step;
+            ghi = g(hi);
+            if (ghi < 0.0) {
+                break;
+            }
+            lo = hi;
+            glo = ghi;
+            step *= 2.0;
+        }
+    } else {
+        for (;;) { // root at h < 0: heavier loads
+            lo = hi - step;
+            glo = g(lo);
+            if (glo >= 0.0) {
+                break;
+            }
+            // No growth over a step of >= 1 in h: every summit that the Gaussian weight
+            // reaches is in complete contact, the load has saturated below the target.
+            if (!(glo - ghi > saturationGrowth)) {
+                if (saturated != nullptr) {
+                    *saturated = lo;
+                    return std::numeric_limits<double>::quiet_NaN();
+                }
+                std::ostringstream os;
+                os << "F/(A_n E') = " << load << " exceeds the largest load the summits carry, "
+                   << std::exp(glo + target) / Eprime_ << " (every summit in complete contact)";
+                throw ParameterError("load", os.str());
+            }
+            hi = lo;
+            ghi = glo;
+            step *= 2.0;
+        }
+    }
+    // To a few ulp of max(|h|, 1): relative far out, absolute near h = 0.
+    const auto converged = [](double a, double b) {
+        const double eps = std::numeric_limits<double>::epsilon();
+        return std::abs(b - a) <= 4.0 * eps * std::max(1.0, std::min(std::abs(a), std::abs(b)));
+    };
+    std::uintmax_t iterations = 200;
     std::pair<double, double> r;
     try {
-        r = boost::math::tools::bracket_and_solve_root(
-            g, 1.0, 2.0, false, boost::math::tools::eps_tolerance<double>(52), iterations);
+        r = boost::math::tools::toms748_solve(g, lo, hi, glo, ghi, converged, iterations);
     } catch (const std::exception& e) {
         std::ostringstream os;
         os << "no separation gives F/(A_n E') = " << load << " (" << e.what() << ")";
         throw ParameterError("load", os.str());
     }
-    const double h = std::log(0.5 * (r.first + r.second));
+    const double h = 0.5 * (r.first + r.second);
     if (!std::isfinite(h)) {
         std::ostringstream os;
         os << "no finite separation gives F/(A_n E') = " << load;
         throw ParameterError("load", os.str());
     }
     return h;
+}
+
+double GreenwoodWilliamson::separation(double load) const
+{
+    return solveSeparation(load, nullptr);
 }
 
 double GreenwoodWilliamson::areaFraction(double load) const
@@ -180,7 +248,17 @@ double GreenwoodWilliamson::areaFraction(double load) const
     }
     // The independent summits' areas add without bound; a fraction above 1 means the GW
     // picture has broken down, and the model reports complete contact.
-    return std::min(areaFractionAt(separation(load)), 1.0);
+    double saturatedAt = 0.0;
+    const double h = solveSeparation(load, &saturatedAt);
+    if (std::isnan(h)) {
+        // Beyond the largest load the summits carry: complete contact if, all summits
+        // flattened, their areas already cover A_n; otherwise the model has no answer.
+        if (areaFractionAt(saturatedAt) >= 1.0) {
+            return 1.0;
+        }
+        solveSeparation(load, nullptr); // throws, naming the largest load
+    }
+    return std::min(areaFractionAt(h), 1.0);
 }
 
 } // namespace roughContact

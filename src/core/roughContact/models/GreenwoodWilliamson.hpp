@@ -40,10 +40,14 @@ public:
 
     std::string name() const override { return name_; }
     /// A_r/A_n at the load F/(A_n E'), capped at 1 (the GW integral itself exceeds 1 at heavy
-    /// loads: summits are independent and their areas simply add). load 0 gives 0.
+    /// loads: summits are independent and their areas simply add). load 0 gives 0. Above the
+    /// largest load the summits carry: 1 when their areas at complete contact cover A_n,
+    /// ParameterError otherwise.
     double areaFraction(double load) const override;
 
     /// Separation h = d / sigma_s at which F/(A_n E') = load (> 0; bracketed root find).
+    /// ParameterError when the load exceeds the largest the summits carry (an asperity law
+    /// whose force stops growing at complete contact, as Jackson-Green's, saturates).
     double separation(double load) const;
     /// A_r/A_n at separation h, not capped.
     double areaFractionAt(double h) const;
@@ -60,6 +64,9 @@ private:
     /// ln of eta int_0^inf Q(t sigma_s, R) phi(t + h) dt (Q the area or the force), computed
     /// with the Gaussian factor phi(max(h, 0)) taken out so that nothing underflows.
     double logIntegral(Quantity q, double h) const;
+    /// separation(); when the load is unreachable and saturated != nullptr, returns NaN and
+    /// stores in *saturated a separation at which the load has saturated.
+    double solveSeparation(double load, double* saturated) const;
 
     SummitParameters summits_;
     double An_;
