@@ -1,0 +1,87 @@
+#include "roughContact/interface/ContactInterface.hpp"
+
+#include "roughContact/Error.hpp"
+#include "roughContact/io/SpectrumReader.hpp"
+#include "roughContact/models/ModelFactory.hpp"
+
+#include <optional>
+#include <sstream>
+
+namespace roughContact {
+
+Spectrum SurfaceSpec::spectrum() const
+{
+    const auto needParameters = [&](const char* what) {
+        if (parameters.size() != 4) {
+            throw ParameterError(what, "needs 4 parameters");
+        }
+    };
+    switch (kind) {
+    case Kind::profile: {
+        if (stride < 1) {
+            throw ParameterError("stride", "must be at least 1");
+        }
+        return Spectrum::fromProfile(readProfile(file, profileOptions).subsampled(stride));
+    }
+    case Kind::spectrum:
+        return readSpectrum(file, length);
+    case Kind::powerLaw:
+        needParameters("power law (b_m, m, fmin, fmax)");
+        return Spectrum::powerLaw(parameters[0], parameters[1], parameters[2], parameters[3],
+                                  length.value_or(0.0));
+    case Kind::fractal:
+        needParameters("fractal (D, G, fmin, fmax)");
+        return Spectrum::fractal(parameters[0], parameters[1], parameters[2], parameters[3],
+                                 length.value_or(0.0));
+    }
+    throw ParameterError("surface", "unknown kind");
+}
+
+namespace {
+
+Spectrum equivalentSurface(const std::vector<SurfaceSpec>& surfaces)
+{
+    if (surfaces.empty() || surfaces.size() > 2) {
+        throw ParameterError("surfaces", "give one equivalent surface or one per side");
+    }
+    std::optional<Spectrum> total;
+    for (const SurfaceSpec& s : surfaces) {
+        const Spectrum one = s.spectrum();
+        total = total ? Spectrum::combine(*total, one) : one;
+    }
+    return *total;
+}
+
+} // namespace
+
+ContactInterface::ContactInterface(const InterfaceSpec& spec)
+    : surface_(equivalentSurface(spec.surfaces)), materials_(ContactMaterials::pair(spec.side1, spec.side2))
+{
+    if (!isMultiscaleModel(spec.model)) {
+        std::string names;
+        for (const std::string& n : multiscaleModelNames()) {
+            names += (names.empty() ? "" : ", ") + n;
+        }
+        throw ParameterError("model",
+                             "unknown multi-scale model '" + spec.model + "' (one of " + names + ")");
+    }
+    const double Ep = materials_.reducedModulus();
+    model_ = std::make_unique<MultiscaleModel>(surface_, Ep, makeAsperityModel(spec.model, materials_));
+    table_ = std::make_unique<ContactTable>(*model_, spec.minPressure.value_or(1e-9 * Ep),
+                                            spec.maxPressure.value_or(Ep), spec.pointsPerDecade);
+}
+
+std::string ContactInterface::summary() const
+{
+    std::ostringstream os;
+    const auto& p = table_->pressures();
+    os << "surface " << surface_.source() << ": " << surface_.size() << " levels, L = " << surface_.length()
+       << " m; E' = " << reducedModulus() << " Pa; model " << model_->name() << "; table " << p.size()
+       << " points from " << p.front() << " to " << p.back() << " Pa (h_c/k_s "
+       << table_->conductancesPerConductivity().front() << " to "
+       << table_->conductancesPerConductivity().back() << " 1/m); complete contact at "
+       << table_->completeContactPressure() << " Pa";
+    return os.str();
+}
+
+} // namespace roughContact

@@ -1,0 +1,75 @@
+// Everything a boundary condition needs from the core, built once from a plain description of
+// the interface (surfaces, materials, asperity model) and then asked, per face, for the real
+// contact area and h_c/k_s at the local nominal pressure. No OpenFOAM type appears here: the
+// OpenFOAM glue fills an InterfaceSpec from its dictionary and calls this.
+#pragma once
+
+#include "roughContact/io/ProfileReader.hpp"
+#include "roughContact/material/Materials.hpp"
+#include "roughContact/models/MultiscaleModel.hpp"
+#include "roughContact/surface/Spectrum.hpp"
+#include "roughContact/thermal/ContactTable.hpp"
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace roughContact {
+
+/// One rough surface as a user describes it.
+struct SurfaceSpec {
+    enum class Kind { profile, spectrum, powerLaw, fractal };
+    Kind kind = Kind::profile;
+    std::string file;                  ///< profile or spectrum file
+    ProfileReadOptions profileOptions; ///< units, spacing of one-column profiles
+    std::size_t stride = 1;            ///< use every stride-th profile sample
+    std::optional<double> length;      ///< scan length [m] of a spectrum or power law
+    /// powerLaw: b_m [m], m, fmin, fmax [1/m]; fractal: D, G [m], fmin, fmax [1/m].
+    std::vector<double> parameters;
+
+    /// The surface's spectrum (reads the file; InputError/ParameterError on bad input).
+    Spectrum spectrum() const;
+};
+
+/// The interface between two solids.
+struct InterfaceSpec {
+    /// One equivalent surface, or one per side (combined into the equivalent one, seed §2.1).
+    std::vector<SurfaceSpec> surfaces;
+    /// The solids on either side (E, nu, S_y); E' = 1/((1-nu1^2)/E1 + (1-nu2^2)/E2) and the
+    /// softer S_y deforms (ContactMaterials::pair).
+    Material side1;
+    Material side2;
+    /// A multi-scale asperity model: hertz, jgh, jghConsistent, jacksonGreen or truncation.
+    std::string model = "jacksonGreen";
+    /// Table range [Pa]; unset: 1e-9 E' to E' (complete contact ends it earlier).
+    std::optional<double> minPressure;
+    std::optional<double> maxPressure;
+    std::size_t pointsPerDecade = 40;
+};
+
+class ContactInterface {
+public:
+    explicit ContactInterface(const InterfaceSpec& spec);
+
+    /// A_r/A_n at the nominal pressure P [Pa] (0 for P <= 0, 1 beyond complete contact).
+    double areaFraction(double P) const { return table_->areaFraction(P); }
+    /// h_c/k_s [1/m] at P [Pa] (0 for P <= 0, +infinity beyond complete contact).
+    double conductancePerConductivity(double P) const { return table_->conductancePerConductivity(P); }
+
+    const ContactTable& table() const noexcept { return *table_; }
+    const MultiscaleModel& model() const noexcept { return *model_; }
+    const Spectrum& surface() const noexcept { return surface_; }
+    double reducedModulus() const noexcept { return materials_.reducedModulus(); }
+    /// A few lines for a log: surface, levels, E', model, table range, complete contact.
+    std::string summary() const;
+
+private:
+    Spectrum surface_;
+    ContactMaterials materials_;
+    std::unique_ptr<MultiscaleModel> model_;
+    std::unique_ptr<ContactTable> table_;
+};
+
+} // namespace roughContact

@@ -1,0 +1,112 @@
+// The boundary condition's entry point: an interface built from a plain description gives the
+// same numbers as building the pieces by hand, and refuses bad descriptions clearly.
+#include "RunCommand.hpp"
+
+#include "roughContact/interface/ContactInterface.hpp"
+#include "roughContact/io/ProfileReader.hpp"
+#include "roughContact/models/ModelFactory.hpp"
+#include "roughContact/thermal/ConstrictionConductance.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+using namespace roughContact;
+
+namespace {
+const std::string standin = std::string(ROUGHCONTACT_SOURCE_DIR) + "/data/standin-2454.csv";
+const Material steel{179.52e9, 0.32, 0.2e9};
+const Material copper{117e9, 0.34, 0.07e9};
+
+InterfaceSpec steelOnCopper()
+{
+    InterfaceSpec spec;
+    SurfaceSpec s;
+    s.kind = SurfaceSpec::Kind::profile;
+    s.file = standin;
+    spec.surfaces = {s};
+    spec.side1 = steel;
+    spec.side2 = copper;
+    spec.model = "jacksonGreen";
+    return spec;
+}
+} // namespace
+
+TEST(ContactInterface, EqualsTheHandBuiltModel)
+{
+    const ContactInterface ci(steelOnCopper());
+    const ContactMaterials mat = ContactMaterials::pair(steel, copper);
+    EXPECT_NEAR(ci.reducedModulus(), 1.0 / ((1 - 0.32 * 0.32) / 179.52e9 + (1 - 0.34 * 0.34) / 117e9), 1.0);
+    const MultiscaleModel m(Spectrum::fromProfile(readProfile(standin)), mat.reducedModulus(),
+                            makeAsperityModel("jacksonGreen", mat));
+    // Default table range 1e-9 E' .. E'; the table is within 0.5 % of the direct solve
+    // (testConstrictionConductance checks that bound densely); here a few spot checks.
+    for (double P : {1e3, 1e5, 1e6, 1e7, 1e8}) {
+        SCOPED_TRACE(P);
+        const double load = P / mat.reducedModulus();
+        EXPECT_NEAR(ci.areaFraction(P), m.areaFraction(load), 0.005 * m.areaFraction(load));
+        const double h = constrictionConductancePerConductivity(m, load);
+        EXPECT_NEAR(ci.conductancePerConductivity(P), h, 0.005 * h);
+    }
+    // Copper (S_y 0.07 GPa) yields first: complete contact comes at a lower pressure than with
+    // steel's S_y.
+    EXPECT_LT(ci.table().completeContactPressure(), 1e9);
+    EXPECT_NE(ci.summary().find("jacksonGreen"), std::string::npos);
+}
+
+TEST(ContactInterface, TwoSurfacesCombine)
+{
+    // The same profile on both sides is one surface with amplitudes x sqrt(2) (same grid,
+    // seed §2.1: beta = hypot(beta1, beta2)); a rougher interface touches less at a pressure.
+    InterfaceSpec one = steelOnCopper();
+    InterfaceSpec two = one;
+    two.surfaces.push_back(two.surfaces.front());
+    const ContactInterface a(one);
+    const ContactInterface b(two);
+    EXPECT_EQ(b.surface().size(), a.surface().size());
+    for (std::size_t i = 0; i < a.surface().size(); i += 97) {
+        EXPECT_NEAR(b.surface().amplitudes()[i], std::sqrt(2.0) * a.surface().amplitudes()[i],
+                    1e-14 * a.surface().amplitudes()[i] + 1e-300);
+    }
+    EXPECT_LT(b.areaFraction(1e6), a.areaFraction(1e6));
+}
+
+TEST(ContactInterface, OtherSurfaceKinds)
+{
+    InterfaceSpec spec = steelOnCopper();
+    spec.surfaces.front().kind = SurfaceSpec::Kind::powerLaw;
+    spec.surfaces.front().parameters = {1e-7 * std::pow(2e3, 1.2), 1.2, 2e3, 2e6};
+    spec.surfaces.front().length = 5e-4;
+    const ContactInterface p(spec);
+    EXPECT_EQ(p.surface().size(), 1000U); // f = i/L for i = 1..1000
+    spec.surfaces.front().kind = SurfaceSpec::Kind::fractal;
+    spec.surfaces.front().parameters = {1.5, 1e-10, 2e3, 2e6};
+    const ContactInterface f(spec);
+    EXPECT_GT(f.areaFraction(1e6), 0.0);
+}
+
+TEST(ContactInterface, RefusesBadDescriptions)
+{
+    InterfaceSpec spec = steelOnCopper();
+    spec.model = "greenwoodWilliamson"; // not a multi-scale model: the table needs the levels
+    EXPECT_THROW(ContactInterface{spec}, std::invalid_argument);
+    spec = steelOnCopper();
+    spec.surfaces.front().file = "/no/such/profile.csv";
+    try {
+        ContactInterface{spec};
+        ADD_FAILURE() << "read a missing file";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("/no/such/profile.csv"), std::string::npos) << e.what();
+    }
+    spec = steelOnCopper();
+    spec.side2.E = -1.0;
+    EXPECT_THROW(ContactInterface{spec}, std::invalid_argument);
+    spec = steelOnCopper();
+    spec.surfaces.clear();
+    EXPECT_THROW(ContactInterface{spec}, std::invalid_argument);
+    spec = steelOnCopper();
+    spec.surfaces.front().kind = SurfaceSpec::Kind::powerLaw;
+    spec.surfaces.front().parameters = {1.0, 2.0};
+    EXPECT_THROW(ContactInterface{spec}, std::invalid_argument);
+}
