@@ -8,7 +8,9 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
+#include <vector>
 
 namespace roughContact {
 
@@ -16,42 +18,84 @@ namespace {
 /// The line after which a Bruker Dektak CSV export lists its data.
 const char* const dektakMarker = "Scan Data";
 
-/// True when the Dektak data header ("Lateral um,Raw Micrometer,") names micrometres.
-bool namesMicrometres(const std::string& header)
+/// Metres per unit of the first length unit named in one column header of a Dektak export
+/// ("Lateral um", "Raw Micrometer", "Total Profile (nm)", "Raw Angstrom"); 0 when none is named.
+/// Words are split at ASCII punctuation and spaces; bytes >= 0x80 (micro sign, Angstrom sign in
+/// Latin-1 or UTF-8) stay in the word. Matching ignores ASCII case.
+double metresNamedIn(const std::string& columnHeader)
 {
-    for (std::string field : detail::splitFields(header)) {
-        field.erase(std::remove_if(field.begin(), field.end(),
-                                   [](char c) { return c == '[' || c == ']' || c == '(' || c == ')'; }),
-                    field.end());
-        std::transform(field.begin(), field.end(), field.begin(),
-                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        // "\xB5m": micro sign in Latin-1, as Dektak writes it; then the UTF-8 micro sign and mu.
-        if (field == "um" || field == "\xB5m" || field == "\xC2\xB5m" || field == "\xCE\xBCm"
-            || field == "micrometer" || field == "micrometers" || field == "micrometre"
-            || field == "micrometres" || field == "micron" || field == "microns") {
-            return true;
+    std::vector<std::string> words(1);
+    for (char c : columnHeader) {
+        const auto u = static_cast<unsigned char>(c);
+        if (u >= 0x80) {
+            words.back() += c;
+        } else if (std::isalnum(u)) {
+            words.back() += static_cast<char>(std::tolower(u));
+        } else if (!words.back().empty()) {
+            words.emplace_back();
         }
     }
-    return false;
+    for (const std::string& w : words) {
+        // "\xB5m": micro sign in Latin-1, as Dektak writes it; then the UTF-8 micro sign and mu.
+        if (w == "um" || w == "\xB5m" || w == "\xC2\xB5m" || w == "\xCE\xBCm" || w == "micrometer"
+            || w == "micrometers" || w == "micrometre" || w == "micrometres" || w == "micron"
+            || w == "microns") {
+            return 1e-6;
+        }
+        if (w == "nm" || w == "nanometer" || w == "nanometers" || w == "nanometre"
+            || w == "nanometres") {
+            return 1e-9;
+        }
+        // Angstrom: Latin-1 "\xC5", UTF-8 U+00C5 "\xC3\x85" and U+212B ANGSTROM SIGN.
+        if (w == "\xC5" || w == "\xC3\x85" || w == "\xE2\x84\xAB" || w == "angstrom"
+            || w == "angstroms") {
+            return 1e-10;
+        }
+        if (w == "mm" || w == "millimeter" || w == "millimeters" || w == "millimetre"
+            || w == "millimetres") {
+            return 1e-3;
+        }
+        if (w == "m" || w == "meter" || w == "meters" || w == "metre" || w == "metres") {
+            return 1.0;
+        }
+    }
+    return 0.0;
 }
 
-/// Decimal places of a printed number, so that its rounding step is 10^-decimals:
-/// "0.2" -> 1, "15" -> 0, "1.25e-3" -> 2 + 3 = 5, "1.5E2" -> 1 - 2 = -1.
-int printedDecimals(const std::string& field)
+/// How a number was printed: its rounding step is 10^-decimals ("0.2" -> 1, "15" -> 0,
+/// "1.25e-3" -> 2 + 3 = 5, "1.5E2" -> 1 - 2 = -1); significant counts the mantissa digits from
+/// the first non-zero one on, trailing zeros included ("0.00150" -> 3, "1500.0" -> 5; 0 for a
+/// zero).
+struct PrintedPrecision {
+    int decimals = 0;
+    int significant = 0;
+};
+
+PrintedPrecision printedPrecision(const std::string& field)
 {
+    PrintedPrecision p;
     const auto e = field.find_first_of("eE");
     const std::string mantissa = field.substr(0, e);
-    const auto dot = mantissa.find('.');
-    int decimals = 0;
-    if (dot != std::string::npos) {
-        for (std::size_t i = dot + 1; i < mantissa.size() && std::isdigit(static_cast<unsigned char>(mantissa[i])); ++i) {
-            ++decimals;
+    bool afterDot = false;
+    for (char c : mantissa) {
+        if (c == '.') {
+            afterDot = true;
+        } else if (std::isdigit(static_cast<unsigned char>(c))) {
+            if (afterDot) {
+                ++p.decimals;
+            }
+            if (p.significant > 0 || c != '0') {
+                ++p.significant;
+            }
         }
     }
     if (e != std::string::npos) {
-        decimals -= static_cast<int>(std::strtol(field.c_str() + e + 1, nullptr, 10));
+        // Clamped: a finite double has |exponent| < 400 (subnormals included), and a longer
+        // exponent must not overflow the int (e.g. "0e99999999999" is a valid zero).
+        const long exponent = std::strtol(field.c_str() + e + 1, nullptr, 10);
+        p.decimals -= static_cast<int>(std::max(-1000L, std::min(1000L, exponent)));
     }
-    return decimals;
+    return p;
 }
 } // namespace
 
@@ -63,15 +107,6 @@ Profile readProfile(const std::string& path, const ProfileReadOptions& options)
     const detail::Table table = detail::readTable(path, tableOptions);
     const std::vector<detail::TableRow>& rows = table.rows;
 
-    LengthUnit unit = LengthUnit::m;
-    if (options.units) {
-        unit = *options.units;
-    } else if (table.sectionFound && namesMicrometres(table.header)) {
-        unit = LengthUnit::um;
-    }
-    const double scale = metresPer(unit);
-    const std::string unitName = toString(unit);
-
     if (rows.size() < Profile::minimumSize) {
         std::ostringstream os;
         os << "a profile needs at least " << Profile::minimumSize << " points, got "
@@ -79,17 +114,58 @@ Profile readProfile(const std::string& path, const ProfileReadOptions& options)
         throw InputError(path, 0, os.str());
     }
     const std::size_t n = rows.size();
-    std::vector<double> heights(n);
+    const bool twoColumns = table.columns == 2;
 
-    if (table.columns == 1) {
+    // Metres per file unit of the positions (x) and of the heights (z).
+    double xScale = 1.0;
+    double zScale = 1.0;
+    if (options.units) {
+        xScale = zScale = metresPer(*options.units);
+    } else if (table.sectionFound) {
+        // A Dektak export: its data header names the unit of each column, e.g.
+        // "Lateral um,Raw Micrometer,". Heights may be in another unit than positions (nm, A).
+        if (table.headerLine == 0) {
+            throw InputError(path, rows.front().line,
+                             "a Bruker Dektak export (it has a \"Scan Data\" line) without the "
+                             "data header that names its units; give the units option");
+        }
+        std::vector<std::string> names(1);
+        for (char c : table.header) {
+            if (c == ',' || c == ';') {
+                names.emplace_back();
+            } else {
+                names.back() += c;
+            }
+        }
+        names.resize(std::max<std::size_t>(names.size(), 2));
+        const double xNamed = metresNamedIn(names[0]);
+        const double zNamed = metresNamedIn(names[twoColumns ? 1 : 0]);
+        if (xNamed == 0.0 || zNamed == 0.0) {
+            const std::size_t column = xNamed == 0.0 ? 1 : 2;
+            throw InputError(path, table.headerLine,
+                             "the Dektak data header '" + table.header
+                                 + "' names no length unit (um, nm, Angstrom, mm or m) for column "
+                                 + std::to_string(column) + "; give the units option");
+        }
+        xScale = xNamed;
+        zScale = twoColumns ? zNamed : xNamed;
+    }
+
+    std::vector<double> heights(n);
+    const std::size_t zColumn = twoColumns ? 1 : 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        heights[i] = rows[i].values[zColumn] * zScale; // finite: read finite, scales <= 1
+    }
+
+    if (!twoColumns) {
         if (!options.spacing) {
             throw InputError(path, 0,
                              "one column of heights and no positions: a sample spacing is needed "
                              "(give the spacing option)");
         }
-        const double dx = requirePositive("spacing", *options.spacing) * scale;
-        for (std::size_t i = 0; i < n; ++i) {
-            heights[i] = rows[i].values[0] * scale;
+        const double dx = requirePositive("spacing", *options.spacing) * xScale;
+        if (!(dx > 0.0) || !std::isfinite(dx)) {
+            throw ParameterError("spacing", "is out of the range of a double in metres");
         }
         return Profile(std::move(heights), dx, path);
     }
@@ -99,51 +175,89 @@ Profile readProfile(const std::string& path, const ProfileReadOptions& options)
                          "the file has two columns (x z), so its positions give the spacing; "
                          "a spacing option is only for one-column files");
     }
+
+    const std::string unitName = xScale == 1.0    ? std::string("m")
+                                 : xScale == 1e-3 ? std::string("mm")
+                                 : xScale == 1e-6 ? std::string("um")
+                                 : xScale == 1e-9 ? std::string("nm")
+                                                  : std::string("Angstrom");
     for (std::size_t i = 1; i < n; ++i) {
         if (!(rows[i].values[0] > rows[i - 1].values[0])) {
             std::ostringstream os;
             os.precision(17);
-            os << "positions must increase strictly: x = " << rows[i].values[0] << " " << unitName
-               << " after x = " << rows[i - 1].values[0] << " " << unitName << " on line "
-               << rows[i - 1].line;
+            os << "positions must increase strictly: x = " << rows[i].firstField << " "
+               << unitName << " after x = " << rows[i - 1].firstField << " " << unitName
+               << " on line " << rows[i - 1].line;
             throw InputError(path, rows[i].line, os.str());
         }
     }
 
     const double x0 = rows.front().values[0];
-    const double dx = (rows.back().values[0] - x0) / static_cast<double>(n - 1);
-    // Uniform-grid check. Positions are printed rounded to a step q = 10^-d, d the most decimals
-    // printed in the x column (exponent form counted: "1.25e-3" has 5). Each printed x_i is the
-    // true position t_i plus an error |e_i| <= q/2, and so are the two end points that define
-    // the grid: x_0 + i dx = t_i + (1-s) e_0 + s e_last with s = i/(N-1). The deviation
-    // x_i - (x_0 + i dx) = e_i - (1-s) e_0 - s e_last therefore reaches up to q, not q/2, on a
-    // truly uniform grid: dektak-1.csv (true step 0.15625 um printed to 0.1 um) deviates by
-    // 0.094 um. Tolerance: q, plus 1e-9 q for the decimal-to-binary conversion of the printed
-    // values and 1e-6 |dx| for the floating-point error of x_0 + i dx.
-    int decimals = printedDecimals(rows.front().firstField);
-    for (const detail::TableRow& row : rows) {
-        decimals = std::max(decimals, printedDecimals(row.firstField));
+    const double xLast = rows.back().values[0];
+    const double dx = (xLast - x0) / static_cast<double>(n - 1);
+    if (!std::isfinite(dx) || !std::isfinite(dx * xScale) || !(dx * xScale > 0.0)) {
+        std::ostringstream os;
+        os.precision(17);
+        os << "the spacing (x_last - x_first) / (N - 1) = " << dx << " " << unitName
+           << " is out of the range of a double in metres";
+        throw InputError(path, rows.back().line, os.str());
     }
-    const double q = std::pow(10.0, -decimals);
-    const double tolerance = q * (1.0 + 1e-9) + 1e-6 * std::abs(dx);
+
+    // Uniform-grid check. A printed position x_i is the true t_i plus a rounding error
+    // |e_i| <= q_i / 2, q_i its rounding step. The grid is defined by the two end points, so
+    // x_i - (x_0 + i dx) = e_i - (1-s) e_0 - s e_last with s = i/(N-1), which is bounded by
+    // (q_i + (1-s) q_0 + s q_last) / 2: on a truly uniform grid printed to 0.1 it reaches
+    // 0.1, not 0.05 (dektak-1.csv: true step 0.15625 um printed to 0.1 um deviates by 0.094 um).
+    // The rounding step of a row depends on how the file was printed, which is not known:
+    //  - fixed decimals (%.3f, Dektak): q = 10^-D, D the most decimals of the column (rows with
+    //    trailing zeros trimmed show fewer);
+    //  - significant digits (%g, a C++ stream's default 6 digits): q_i = 10^-(d_i + P - p_i),
+    //    d_i and p_i the decimals and significant digits of the row, P the most significant
+    //    digits of the column (trailing zeros trimmed show fewer): 0.00149984 is 8 decimals
+    //    while 1.5625e-07 is 11.
+    // q_i is the larger of the two, so that no uniform grid printed either way is rejected and
+    // q_i never exceeds the row's own last printed digit. A zero is exact under %g and has D
+    // decimals under fixed printing: q = 10^-D.
+    int mostDecimals = std::numeric_limits<int>::min();
+    int mostSignificant = 0;
+    std::vector<PrintedPrecision> printed(n);
     for (std::size_t i = 0; i < n; ++i) {
+        printed[i] = printedPrecision(rows[i].firstField);
+        mostDecimals = std::max(mostDecimals, printed[i].decimals);
+        mostSignificant = std::max(mostSignificant, printed[i].significant);
+    }
+    const auto step = [&](std::size_t i) {
+        const PrintedPrecision& p = printed[i];
+        const int d = p.significant == 0
+                          ? mostDecimals
+                          : std::min(mostDecimals, p.decimals + mostSignificant - p.significant);
+        return std::pow(10.0, -d);
+    };
+    // Floating-point slack: the decimal-to-binary conversion and x_0 + i dx err by a few ulps of
+    // max|x|; a writer that accumulated x += dx errs by up to about N ulps. 4 N eps max|x|
+    // covers both; 1e-6 |dx| more keeps a little room when all printed values are exact.
+    const double slack = 4.0 * static_cast<double>(n) * std::numeric_limits<double>::epsilon()
+                             * std::max(std::abs(x0), std::abs(xLast))
+                         + 1e-6 * std::abs(dx);
+    const double qFirst = step(0);
+    const double qLast = step(n - 1);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double s = static_cast<double>(i) / static_cast<double>(n - 1);
         const double expected = x0 + static_cast<double>(i) * dx;
         const double found = rows[i].values[0];
-        if (std::abs(found - expected) > tolerance) {
+        const double tolerance = 0.5 * (step(i) + (1.0 - s) * qFirst + s * qLast) + slack;
+        if (!(std::abs(found - expected) <= tolerance)) {
             std::ostringstream os;
             os.precision(10);
             os << "uneven spacing: expected x = " << expected << " " << unitName
                << " on the uniform grid x_0 + i dx (dx = " << dx << " " << unitName
                << "), found " << rows[i].firstField << "; tolerance " << tolerance << " "
-               << unitName << " for positions printed to " << q << " " << unitName;
+               << unitName << " for positions printed to " << step(i) << " " << unitName;
             throw InputError(path, rows[i].line, os.str());
         }
     }
 
-    for (std::size_t i = 0; i < n; ++i) {
-        heights[i] = rows[i].values[1] * scale;
-    }
-    return Profile(std::move(heights), dx * scale, path);
+    return Profile(std::move(heights), dx * xScale, path);
 }
 
 } // namespace roughContact

@@ -11,8 +11,10 @@ namespace roughContact {
 
 /// How to interpret a profile file.
 struct ProfileReadOptions {
-    /// Unit of both the positions and the heights in the file. Unset: micrometres for a Dektak
-    /// export whose data header names um, metres otherwise.
+    /// Unit of both the positions and the heights in the file. Unset: metres, except for a
+    /// Dektak export, whose data header ("Lateral um,Raw Micrometer,") names the unit of each
+    /// column (um, nm, Angstrom, mm or m; heights may differ from positions); a Dektak export
+    /// whose header names no unit is an error.
     std::optional<LengthUnit> units;
     /// Sample spacing for one-column (heights only) files, in `units` (metres when unset).
     /// Must be finite and > 0; giving it for a two-column file is an error.
@@ -23,8 +25,9 @@ struct ProfileReadOptions {
 /// Fields are separated by commas, semicolons, tabs or spaces; `#` starts a comment; blank lines
 /// and one header line are skipped; empty trailing fields are ignored. A Bruker Dektak CSV
 /// export is read from the line after "Scan Data" on (its data header is the one header line).
-/// Positions must increase strictly on a uniform grid (to within their printed rounding); the
-/// spacing is dx = (x_last - x_first) / (N - 1). Heights are returned as read, in metres, not
+/// Positions must increase strictly on a uniform grid (to within their printed rounding, be it
+/// fixed decimals or significant digits as `%g` prints); the spacing is
+/// dx = (x_last - x_first) / (N - 1). Heights are returned as read, in metres, not
 /// detrended; the profile's source is path.
 /// Throws InputError(path, line, ...) for bad content (line 0 for an unreadable file or fewer
 /// than Profile::minimumSize points) and ParameterError("spacing", ...) for a bad spacing value.

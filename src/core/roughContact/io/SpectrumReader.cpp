@@ -4,10 +4,31 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/io/TableReader.hpp"
 
+#include <cstdlib>
 #include <sstream>
+#include <string>
 #include <vector>
 
 namespace roughContact {
+
+namespace {
+/// v in the fewest significant digits (at least 6) that read back as v: "-1e-12", not
+/// "-9.9999999999999998e-13".
+std::string shortest(double v)
+{
+    std::string text;
+    for (int digits = 6; digits <= 17; ++digits) { // from 6, the stream default: "2000", not "2e+03"
+        std::ostringstream os;
+        os.precision(digits);
+        os << v;
+        text = os.str();
+        if (std::strtod(text.c_str(), nullptr) == v) {
+            break;
+        }
+    }
+    return text;
+}
+} // namespace
 
 Spectrum readSpectrum(const std::string& path, std::optional<double> length)
 {
@@ -34,18 +55,17 @@ Spectrum readSpectrum(const std::string& path, std::optional<double> length)
         const double fi = row.values[0];
         const double bi = row.values[1];
         std::ostringstream os;
-        os.precision(17);
         if (!(fi > 0.0)) {
-            os << "frequency must be positive, got " << fi;
+            os << "frequency must be positive, got " << shortest(fi);
             throw InputError(path, row.line, os.str());
         }
         if (i > 0 && !(fi > f.back())) {
-            os << "frequencies must increase strictly: " << fi << " after " << f.back()
+            os << "frequencies must increase strictly: " << shortest(fi) << " after " << shortest(f.back())
                << " on line " << table.rows[i - 1].line;
             throw InputError(path, row.line, os.str());
         }
         if (!(bi >= 0.0)) {
-            os << "amplitude must be >= 0, got " << bi;
+            os << "amplitude must be >= 0, got " << shortest(bi);
             throw InputError(path, row.line, os.str());
         }
         f.push_back(fi);
