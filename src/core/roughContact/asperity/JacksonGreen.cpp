@@ -3,17 +3,21 @@
 #include "roughContact/Error.hpp"
 
 #include <Eigen/Dense>
-#include <boost/math/tools/roots.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 
 namespace roughContact {
 
 namespace {
 constexpr double pi = 3.14159265358979323846;
+
+const double logElasticLimit = std::log(JacksonGreen::elasticLimit);
+// Density of the inversion's bracketing table (denser tables did not cut the evaluations per
+// inversion: measured at 1000 a decade).
+constexpr double pointsPerDecade = 200.0;
+const double logCubicStart = std::log(JacksonGreen::cubicStart);
 
 // H_G / S_y of seed Eq. 19 and its slope in x = a/R.
 double eq19(double x)
@@ -26,12 +30,13 @@ double eq19Slope(double x)
 }
 } // namespace
 
-JacksonGreen::JacksonGreen(double Eprime, double nu, double E, double Sy)
-    : onset_(Eprime, nu, Sy), Sy_(Sy)
+JacksonGreen::JacksonGreen(double Eprime, double nu, double E, double Sy) : onset_(Eprime, nu, Sy), Sy_(Sy)
 {
     requirePositive("Young's modulus E", E);
-    B_ = 0.14 * std::exp(23.0 * Sy / E);       // seed Eqs. 17-18
-    floorCoefficient_ = 1.5 / onset_.C();      // A_c S_y / F_c
+    B_ = 0.14 * std::exp(23.0 * Sy / E);  // seed Eqs. 17-18
+    floorCoefficient_ = 1.5 / onset_.C(); // A_c S_y / F_c
+    fourOverC_ = 4.0 / onset_.C();
+    logKappa_ = std::log(onset_.interferenceRatio());
 
     // The cubic of seed §2.2: value and slope of Eq. 19 at x0 = 0.41, value 1 and slope 0 at 1.
     const double x0 = cubicStart;
@@ -52,17 +57,23 @@ JacksonGreen::JacksonGreen(double Eprime, double nu, double E, double Sy)
         wStarComplete_ = std::exp((-std::log(kappa) + B_ * std::log(elasticLimit)) / (1.0 + B_));
     }
 
-    // Bracketing table of the loading path above w* = 1.9: 40 points a decade.
+    // Bracketing table of the loading path above w* = 1.9.
     if (wStarComplete_ > elasticLimit) {
         const double decades = std::log10(wStarComplete_ / elasticLimit);
-        const auto n = static_cast<std::size_t>(std::ceil(40.0 * decades)) + 1;
+        const auto n = static_cast<std::size_t>(std::ceil(pointsPerDecade * decades)) + 1;
         tableW_.resize(n + 1);
         tableF_.resize(n + 1);
+        tableRaw_.resize(n + 1);
+        tableLogW_.resize(n + 1);
+        tableLogRaw_.resize(n + 1);
         for (std::size_t j = 0; j <= n; ++j) {
-            const double w = j == n ? wStarComplete_
-                                    : elasticLimit * std::pow(10.0, decades * double(j) / double(n));
+            const double w =
+                j == n ? wStarComplete_ : elasticLimit * std::pow(10.0, decades * double(j) / double(n));
             tableW_[j] = w;
             tableF_[j] = forceRatioRaw(w);
+            tableRaw_[j] = tableF_[j];
+            tableLogW_[j] = std::log(w);
+            tableLogRaw_[j] = std::log(tableRaw_[j]);
             if (j > 0) {
                 tableF_[j] = std::max(tableF_[j], tableF_[j - 1]);
             }
@@ -103,7 +114,18 @@ double JacksonGreen::forceRatioRaw(double w) const
     if (w < elasticLimit) {
         return w * std::sqrt(w);
     }
-    return std::max(forceRatioEq16(w), floorCoefficient_ * areaRatio(w)); // floor F >= A S_y
+    // max(Eq. 16, floor F >= A S_y), with every power of w taken from one logarithm: the same
+    // numbers as forceRatioEq16 and areaRatio (to round-off, testJacksonGreen checks), at half
+    // the cost; this is the inner loop of every jacksonGreen load curve.
+    const double lw = std::log(w);
+    const double logArea = lw + B_ * (lw - logElasticLimit); // areaRatio (Eq. 15)
+    const double area = std::exp(logArea);
+    const double logAOverR = 0.5 * (logKappa_ + logArea);
+    const double HG = logAOverR <= logCubicStart ? 2.84 * (1.0 - std::exp(-0.82 * std::exp(-0.7 * logAOverR)))
+                                                 : hardnessRatio(std::exp(logAOverR));
+    const double eq16 = std::exp(-0.25 * std::exp(lw * (5.0 / 12.0))) * w * std::sqrt(w) +
+                        fourOverC_ * HG * (1.0 - std::exp(-std::exp(lw * (5.0 / 9.0)) / 25.0)) * w;
+    return std::max(eq16, floorCoefficient_ * area);
 }
 
 double JacksonGreen::forceRatio(double wStar) const
@@ -138,19 +160,49 @@ double JacksonGreen::interferenceRatioAtForce(double q) const
     double lo = tableW_[j - 1];
     double hi = tableW_[j];
     // The running maximum can sit above the raw law where it dips; the loading path then holds.
-    if (forceRatioRaw(hi) < q) {
+    if (tableRaw_[j] < q) {
         return hi;
     }
-    const auto f = [&](double w) { return forceRatioRaw(w) - q; };
-    double flo = f(lo);
+    double flo = tableRaw_[j - 1] - q;
     if (flo >= 0.0) {
         return lo;
     }
-    std::uintmax_t iterations = 100;
-    const auto r = boost::math::tools::toms748_solve(f, lo, hi, flo, f(hi),
-                                                     boost::math::tools::eps_tolerance<double>(48),
-                                                     iterations);
-    return 0.5 * (r.first + r.second);
+    double fhi = tableRaw_[j] - q;
+    // Illinois (regula falsi with halving): the table is dense (pointsPerDecade), so the first
+    // secant through the bracket is already close and one or two more steps reach a residual
+    // of 1e-13 q; the bracket keeps it safe across the law's kinks (the F >= A S_y floor, the
+    // cubic's start). toms748 on the same bracket stops on the bracket's width, which costs
+    // about twice the evaluations; this is the inner loop of every jacksonGreen load curve.
+    // First point: linear interpolation of ln w against ln F between the nodes (the law is
+    // nearly a power law, so this is within ~1e-7), then Illinois from the bracket.
+    const double t = (std::log(q) - tableLogRaw_[j - 1]) / (tableLogRaw_[j] - tableLogRaw_[j - 1]);
+    double c = std::exp(tableLogW_[j - 1] + t * (tableLogW_[j] - tableLogW_[j - 1]));
+    int side = 0;
+    for (int iteration = 0; iteration < 100; ++iteration) {
+        if (iteration > 0) {
+            c = (lo * fhi - hi * flo) / (fhi - flo);
+        }
+        const double fc = forceRatioRaw(c) - q;
+        if (std::abs(fc) <= 1e-13 * q || hi - lo <= 1e-15 * hi) {
+            return c;
+        }
+        if (fc > 0.0) {
+            hi = c;
+            fhi = fc;
+            if (side == -1) {
+                flo *= 0.5;
+            }
+            side = -1;
+        } else {
+            lo = c;
+            flo = fc;
+            if (side == +1) {
+                fhi *= 0.5;
+            }
+            side = +1;
+        }
+    }
+    return 0.5 * (lo + hi);
 }
 
 double JacksonGreen::areaAtForce(double F, double R) const

@@ -47,8 +47,8 @@ public:
     /// Interference ratio w* at the force ratio F/F_c on the loading path.
     double interferenceRatioAtForce(double forceRatio) const;
 
-    static constexpr double elasticLimit = 1.9;    ///< w* below which JG is Hertz (seed §2.2)
-    static constexpr double cubicStart = 0.41;     ///< a/R beyond which Eq. 19 is replaced
+    static constexpr double elasticLimit = 1.9; ///< w* below which JG is Hertz (seed §2.2)
+    static constexpr double cubicStart = 0.41;  ///< a/R beyond which Eq. 19 is replaced
 
 private:
     double forceRatioRaw(double wStar) const;
@@ -57,12 +57,17 @@ private:
     double Sy_;
     double B_;
     double floorCoefficient_; ///< A_c S_y / F_c = 3 / (2 C)
+    double fourOverC_;        ///< 4 / C of Eq. 16
+    double logKappa_;         ///< ln(w_c / R)
     double wStarComplete_;
     std::array<double, 4> cubic_{};
     // Loading-path force ratio at log-spaced w* from 1.9 to complete contact, made
     // non-decreasing (running maximum), to bracket the inversion.
     std::vector<double> tableW_;
     std::vector<double> tableF_;
+    std::vector<double> tableRaw_;    ///< forceRatioRaw at tableW_ (before the running maximum)
+    std::vector<double> tableLogW_;   ///< ln tableW_
+    std::vector<double> tableLogRaw_; ///< ln tableRaw_
 };
 
 } // namespace roughContact
