@@ -1,0 +1,172 @@
+#include "contactInterfaceFromDict.H"
+
+#include "error.H"
+#include "IOstreams.H"
+#include "PtrList.H"
+
+#include "roughContact/io/Units.hpp"
+
+#include <map>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+
+namespace Foam
+{
+
+namespace
+{
+
+roughContact::SurfaceSpec readSurface
+(
+    const dictionary& d,
+    const fileName& casePath
+)
+{
+    roughContact::SurfaceSpec s;
+    const word type = d.get<word>("type");
+    if (type == "profile" || type == "spectrum")
+    {
+        s.kind =
+            type == "profile"
+          ? roughContact::SurfaceSpec::Kind::profile
+          : roughContact::SurfaceSpec::Kind::spectrum;
+        fileName f = d.get<fileName>("file");
+        f.expand();
+        if (!f.isAbsolute())
+        {
+            f = casePath/f;
+        }
+        s.file = f;
+        word units;
+        if (d.readIfPresent("units", units))
+        {
+            s.profileOptions.units = roughContact::parseLengthUnit(units);
+        }
+        scalar dx;
+        if (d.readIfPresent("spacing", dx))
+        {
+            s.profileOptions.spacing = dx;
+        }
+        label stride = 1;
+        d.readIfPresent("stride", stride);
+        if (stride < 1)
+        {
+            FatalIOErrorInFunction(d)
+                << "stride must be >= 1, got " << stride << exit(FatalIOError);
+        }
+        s.stride = stride;
+    }
+    else if (type == "powerLaw" || type == "fractal")
+    {
+        s.kind =
+            type == "powerLaw"
+          ? roughContact::SurfaceSpec::Kind::powerLaw
+          : roughContact::SurfaceSpec::Kind::fractal;
+        const bool power = type == "powerLaw";
+        s.parameters =
+        {
+            d.get<scalar>(power ? "bm" : "D"),
+            d.get<scalar>(power ? "m" : "G"),
+            d.get<scalar>("fmin"),
+            d.get<scalar>("fmax")
+        };
+    }
+    else
+    {
+        FatalIOErrorInFunction(d)
+            << "unknown surface type '" << type
+            << "' (profile, spectrum, powerLaw or fractal)"
+            << exit(FatalIOError);
+    }
+    scalar L;
+    if (d.readIfPresent("length", L))
+    {
+        s.length = L;
+    }
+    return s;
+}
+
+roughContact::Material readMaterial(const dictionary& d)
+{
+    roughContact::Material m;
+    m.E = d.get<scalar>("E");
+    m.nu = d.get<scalar>("nu");
+    scalar Sy;
+    if (d.readIfPresent("Sy", Sy))
+    {
+        m.Sy = Sy;
+    }
+    return m;
+}
+
+} // End anonymous namespace
+
+
+std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
+(
+    const dictionary& parent,
+    const word& name,
+    const fileName& dictFile,
+    const fileName& casePath,
+    const string& who
+)
+{
+    static std::mutex mutex;
+    static std::map<std::string, std::shared_ptr<const roughContact::ContactInterface>> cache;
+
+    const std::string key = dictFile + "::" + name;
+    std::lock_guard<std::mutex> lock(mutex);
+    const auto found = cache.find(key);
+    if (found != cache.end())
+    {
+        return found->second;
+    }
+
+    const dictionary& dict = parent.subDict(name);
+    roughContact::InterfaceSpec spec;
+    try
+    {
+        if (dict.found("surfaces"))
+        {
+            const PtrList<dictionary> list(dict.lookup("surfaces"));
+            forAll(list, i)
+            {
+                spec.surfaces.push_back(readSurface(list[i], casePath));
+            }
+        }
+        else
+        {
+            spec.surfaces.push_back(readSurface(dict.subDict("surface"), casePath));
+        }
+        spec.side1 = readMaterial(dict.subDict("side1"));
+        spec.side2 = readMaterial(dict.subDict("side2"));
+        spec.model = dict.get<word>("model");
+        scalar p;
+        if (dict.readIfPresent("minPressure", p))
+        {
+            spec.minPressure = p;
+        }
+        if (dict.readIfPresent("maxPressure", p))
+        {
+            spec.maxPressure = p;
+        }
+
+        Info<< "thermalContactResistance: building the contact table for '"
+            << name << "' (" << who.c_str() << ")" << endl;
+        auto iface = std::make_shared<const roughContact::ContactInterface>(spec);
+        Info<< "    " << iface->summary().c_str() << endl;
+        cache.emplace(key, iface);
+        return iface;
+    }
+    catch (const std::exception& e)
+    {
+        FatalIOErrorInFunction(dict)
+            << who.c_str() << ": contact entry '" << name << "' in "
+            << dictFile << ": " << e.what()
+            << exit(FatalIOError);
+    }
+    return nullptr;
+}
+
+} // End namespace Foam
