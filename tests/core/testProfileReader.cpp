@@ -5,6 +5,8 @@
 #include "roughContact/surface/Profile.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 
+#include "TempDirTest.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -27,32 +29,8 @@ namespace {
 constexpr double pi = 3.14159265358979323846;
 const std::string dektakPath = std::string(ROUGHCONTACT_SOURCE_DIR) + "/tests/data/io/dektak-1.csv";
 
-/// A fresh directory per test under the system temp directory, removed afterwards.
-class ProfileReaderTest : public ::testing::Test {
-protected:
-    void SetUp() override
-    {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path()
-               / ("roughContact-io-" + std::string(info->test_suite_name()) + "-" + info->name()
-                  + "-" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override
-    {
-        std::error_code ec;
-        fs::remove_all(dir_, ec);
-    }
-    /// Writes content byte for byte to a file of the test directory; returns its path.
-    std::string write(const std::string& name, const std::string& content) const
-    {
-        const fs::path p = dir_ / name;
-        std::ofstream(p, std::ios::binary) << content;
-        return p.string();
-    }
-    fs::path dir_;
-};
+/// A fresh directory per test (tests/support/TempDirTest.hpp).
+class ProfileReaderTest : public roughContactTest::TempDirTest {};
 
 /// printf-formatted number.
 std::string fmt(const char* format, double v)

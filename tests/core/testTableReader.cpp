@@ -3,6 +3,8 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/io/TableReader.hpp"
 
+#include "TempDirTest.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,32 +20,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// A fresh directory per test under the system temp directory, removed afterwards.
-class TableReaderTest : public ::testing::Test {
-protected:
-    void SetUp() override
-    {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path()
-               / ("roughContact-io-" + std::string(info->test_suite_name()) + "-" + info->name()
-                  + "-" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override
-    {
-        std::error_code ec;
-        fs::remove_all(dir_, ec);
-    }
-    /// Writes content byte for byte to a file of the test directory; returns its path.
-    std::string write(const std::string& name, const std::string& content) const
-    {
-        const fs::path p = dir_ / name;
-        std::ofstream(p, std::ios::binary) << content;
-        return p.string();
-    }
-    fs::path dir_;
-};
+/// A fresh directory per test (tests/support/TempDirTest.hpp).
+class TableReaderTest : public roughContactTest::TempDirTest {};
 
 /// The InputError that readTable(path) throws; fails the test when it throws none.
 InputError tableError(const std::string& path, const TableReadOptions& options = {})
