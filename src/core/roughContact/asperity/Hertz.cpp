@@ -27,6 +27,12 @@ double Hertz::areaAtForce(double F, double R) const
     return pi * std::cbrt(std::pow(3.0 * F * R / (4.0 * Eprime_), 2.0)); // seed Eq. 20
 }
 
+double Hertz::forceBeyondArea(double A, double R) const
+{
+    const double s = A / pi;
+    return (1.0 + 1e-12) * 4.0 * Eprime_ / (3.0 * R) * s * std::sqrt(s);
+}
+
 double Hertz::interference(double F, double R) const
 {
     return std::cbrt(std::pow(3.0 * F / (4.0 * Eprime_ * std::sqrt(R)), 2.0));

@@ -214,4 +214,27 @@ double JacksonGreen::areaAtForce(double F, double R) const
     return onset_.area(R) * areaRatio(w);
 }
 
+double JacksonGreen::forceBeyondArea(double A, double R) const
+{
+    const double t = A / onset_.area(R); // A / A_c
+    double q = 0.0;                      // F / F_c
+    if (tableW_.empty()) {
+        // Complete contact while Hertzian: area A_c w* up to w*_complete, then +inf.
+        const double w = std::min(t, wStarComplete_);
+        q = w * std::sqrt(w);
+    } else if (t <= elasticLimit) {
+        q = t * std::sqrt(t); // Hertz: A/A_c = w* = q^(2/3)
+    } else if (t >= areaRatio(wStarComplete_)) {
+        q = tableF_.back(); // reached only at complete contact: areaAtForce is +inf beyond
+    } else {
+        // w* of the area (seed Eq. 15 inverted); interferenceRatioAtForce(q) brackets any
+        // q > tableF_[j] in [tableW_[j'], tableW_[j' + 1]] with j' >= j, so w* >= tableW_[j].
+        const double w = (1.0 + 1e-12) * std::exp((std::log(t) + B_ * logElasticLimit) / (1.0 + B_));
+        const auto j = static_cast<std::size_t>(std::lower_bound(tableW_.begin(), tableW_.end(), w) -
+                                                tableW_.begin());
+        q = std::max(j < tableF_.size() ? tableF_[j] : tableF_.back(), elasticLimit * std::sqrt(elasticLimit));
+    }
+    return (1.0 + 1e-12) * onset_.force(R) * q;
+}
+
 } // namespace roughContact

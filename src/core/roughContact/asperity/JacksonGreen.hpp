@@ -28,6 +28,10 @@ public:
     double area(double w, double R) const override;
     double force(double w, double R) const override;
     double areaAtForce(double F, double R) const override;
+    /// From the area ratio A/A_c: Hertz below 1.9, else the running-maximum table's force at the
+    /// first node at or beyond the interference of that area (so every larger force brackets
+    /// at or beyond it), the table's end for complete contact; raised by 1e-12 for rounding.
+    double forceBeyondArea(double A, double R) const override;
 
     const YieldOnset& onset() const noexcept { return onset_; }
     /// B of seed Eq. 17.

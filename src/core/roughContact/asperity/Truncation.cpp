@@ -34,4 +34,16 @@ double Truncation::areaAtForce(double F, double R) const
     return 2.0 * pi * R * w;
 }
 
+double Truncation::forceBeyondArea(double A, double R) const
+{
+    const double Ac = hertz_.area(onset_.interference(R), R); // the Hertz area at w_c
+    if (A < Ac) {
+        return hertz_.forceBeyondArea(A, R); // F < F_c, or just above it with area >= 2 A_c
+    }
+    if (A <= 2.0 * Ac) {
+        return (1.0 + 1e-12) * onset_.force(R); // across the jump: from F_c the area is >= 2 A_c
+    }
+    return (1.0 + 1e-12) * A * H_; // plastic branch: A = F / H
+}
+
 } // namespace roughContact

@@ -1,8 +1,11 @@
 #include "roughContact/models/MultiscaleModel.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/asperity/JohnsonGreenwoodHigginson.hpp"
+#include "roughContact/asperity/SphericalAsperity.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace roughContact {
 
@@ -20,6 +23,24 @@ MultiscaleModel::MultiscaleModel(const Spectrum& spectrum, double Eprime,
             index_.push_back(i);
         }
     }
+    constexpr double unknown = std::numeric_limits<double>::infinity();
+    const auto* spherical = dynamic_cast<const SphericalAsperity*>(asperity_.get());
+    const auto* jgh = dynamic_cast<const JohnsonGreenwoodHigginson*>(asperity_.get());
+    completeAt_.reserve(levels_.size());
+    for (const Level& level : levels_) {
+        double p = unknown;
+        if (spherical != nullptr) {
+            p = spherical->completeContactPressure(level);
+        } else if (jgh != nullptr) {
+            p = jgh->completeContactPressure(level); // its areaRatio is 1 from p* on, exactly
+        }
+        // The law's own answer at that pressure must be complete contact; if rounding says
+        // otherwise, evaluate this level always.
+        if (!(p > 0.0 && p < unknown && asperity_->areaRatio(p, level) >= 1.0)) {
+            p = unknown;
+        }
+        completeAt_.push_back(p);
+    }
 }
 
 double MultiscaleModel::areaFraction(double load) const
@@ -29,8 +50,13 @@ double MultiscaleModel::areaFraction(double load) const
     }
     const double F = load * An_ * Eprime_;
     double A = An_;
-    for (const Level& level : levels_) {
-        const double r = asperity_->areaRatio(F / A, level);
+    const std::size_t n = levels_.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        const double pbar = F / A;
+        if (pbar >= completeAt_[k]) {
+            continue; // complete contact, A_i = A_{i-1} (assumption 5)
+        }
+        const double r = asperity_->areaRatio(pbar, levels_[k]);
         if (r < 1.0) { // assumption 5
             A *= r;
         }
@@ -56,7 +82,8 @@ std::vector<LevelState> MultiscaleModel::trace(double load) const
         s.asperities = level.density * A;
         s.asperityForce = F / s.asperities;
         if (F > 0.0) {
-            const double r = asperity_->areaRatio(F / A, level);
+            const double pbar = F / A;
+            const double r = pbar >= completeAt_[k] ? 1.0 : asperity_->areaRatio(pbar, level);
             s.complete = !(r < 1.0);
             if (!s.complete) {
                 A *= r;
