@@ -2,6 +2,7 @@
 // same numbers as building the pieces by hand, and refuses bad descriptions clearly.
 #include "RunCommand.hpp"
 
+#include "roughContact/Error.hpp"
 #include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/models/ModelFactory.hpp"
@@ -109,4 +110,39 @@ TEST(ContactInterface, RefusesBadDescriptions)
     spec.surfaces.front().kind = SurfaceSpec::Kind::powerLaw;
     spec.surfaces.front().parameters = {1.0, 2.0};
     EXPECT_THROW(ContactInterface{spec}, std::invalid_argument);
+}
+
+// The per-face evaluation the boundary condition calls: h_c = k_s (h_c/k_s)(P) with
+// k_s = 2 k1 k2/(k1 + k2), no contact at P <= 0, complete contact beyond the table, and a
+// clear refusal of a non-finite pressure or a bad conductivity (never a NaN passed on).
+TEST(ContactInterface, FaceConductanceFromTheTableAndBothConductivities)
+{
+    const ContactInterface ci(steelOnCopper());
+    const double k1 = 45.0;  // steel
+    const double k2 = 390.0; // copper
+    const double ks = 2 * k1 * k2 / (k1 + k2);
+    for (double P : {1e4, 1e6, 3e7}) {
+        const FaceContact c = ci.face(P, k1, k2);
+        // Same arithmetic as the table's own answers: equal to the last bits of a product.
+        EXPECT_DOUBLE_EQ(c.conductance, ks * ci.conductancePerConductivity(P)) << P;
+        EXPECT_DOUBLE_EQ(c.areaFraction, ci.areaFraction(P)) << P;
+        EXPECT_GT(c.conductance, 0.0);
+        // Symmetric in the two solids.
+        EXPECT_DOUBLE_EQ(ci.face(P, k2, k1).conductance, c.conductance);
+    }
+    for (double P : {0.0, -1e5}) {
+        EXPECT_EQ(ci.face(P, k1, k2).conductance, 0.0);
+        EXPECT_EQ(ci.face(P, k1, k2).areaFraction, 0.0);
+    }
+    const double complete = ci.completeContactPressure();
+    ASSERT_TRUE(std::isfinite(complete)); // jacksonGreen reaches A_r = A_n near H
+    EXPECT_TRUE(std::isinf(ci.face(2 * complete, k1, k2).conductance));
+    EXPECT_EQ(ci.face(2 * complete, k1, k2).areaFraction, 1.0);
+    EXPECT_LE(ci.tableEnd(), complete);
+
+    EXPECT_THROW(ci.face(std::nan(""), k1, k2), ParameterError);
+    EXPECT_THROW(ci.face(HUGE_VAL, k1, k2), ParameterError);
+    EXPECT_THROW(ci.face(1e6, 0.0, k2), ParameterError);
+    EXPECT_THROW(ci.face(1e6, k1, -1.0), ParameterError);
+    EXPECT_THROW(ci.face(1e6, k1, std::nan("")), ParameterError);
 }

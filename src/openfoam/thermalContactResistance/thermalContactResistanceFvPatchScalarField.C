@@ -7,7 +7,31 @@
 #include "mappedPatchBase.H"
 #include "IOdictionary.H"
 
+#include "roughContact/thermal/InterfaceCoupling.hpp"
+
 #include <cmath>
+#include <exception>
+
+// An error found at run time (not while reading the dictionary): FatalIOError
+// naming the file and lines the condition was read from.
+#define RuntimeIOError                                                         \
+    ::Foam::FatalIOError                                                       \
+    (                                                                          \
+        FUNCTION_NAME, __FILE__, __LINE__, dictName_, dictStart_, dictEnd_     \
+    )
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    //- What contactConductance holds where h is infinite (complete contact).
+    constexpr Foam::scalar completeContactOutput = 1e15;
+
+    //- The name of a field of a region's registry.
+    const Foam::word outputNames[3] =
+        {"contactConductance", "contactAreaFraction", "contactPressure"};
+}
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -23,11 +47,11 @@ void Foam::thermalContactResistanceFvPatchScalarField::checkPatch() const
 {
     if (!isA<mappedPatchBase>(patch().patch()))
     {
-        FatalErrorInFunction
-            << who().c_str() << " (file " << internalField().objectPath()
-            << "): thermalContactResistance needs a mapped patch (mappedWall),"
-            << " this one is '" << patch().patch().type() << "'"
-            << exit(FatalError);
+        RuntimeIOError
+            << who().c_str() << ": thermalContactResistance needs a mapped"
+            << " patch (mappedWall) coupling two regions; this patch is of"
+            << " type '" << patch().patch().type() << "'"
+            << exit(FatalIOError);
     }
 }
 
@@ -42,8 +66,8 @@ void Foam::thermalContactResistanceFvPatchScalarField::readContact
     if (hasH == hasContact)
     {
         FatalIOErrorInFunction(dict)
-            << who().c_str() << ": give exactly one of 'h' (a constant"
-            << " conductance) and 'contact' (an entry of"
+            << who().c_str() << ": give exactly one of the entries 'h' (a"
+            << " constant conductance [W/m^2/K]) and 'contact' (an entry of"
             << " constant/thermalContactProperties)" << exit(FatalIOError);
     }
     if (hasH)
@@ -55,6 +79,16 @@ void Foam::thermalContactResistanceFvPatchScalarField::readContact
                 << who().c_str() << ": entry 'h' must be a finite conductance"
                 << " > 0 [W/m^2/K], got " << hConstant_ << exit(FatalIOError);
         }
+        for (const char* other : {"pressure", "pressureField"})
+        {
+            if (dict.found(other))
+            {
+                FatalIOErrorInFunction(dict)
+                    << who().c_str() << ": entry '" << other << "' has no"
+                    << " meaning with a constant 'h'; remove one of them"
+                    << exit(FatalIOError);
+            }
+        }
         return;
     }
 
@@ -64,20 +98,21 @@ void Foam::thermalContactResistanceFvPatchScalarField::readContact
     if (hasP == hasPField)
     {
         FatalIOErrorInFunction(dict)
-            << who().c_str() << ": give exactly one of 'pressure' (a"
-            << " PatchFunction1, Pa) and 'pressureField' (a volScalarField"
-            << " name)" << exit(FatalIOError);
+            << who().c_str() << ": give exactly one of the entries 'pressure'"
+            << " (a PatchFunction1, Pa) and 'pressureField' (the name of a"
+            << " volScalarField, Pa)" << exit(FatalIOError);
     }
     if (hasP)
     {
-        pressure_ = PatchFunction1<scalar>::New(patch().patch(), "pressure", dict);
+        pressure_ =
+            PatchFunction1<scalar>::New(patch().patch(), "pressure", dict);
     }
     else
     {
         pressureFieldName_ = dict.get<word>("pressureField");
     }
 
-    // One place both sides read: constant/thermalContactProperties of the case.
+    // One place both sides read: constant/thermalContactProperties.
     const Time& runTime = db().time();
     const word propsName("thermalContactProperties");
     if (!runTime.foundObject<IOdictionary>(propsName))
@@ -94,43 +129,80 @@ void Foam::thermalContactResistanceFvPatchScalarField::readContact
         {
             FatalIOErrorInFunction(dict)
                 << who().c_str() << ": entry 'contact " << contactName_
-                << "' needs the file " << io.objectPath()
-                << ", which cannot be read" << exit(FatalIOError);
+                << "' needs the file constant/" << propsName << " of the"
+                << " case (" << runTime.globalPath()/"constant"/propsName
+                << "), which cannot be read" << exit(FatalIOError);
         }
         IOdictionary* props = new IOdictionary(io);
         props->store();
     }
-    const IOdictionary& props = runTime.lookupObject<IOdictionary>(propsName);
+    const IOdictionary& props =
+        runTime.lookupObject<IOdictionary>(propsName);
     if (!props.isDict(contactName_))
     {
-        FatalIOErrorInFunction(props)
-            << who().c_str() << ": no entry '" << contactName_ << "' in "
-            << props.objectPath() << exit(FatalIOError);
+        FatalIOErrorInFunction(dict)
+            << who().c_str() << ": entry 'contact " << contactName_
+            << "': there is no dictionary '" << contactName_ << "' in "
+            << props.objectPath() << " (it has: "
+            << flatOutput(props.toc()) << ")" << exit(FatalIOError);
     }
     interface_ = contactInterfaceFromDict
     (
-        props, contactName_, props.objectPath(), runTime.path(), who()
+        props, contactName_, props.objectPath(), runTime.globalPath(), who()
     );
 }
 
 
-void Foam::thermalContactResistanceFvPatchScalarField::storeOutput()
+void Foam::thermalContactResistanceFvPatchScalarField::checkNeighbour
+(
+    const thermalContactResistanceFvPatchScalarField& nbr
+)
+{
+    string problem;
+    if ((hConstant_ > 0) != (nbr.hConstant_ > 0))
+    {
+        problem = "one side gives 'h', the other 'contact'";
+    }
+    else if (hConstant_ > 0 && hConstant_ != nbr.hConstant_)
+    {
+        problem =
+            "the two sides give different 'h' (" + Foam::name(hConstant_)
+          + " and " + Foam::name(nbr.hConstant_) + ")";
+    }
+    else if (hConstant_ <= 0 && contactName_ != nbr.contactName_)
+    {
+        problem =
+            "the two sides name different 'contact' entries ('"
+          + contactName_ + "' and '" + nbr.contactName_ + "')";
+    }
+    if (!problem.empty())
+    {
+        RuntimeIOError
+            << who().c_str() << " and its neighbour " << nbr.who().c_str()
+            << ": " << problem.c_str() << "; both sides of an interface must"
+            << " agree (one conductance, or the heat leaving one side would"
+            << " not be the heat entering the other)" << exit(FatalIOError);
+    }
+    checkedNeighbour_ = true;
+}
+
+
+void Foam::thermalContactResistanceFvPatchScalarField::storeOutput() const
 {
     const fvMesh& mesh = patch().boundaryMesh().mesh();
     const label patchi = patch().index();
-    const word names[2] = {"contactAreaFraction", "contactConductance"};
-    const scalarField* values[2] = {&areaFraction_, &conductance_};
-    const dimensionSet dims[2] =
-        {dimless, dimPower/dimArea/dimTemperature};
-    for (int k = 0; k < 2; ++k)
+    const dimensionSet dims[3] =
+        {dimPower/dimArea/dimTemperature, dimless, dimPressure};
+    const label nOutputs = (hConstant_ > 0 ? 1 : 3);
+    for (label k = 0; k < nOutputs; ++k)
     {
-        if (!mesh.foundObject<volScalarField>(names[k]))
+        if (!mesh.foundObject<volScalarField>(outputNames[k]))
         {
             volScalarField* f = new volScalarField
             (
                 IOobject
                 (
-                    names[k],
+                    outputNames[k],
                     mesh.time().timeName(),
                     mesh,
                     IOobject::NO_READ,
@@ -141,23 +213,90 @@ void Foam::thermalContactResistanceFvPatchScalarField::storeOutput()
             );
             f->store();
         }
-        volScalarField& f =
+        scalarField& out =
             const_cast<volScalarField&>
             (
-                mesh.lookupObject<volScalarField>(names[k])
-            );
-        f.boundaryFieldRef()[patchi] == *values[k];
+                mesh.lookupObject<volScalarField>(outputNames[k])
+            ).boundaryFieldRef()[patchi];
+        if (k == 0)
+        {
+            forAll(out, facei)
+            {
+                out[facei] =
+                    std::isinf(conductance_[facei])
+                  ? completeContactOutput
+                  : conductance_[facei];
+            }
+        }
+        else
+        {
+            out = (k == 1 ? areaFraction_ : contactPressure_);
+        }
     }
 }
 
 
 void Foam::thermalContactResistanceFvPatchScalarField::report() const
 {
-    const scalarField finiteH(min(conductance_, scalar(GREAT)));
-    Info<< "thermalContactResistance: " << who().c_str()
-        << ": h min/mean/max = " << gMin(finiteH) << " / "
-        << gAverage(finiteH) << " / " << gMax(finiteH)
-        << " W/m^2/K, A_r/A_n mean = " << gAverage(areaFraction_) << endl;
+    const scalarField& magSf = patch().magSf();
+    if (hConstant_ > 0)
+    {
+        Info<< "thermalContactResistance: " << who().c_str()
+            << ": h = " << hConstant_ << " W/m^2/K (constant)" << endl;
+        return;
+    }
+    scalar hMin = GREAT;
+    scalar hMax = 0;
+    scalar hA = 0;
+    scalar arA = 0;
+    scalar touchingArea = 0;
+    label nTouching = 0;
+    label nComplete = 0;
+    label nApart = 0;
+    forAll(conductance_, facei)
+    {
+        const scalar h = conductance_[facei];
+        if (std::isinf(h))
+        {
+            ++nComplete;
+        }
+        else if (contactPressure_[facei] <= 0)
+        {
+            ++nApart;
+        }
+        else
+        {
+            ++nTouching;
+            hMin = min(hMin, h);
+            hMax = max(hMax, h);
+            hA += h*magSf[facei];
+            arA += areaFraction_[facei]*magSf[facei];
+            touchingArea += magSf[facei];
+        }
+    }
+    reduce(hMin, minOp<scalar>());
+    reduce(hMax, maxOp<scalar>());
+    reduce(hA, sumOp<scalar>());
+    reduce(arA, sumOp<scalar>());
+    reduce(touchingArea, sumOp<scalar>());
+    reduce(nTouching, sumOp<label>());
+    reduce(nComplete, sumOp<label>());
+    reduce(nApart, sumOp<label>());
+
+    Info<< "thermalContactResistance: " << who().c_str() << ": ";
+    if (nTouching > 0)
+    {
+        Info<< "h min/mean/max = " << hMin << " / " << hA/touchingArea
+            << " / " << hMax << " W/m^2/K, A_r/A_n mean = "
+            << arA/touchingArea << " (area-weighted over " << nTouching
+            << " faces in partial contact)";
+    }
+    else
+    {
+        Info<< "no face in partial contact";
+    }
+    Info<< "; " << nComplete << " faces in complete contact (h infinite), "
+        << nApart << " faces apart (P <= 0)" << endl;
 }
 
 
@@ -183,8 +322,14 @@ thermalContactResistanceFvPatchScalarField
     interface_(),
     areaFraction_(p.size(), Zero),
     conductance_(p.size(), Zero),
+    contactPressure_(p.size(), Zero),
+    evaluated_(false),
+    dictName_(iF.objectPath()),
+    dictStart_(-1),
+    dictEnd_(-1),
+    checkedNeighbour_(false),
     warnedNoContact_(false),
-    lastReportTime_(-GREAT)
+    warnedBeyondTable_(false)
 {
     this->refValue() = 0.0;
     this->refGrad() = 0.0;
@@ -210,8 +355,14 @@ thermalContactResistanceFvPatchScalarField
     interface_(),
     areaFraction_(p.size(), Zero),
     conductance_(p.size(), Zero),
+    contactPressure_(p.size(), Zero),
+    evaluated_(false),
+    dictName_(dict.name()),
+    dictStart_(dict.startLineNumber()),
+    dictEnd_(dict.endLineNumber()),
+    checkedNeighbour_(false),
     warnedNoContact_(false),
-    lastReportTime_(-GREAT)
+    warnedBeyondTable_(false)
 {
     checkPatch();
     readContact(dict);
@@ -219,7 +370,7 @@ thermalContactResistanceFvPatchScalarField
     fvPatchScalarField::operator=(scalarField("value", dict, p.size()));
     if (dict.found("refValue"))
     {
-        // Full restart
+        // Restart: the mixed condition's state as written
         refValue() = scalarField("refValue", dict, p.size());
         refGrad() = scalarField("refGradient", dict, p.size());
         valueFraction() = scalarField("valueFraction", dict, p.size());
@@ -247,14 +398,30 @@ thermalContactResistanceFvPatchScalarField
     TnbrName_(ptf.TnbrName_),
     contactName_(ptf.contactName_),
     hConstant_(ptf.hConstant_),
-    pressure_(ptf.pressure_.valid() ? ptf.pressure_().clone(p.patch()).ptr() : nullptr),
+    pressure_(),
     pressureFieldName_(ptf.pressureFieldName_),
     interface_(ptf.interface_),
     areaFraction_(ptf.areaFraction_, mapper),
     conductance_(ptf.conductance_, mapper),
+    contactPressure_(ptf.contactPressure_, mapper),
+    evaluated_(ptf.evaluated_),
+    dictName_(ptf.dictName_),
+    dictStart_(ptf.dictStart_),
+    dictEnd_(ptf.dictEnd_),
+    checkedNeighbour_(false),
     warnedNoContact_(ptf.warnedNoContact_),
-    lastReportTime_(ptf.lastReportTime_)
-{}
+    warnedBeyondTable_(ptf.warnedBeyondTable_)
+{
+    if (ptf.pressure_.valid())
+    {
+        // Map the values on the old patch (a nonuniform list must follow its
+        // faces into, e.g., a processor patch), then rebind to the new patch.
+        // v1912's clone(newPatch) alone would truncate the list to the new size.
+        autoPtr<PatchFunction1<scalar>> onOld(ptf.pressure_().clone().ptr());
+        onOld->autoMap(mapper);
+        pressure_.reset(onOld().clone(p.patch()).ptr());
+    }
+}
 
 
 Foam::thermalContactResistanceFvPatchScalarField::
@@ -268,13 +435,24 @@ thermalContactResistanceFvPatchScalarField
     TnbrName_(ptf.TnbrName_),
     contactName_(ptf.contactName_),
     hConstant_(ptf.hConstant_),
-    pressure_(ptf.pressure_.valid() ? ptf.pressure_().clone(patch().patch()).ptr() : nullptr),
+    pressure_
+    (
+        ptf.pressure_.valid()
+      ? ptf.pressure_().clone(patch().patch()).ptr()
+      : nullptr
+    ),
     pressureFieldName_(ptf.pressureFieldName_),
     interface_(ptf.interface_),
     areaFraction_(ptf.areaFraction_),
     conductance_(ptf.conductance_),
+    contactPressure_(ptf.contactPressure_),
+    evaluated_(ptf.evaluated_),
+    dictName_(ptf.dictName_),
+    dictStart_(ptf.dictStart_),
+    dictEnd_(ptf.dictEnd_),
+    checkedNeighbour_(ptf.checkedNeighbour_),
     warnedNoContact_(ptf.warnedNoContact_),
-    lastReportTime_(ptf.lastReportTime_)
+    warnedBeyondTable_(ptf.warnedBeyondTable_)
 {}
 
 
@@ -290,13 +468,24 @@ thermalContactResistanceFvPatchScalarField
     TnbrName_(ptf.TnbrName_),
     contactName_(ptf.contactName_),
     hConstant_(ptf.hConstant_),
-    pressure_(ptf.pressure_.valid() ? ptf.pressure_().clone(patch().patch()).ptr() : nullptr),
+    pressure_
+    (
+        ptf.pressure_.valid()
+      ? ptf.pressure_().clone(patch().patch()).ptr()
+      : nullptr
+    ),
     pressureFieldName_(ptf.pressureFieldName_),
     interface_(ptf.interface_),
     areaFraction_(ptf.areaFraction_),
     conductance_(ptf.conductance_),
+    contactPressure_(ptf.contactPressure_),
+    evaluated_(ptf.evaluated_),
+    dictName_(ptf.dictName_),
+    dictStart_(ptf.dictStart_),
+    dictEnd_(ptf.dictEnd_),
+    checkedNeighbour_(ptf.checkedNeighbour_),
     warnedNoContact_(ptf.warnedNoContact_),
-    lastReportTime_(ptf.lastReportTime_)
+    warnedBeyondTable_(ptf.warnedBeyondTable_)
 {}
 
 
@@ -314,11 +503,13 @@ Foam::thermalContactResistanceFvPatchScalarField::interfacePressure() const
         const fvMesh& mesh = patch().boundaryMesh().mesh();
         if (!mesh.foundObject<volScalarField>(pressureFieldName_))
         {
-            FatalErrorInFunction
-                << who().c_str() << ": pressureField '" << pressureFieldName_
-                << "' is not a volScalarField of region " << mesh.name()
-                << " (file " << internalField().objectPath() << ")"
-                << exit(FatalError);
+            RuntimeIOError
+                << who().c_str() << ": entry 'pressureField "
+                << pressureFieldName_ << "': region " << mesh.name()
+                << " has no volScalarField '" << pressureFieldName_
+                << "' (read it, e.g. with the readFields function object,"
+                << " or let a solver or function object create it)"
+                << exit(FatalIOError);
         }
         return
             mesh.lookupObject<volScalarField>(pressureFieldName_)
@@ -340,6 +531,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::autoMap
     }
     areaFraction_.autoMap(m);
     conductance_.autoMap(m);
+    contactPressure_.autoMap(m);
 }
 
 
@@ -358,6 +550,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::rmap
     }
     areaFraction_.rmap(tiptf.areaFraction_, addr);
     conductance_.rmap(tiptf.conductance_, addr);
+    contactPressure_.rmap(tiptf.contactPressure_, addr);
 }
 
 
@@ -383,89 +576,107 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
         nbrPatch.lookupPatchField<volScalarField, scalar>(TnbrName_);
     if (!isA<thermalContactResistanceFvPatchScalarField>(nbrPf))
     {
-        FatalErrorInFunction
+        RuntimeIOError
             << who().c_str() << ": the neighbour patch " << nbrPatch.name()
-            << " of region " << nbrMesh.name() << " has field " << TnbrName_
-            << " of type " << nbrPf.type()
-            << "; both sides must be thermalContactResistance"
-            << exit(FatalError);
+            << " of region " << nbrMesh.name() << " has " << TnbrName_
+            << " of type '" << nbrPf.type() << "'; both sides of the"
+            << " interface must be thermalContactResistance"
+            << exit(FatalIOError);
     }
     const auto& nbrField =
         refCast<const thermalContactResistanceFvPatchScalarField>(nbrPf);
-
-    // Neighbour face temperatures, on this side's faces.
-    scalarField nbrT(nbrField);
-    mpp.distribute(nbrT);
+    if (!checkedNeighbour_)
+    {
+        checkNeighbour(nbrField);
+    }
 
     const scalarField myKappa(kappa(*this));
-    scalarField h(size(), Zero);
+    const scalarField myKDelta(myKappa*patch().deltaCoeffs());
+    scalarField& f = this->valueFraction();
+
     if (hConstant_ > 0)
     {
-        h = hConstant_;
-        areaFraction_ = 1.0;
+        // The stock coupled baffle with thicknessLayers/kappaLayers, as is.
+        scalarField nbrT(nbrField);
+        mpp.distribute(nbrT);
+        this->refValue() = nbrT;
+        f = hConstant_/(hConstant_ + myKDelta);
+        conductance_ = hConstant_;
     }
     else
     {
-        // Both sides' pressures, averaged: both sides see the same h.
+        // Both sides' pressures, averaged: both sides get the same h.
         scalarField nbrP(nbrField.interfacePressure());
         mpp.distribute(nbrP);
-        const scalarField P(0.5*(interfacePressure() + nbrP));
+        contactPressure_ = 0.5*(interfacePressure() + nbrP);
 
         scalarField nbrKappa(nbrField.kappa(nbrField));
         mpp.distribute(nbrKappa);
+        scalarField nbrKDelta
+        (
+            nbrField.kappa(nbrField)*nbrPatch.deltaCoeffs()
+        );
+        mpp.distribute(nbrKDelta);
+        scalarField nbrTcell(nbrField.patchInternalField());
+        mpp.distribute(nbrTcell);
 
-        bool noContact = false;
-        forAll(h, facei)
+        bool apart = false;
+        bool beyondTable = false;
+        const scalar tableEnd = interface_->tableEnd();
+        const scalar complete = interface_->completeContactPressure();
+        forAll(f, facei)
         {
-            const scalar p = P[facei];
-            if (!std::isfinite(p))
+            const scalar P = contactPressure_[facei];
+            try
             {
-                FatalErrorInFunction
-                    << who().c_str() << ": pressure " << p << " at face "
-                    << facei << exit(FatalError);
+                const roughContact::FaceContact c =
+                    interface_->face(P, myKappa[facei], nbrKappa[facei]);
+                conductance_[facei] = c.conductance;
+                areaFraction_[facei] = c.areaFraction;
+                f[facei] = roughContact::coupledValueFraction
+                (
+                    c.conductance, myKDelta[facei], nbrKDelta[facei]
+                );
             }
-            if (p <= 0)
+            catch (const std::exception& e)
             {
-                noContact = true;
+                RuntimeIOError
+                    << who().c_str() << ": face " << facei << " at "
+                    << patch().Cf()[facei] << ": nominal pressure " << P
+                    << " Pa (mean of both sides), kappa " << myKappa[facei]
+                    << " and " << nbrKappa[facei] << " W/m/K, kappa*delta "
+                    << myKDelta[facei] << " and " << nbrKDelta[facei]
+                    << ": " << e.what() << exit(FatalIOError);
             }
-            const scalar k1 = myKappa[facei];
-            const scalar k2 = nbrKappa[facei];
-            const scalar ks = 2*k1*k2/(k1 + k2);
-            h[facei] = ks*interface_->conductancePerConductivity(p);
-            areaFraction_[facei] = interface_->areaFraction(p);
+            apart = apart || P <= 0;
+            beyondTable = beyondTable || (P > tableEnd && P < complete);
         }
-        if (returnReduce(noContact, orOp<bool>()) && !warnedNoContact_)
+        this->refValue() = nbrTcell;
+
+        if (returnReduce(apart, orOp<bool>()) && !warnedNoContact_)
         {
             Info<< "thermalContactResistance: " << who().c_str()
                 << ": zero or negative pressure on some faces: the surfaces"
-                << " do not touch there (h_c = 0)" << endl;
+                << " do not touch there (h = 0, no heat crosses)" << endl;
             warnedNoContact_ = true;
         }
+        if (returnReduce(beyondTable, orOp<bool>()) && !warnedBeyondTable_)
+        {
+            WarningInFunction
+                << who().c_str() << ": pressures above " << tableEnd
+                << " Pa, the end of the table of contact '" << contactName_
+                << "' (its maxPressure), and below complete contact ("
+                << complete << " Pa): h is held at the table's last value"
+                << " there. Raise maxPressure." << endl;
+            warnedBeyondTable_ = true;
+        }
     }
-    conductance_ = h;
-
-    const scalarField myKDelta(myKappa*patch().deltaCoeffs());
-    this->refValue() = nbrT;
     this->refGrad() = 0.0;
-    scalarField& f = this->valueFraction();
-    forAll(f, facei)
-    {
-        // Complete contact (h infinite): the solids are joined.
-        f[facei] =
-            std::isfinite(h[facei])
-          ? h[facei]/(h[facei] + myKDelta[facei])
-          : 1.0;
-    }
 
     mixedFvPatchScalarField::updateCoeffs();
 
+    evaluated_ = true;
     storeOutput();
-    const Time& runTime = db().time();
-    if (runTime.writeTime() && runTime.value() != lastReportTime_)
-    {
-        lastReportTime_ = runTime.value();
-        report();
-    }
 
     UPstream::msgType() = oldTag;
 }
@@ -484,7 +695,20 @@ void Foam::thermalContactResistanceFvPatchScalarField::write(Ostream& os) const
         os.writeEntry("contact", contactName_);
         if (pressure_.valid())
         {
-            pressure_->writeData(os);
+            if (pressure_->type() == "uniformValue")
+            {
+                // v1912's UniformValueField writes only its Function1
+                // ("pressure table (...)"), which does not read back as a
+                // PatchFunction1; the dictionary form does.
+                os.beginBlock("pressure");
+                os.writeEntry("type", pressure_->type());
+                pressure_->writeData(os);
+                os.endBlock();
+            }
+            else
+            {
+                pressure_->writeData(os);
+            }
         }
         else
         {
@@ -492,6 +716,13 @@ void Foam::thermalContactResistanceFvPatchScalarField::write(Ostream& os) const
         }
     }
     temperatureCoupledBase::write(os);
+
+    // One log line per patch per write (after a solver evaluated it; not in
+    // utilities such as decomposePar that only read and write the field).
+    if (evaluated_)
+    {
+        report();
+    }
 }
 
 

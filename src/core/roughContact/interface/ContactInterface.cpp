@@ -3,6 +3,7 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/io/SpectrumReader.hpp"
 #include "roughContact/models/ModelFactory.hpp"
+#include "roughContact/thermal/ConstrictionConductance.hpp"
 
 #include <optional>
 #include <sstream>
@@ -69,6 +70,16 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec)
     model_ = std::make_unique<MultiscaleModel>(surface_, Ep, makeAsperityModel(spec.model, materials_));
     table_ = std::make_unique<ContactTable>(*model_, spec.minPressure.value_or(1e-9 * Ep),
                                             spec.maxPressure.value_or(Ep), spec.pointsPerDecade);
+}
+
+FaceContact ContactInterface::face(double P, double k1, double k2) const
+{
+    requireFinite("pressure", P);
+    const double ks = harmonicMeanConductivity(k1, k2);
+    FaceContact c;
+    c.areaFraction = table_->areaFraction(P);
+    c.conductance = ks * table_->conductancePerConductivity(P);
+    return c;
 }
 
 std::string ContactInterface::summary() const

@@ -49,6 +49,12 @@ struct InterfaceSpec {
     std::size_t pointsPerDecade = 40;
 };
 
+/// What a boundary condition needs at one face.
+struct FaceContact {
+    double areaFraction = 0.0; ///< A_r/A_n
+    double conductance = 0.0;  ///< h_c [W/(m^2 K)]: 0 without contact, +inf at complete contact
+};
+
 class ContactInterface {
 public:
     explicit ContactInterface(const InterfaceSpec& spec);
@@ -57,6 +63,15 @@ public:
     double areaFraction(double P) const { return table_->areaFraction(P); }
     /// h_c/k_s [1/m] at P [Pa] (0 for P <= 0, +infinity beyond complete contact).
     double conductancePerConductivity(double P) const { return table_->conductancePerConductivity(P); }
+
+    /// A_r/A_n and h_c = k_s (h_c/k_s)(P) at the nominal pressure P [Pa] (finite; P <= 0: no
+    /// contact) between solids of conductivities k1, k2 [W/(m K)] (finite, > 0), with
+    /// k_s = 2 k1 k2/(k1 + k2). ParameterError on a NaN or infinite pressure or a bad k.
+    FaceContact face(double P, double k1, double k2) const;
+    /// The last pressure [Pa] the table resolves: above it and below complete contact the
+    /// table returns its last values (a floor), so a boundary condition should say so.
+    double tableEnd() const noexcept { return table_->pressures().back(); }
+    double completeContactPressure() const noexcept { return table_->completeContactPressure(); }
 
     const ContactTable& table() const noexcept { return *table_; }
     const MultiscaleModel& model() const noexcept { return *model_; }
