@@ -1,12 +1,13 @@
 # tests/support/caseFunctions.sh: shared by the case tests under tests/cases (bash; source it).
 # Sets up the project's OpenFOAM environment and gives:
-#   copyCase SRC NAME   copy a tutorial (symlinks resolved) to $work/NAME, print its path
+#   copyCase SRC NAME   copy a tutorial (symlinks resolved) to $work/NAME, cleaned, and print
+#                       its path
 #   runCase DIR         Allclean + Allrun of a case, output to DIR/log.Allrun; on failure the
 #                       log's tail goes to stderr
 #   numbers FILE ENTRY  every number of a field file's entry (a dot-separated keyword path,
 #                       e.g. internalField or boundaryField.bottom_to_top.value), one per line
 #                       at full written precision; uniform values once, lists in order
-#                       (tests/support/foamEntry.awk)
+#                       (etc/openfoam/foamEntry.awk)
 #   latestTime DIR      the largest numeric time directory of a case
 #   compareNumbers LABEL LIMIT FILE_A FILE_B
 #                       largest |a - b| / |b| over two equally long number lists (files, one
@@ -22,6 +23,9 @@ source "$top/etc/openfoam/environment"
 copyCase() { # SRC NAME
     local dest="$work/$2"
     rm -rf "$dest" && cp -rL "$1" "$dest"
+    # A tutorial run in the source tree leaves results and logs; the copy starts clean.
+    "$dest/Allclean" > /dev/null 2>&1 || true
+    rm -f "$dest"/log.*
     echo "$dest"
 }
 
@@ -38,7 +42,7 @@ runCase() { # DIR
 }
 
 numbers() { # FILE ENTRY
-    awk -v entry="$2" -f "$top/tests/support/foamEntry.awk" "$1" || {
+    awk -v entry="$2" -f "$top/etc/openfoam/foamEntry.awk" "$1" || {
         echo "numbers: no entry $2 in $1" >&2
         return 1
     }
