@@ -171,6 +171,10 @@ TEST(ContactTable, ErrorAgainstTheDirectSolveIsBelowHalfAPercent)
             const double h = constrictionConductancePerConductivity(*m, load);
             const double ra = table.areaFraction(P) / a;
             const double rh = table.conductancePerConductivity(P) / h;
+            // The one-search form the boundary condition uses gives the same numbers.
+            const ContactTable::Values both = table.values(P);
+            ASSERT_EQ(both.areaFraction, table.areaFraction(P));
+            ASSERT_EQ(both.conductancePerConductivity, table.conductancePerConductivity(P));
             worstArea = std::max(worstArea, std::abs(ra - 1.0));
             worstH = std::max(worstH, std::abs(rh - 1.0));
             lowestRatio = std::min({lowestRatio, ra, rh});
@@ -200,6 +204,12 @@ TEST(ContactTable, ErrorAgainstTheDirectSolveIsBelowHalfAPercent)
         EXPECT_EQ(table.conductancePerConductivity(2 * pc), std::numeric_limits<double>::infinity());
         EXPECT_LT(m->areaFraction(pc / Ep * (1 - 1e-8)), 1.0);
         EXPECT_THROW(table.areaFraction(std::nan("")), std::invalid_argument);
+        EXPECT_THROW(table.values(std::nan("")), std::invalid_argument);
+        // values() outside the points: extrapolated below, the end's values beyond, the limits.
+        for (double P : {p.front() / 10, p.back() * (1 + 1e-9), -1.0, 0.0, 2 * pc}) {
+            EXPECT_EQ(table.values(P).areaFraction, table.areaFraction(P)) << P;
+            EXPECT_EQ(table.values(P).conductancePerConductivity, table.conductancePerConductivity(P)) << P;
+        }
     }
 }
 

@@ -611,11 +611,8 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
         contactPressure_ = 0.5*(interfacePressure() + nbrP);
 
         scalarField nbrKappa(nbrField.kappa(nbrField));
+        scalarField nbrKDelta(nbrKappa*nbrPatch.deltaCoeffs());
         mpp.distribute(nbrKappa);
-        scalarField nbrKDelta
-        (
-            nbrField.kappa(nbrField)*nbrPatch.deltaCoeffs()
-        );
         mpp.distribute(nbrKDelta);
         scalarField nbrTcell(nbrField.patchInternalField());
         mpp.distribute(nbrTcell);

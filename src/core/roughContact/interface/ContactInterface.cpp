@@ -76,10 +76,8 @@ FaceContact ContactInterface::face(double P, double k1, double k2) const
 {
     requireFinite("pressure", P);
     const double ks = harmonicMeanConductivity(k1, k2);
-    FaceContact c;
-    c.areaFraction = table_->areaFraction(P);
-    c.conductance = ks * table_->conductancePerConductivity(P);
-    return c;
+    const ContactTable::Values v = table_->values(P);
+    return {v.areaFraction, ks * v.conductancePerConductivity};
 }
 
 std::string ContactInterface::summary() const

@@ -149,18 +149,26 @@ ContactTable::ContactTable(const MultiscaleModel& model, double minPressure, dou
     }
 }
 
-double ContactTable::interpolate(const std::vector<double>& logValues, double P) const
+ContactTable::Position ContactTable::locate(double P) const
 {
     const double x = std::log(P);
-    std::size_t j = 1; // interval [j-1, j]
     if (x >= logP_.back()) {
-        return std::exp(logValues.back());
+        return {logP_.size() - 1, 1.0, true};
     }
+    std::size_t j = 1; // interval [j-1, j]; below the table the first one extrapolates
     if (x > logP_.front()) {
         j = static_cast<std::size_t>(std::upper_bound(logP_.begin(), logP_.end(), x) - logP_.begin());
     }
-    const double t = (x - logP_[j - 1]) / (logP_[j] - logP_[j - 1]);
-    return std::exp(logValues[j - 1] + t * (logValues[j] - logValues[j - 1]));
+    return {j, (x - logP_[j - 1]) / (logP_[j] - logP_[j - 1]), false};
+}
+
+double ContactTable::at(const std::vector<double>& logValues, const Position& where)
+{
+    const std::size_t j = where.j;
+    if (where.end) {
+        return std::exp(logValues[j]);
+    }
+    return std::exp(logValues[j - 1] + where.t * (logValues[j] - logValues[j - 1]));
 }
 
 double ContactTable::areaFraction(double P) const
@@ -189,6 +197,21 @@ double ContactTable::conductancePerConductivity(double P) const
         return std::numeric_limits<double>::infinity();
     }
     return interpolate(logH_, P);
+}
+
+ContactTable::Values ContactTable::values(double P) const
+{
+    if (std::isnan(P)) {
+        throw ParameterError("pressure", "is NaN");
+    }
+    if (P <= 0.0) {
+        return {0.0, 0.0};
+    }
+    if (P >= pComplete_) {
+        return {1.0, std::numeric_limits<double>::infinity()};
+    }
+    const Position where = locate(P);
+    return {std::min(1.0, at(logArea_, where)), at(logH_, where)};
 }
 
 } // namespace roughContact

@@ -32,6 +32,13 @@ public:
     double areaFraction(double P) const;
     /// h_c/k_s [1/m] at the nominal pressure P [Pa].
     double conductancePerConductivity(double P) const;
+    /// Both at once (one search of the table): {A_r/A_n, h_c/k_s}, the same numbers as the two
+    /// calls above.
+    struct Values {
+        double areaFraction;
+        double conductancePerConductivity;
+    };
+    Values values(double P) const;
 
     /// The lowest pressure [Pa] of complete contact (A_r = A_n), to 1e-10 relative; +infinity
     /// when the model does not reach it below 1e3 E'.
@@ -43,7 +50,16 @@ public:
     double reducedModulus() const noexcept { return Eprime_; }
 
 private:
-    double interpolate(const std::vector<double>& values, double P) const;
+    /// The interval [j - 1, j] of log P and the position t in it; `end`: at or beyond the last
+    /// point, where its values hold.
+    struct Position {
+        std::size_t j;
+        double t;
+        bool end;
+    };
+    Position locate(double P) const;
+    static double at(const std::vector<double>& logValues, const Position& where);
+    double interpolate(const std::vector<double>& logValues, double P) const { return at(logValues, locate(P)); }
 
     double Eprime_;
     double pComplete_;
