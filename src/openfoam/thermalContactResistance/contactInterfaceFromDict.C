@@ -6,6 +6,7 @@
 
 #include "roughContact/io/Units.hpp"
 
+#include <cmath>
 #include <map>
 #include <mutex>
 #include <stdexcept>
@@ -89,12 +90,33 @@ roughContact::SurfaceSpec readSurface
 
 roughContact::Material readMaterial(const dictionary& d)
 {
+    // Checked here, not (only) by the core, so that the error names the
+    // entry as written (side1/side2 and E, nu, Sy) and its value.
     roughContact::Material m;
     m.E = d.get<scalar>("E");
+    if (!(m.E > 0) || !std::isfinite(m.E))
+    {
+        FatalIOErrorInFunction(d)
+            << "entry 'E' of " << d.dictName() << " must be a finite Young's"
+            << " modulus > 0 [Pa], got " << m.E << exit(FatalIOError);
+    }
     m.nu = d.get<scalar>("nu");
+    if (!(m.nu > -1 && m.nu < 0.5))
+    {
+        FatalIOErrorInFunction(d)
+            << "entry 'nu' of " << d.dictName() << " must be a Poisson's"
+            << " ratio in (-1, 0.5), got " << m.nu << exit(FatalIOError);
+    }
     scalar Sy;
     if (d.readIfPresent("Sy", Sy))
     {
+        if (!(Sy > 0) || !std::isfinite(Sy))
+        {
+            FatalIOErrorInFunction(d)
+                << "entry 'Sy' of " << d.dictName() << " must be a finite"
+                << " yield strength > 0 [Pa], got " << Sy
+                << exit(FatalIOError);
+        }
         m.Sy = Sy;
     }
     return m;
@@ -125,6 +147,10 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
 
     const dictionary& dict = parent.subDict(name);
     roughContact::InterfaceSpec spec;
+    // A missing or bad entry of the dictionary (OpenFOAM's own lookups, and
+    // readSurface/readMaterial) is a FatalIOError; thrown, not exiting, so
+    // that it is reported below with the patch and field that asked for it.
+    const bool throwing = FatalIOError.throwExceptions();
     try
     {
         if (dict.found("surfaces"))
@@ -151,6 +177,7 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
         {
             spec.maxPressure = p;
         }
+        FatalIOError.throwExceptions(throwing);
 
         Info<< "thermalContactResistance: building the contact table for '"
             << name << "' (" << who.c_str() << ")" << endl;
@@ -159,8 +186,21 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
         cache.emplace(key, iface);
         return iface;
     }
+    catch (const IOerror& e)
+    {
+        FatalIOError.throwExceptions(throwing);
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__,
+            e.ioFileName(), e.ioStartLineNumber(), e.ioEndLineNumber()
+        )
+            << who.c_str() << ": contact entry '" << name << "' in "
+            << dictFile << ": " << e.message().c_str()
+            << exit(FatalIOError);
+    }
     catch (const std::exception& e)
     {
+        FatalIOError.throwExceptions(throwing);
         FatalIOErrorInFunction(dict)
             << who.c_str() << ": contact entry '" << name << "' in "
             << dictFile << ": " << e.what()

@@ -187,6 +187,78 @@ void Foam::thermalContactResistanceFvPatchScalarField::checkNeighbour
 }
 
 
+const Foam::fvPatchScalarField*
+Foam::thermalContactResistanceFvPatchScalarField::neighbourField
+(
+    const bool mustExist
+) const
+{
+    const mappedPatchBase& mpp =
+        refCast<const mappedPatchBase>(patch().patch());
+    if
+    (
+        !mustExist
+     && (
+            mpp.sameRegion()
+         || !db().time().foundObject<polyMesh>(mpp.sampleRegion())
+        )
+    )
+    {
+        return nullptr;
+    }
+    const polyMesh& nbrMesh = mpp.sampleMesh();
+    if (!nbrMesh.foundObject<volScalarField>(TnbrName_))
+    {
+        if (!mustExist)
+        {
+            return nullptr;
+        }
+        RuntimeIOError
+            << who().c_str() << ": entry 'Tnbr " << TnbrName_ << "': the"
+            << " neighbour region " << nbrMesh.name() << " has no"
+            << " volScalarField '" << TnbrName_ << "' (it has: "
+            << flatOutput(nbrMesh.sortedNames<volScalarField>()) << ")"
+            << exit(FatalIOError);
+    }
+    const fvPatchScalarField& nbrPf =
+        nbrMesh.lookupObject<volScalarField>(TnbrName_)
+       .boundaryField()[mpp.samplePolyPatch().index()];
+    if (!isA<thermalContactResistanceFvPatchScalarField>(nbrPf))
+    {
+        RuntimeIOError
+            << who().c_str() << ": the neighbour patch "
+            << nbrPf.patch().name() << " of region " << nbrMesh.name()
+            << " has " << TnbrName_ << " of type '" << nbrPf.type()
+            << "' (" << nbrPf.internalField().objectPath() << "); both sides"
+            << " of the interface must be thermalContactResistance"
+            << exit(FatalIOError);
+    }
+    return &nbrPf;
+}
+
+
+const Foam::dictionary&
+Foam::thermalContactResistanceFvPatchScalarField::checkedKappaMethod
+(
+    const fvPatch& p,
+    const DimensionedField<scalar, volMesh>& iF,
+    const dictionary& dict
+)
+{
+    const word method(dict.get<word>("kappaMethod"));
+    if (!temperatureCoupledBase::KMethodTypeNames_.found(method))
+    {
+        FatalIOErrorInFunction(dict)
+            << "patch " << p.name() << " of field " << iF.name()
+            << " in region " << p.boundaryMesh().mesh().name()
+            << ": entry 'kappaMethod " << method << "': unknown; one of "
+            << flatOutput(temperatureCoupledBase::KMethodTypeNames_.sortedToc())
+            << exit(FatalIOError);
+    }
+    return dict;
+}
+
+
 void Foam::thermalContactResistanceFvPatchScalarField::storeOutput() const
 {
     const fvMesh& mesh = patch().boundaryMesh().mesh();
@@ -346,7 +418,7 @@ thermalContactResistanceFvPatchScalarField
 )
 :
     mixedFvPatchScalarField(p, iF),
-    temperatureCoupledBase(patch(), dict),
+    temperatureCoupledBase(patch(), checkedKappaMethod(p, iF, dict)),
     TnbrName_(dict.get<word>("Tnbr")),
     contactName_(),
     hConstant_(-1),
@@ -366,6 +438,10 @@ thermalContactResistanceFvPatchScalarField
 {
     checkPatch();
     readContact(dict);
+    // The neighbour's field exists already when this region is read after
+    // it: a neighbour of another type is reported here, before that other
+    // condition (evaluated first) fails on it with no patch or file named.
+    neighbourField(false);
 
     fvPatchScalarField::operator=(scalarField("value", dict, p.size()));
     if (dict.found("refValue"))
@@ -572,19 +648,11 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
     const fvPatch& nbrPatch =
         refCast<const fvMesh>(nbrMesh).boundary()[samplePatchi];
 
-    const fvPatchScalarField& nbrPf =
-        nbrPatch.lookupPatchField<volScalarField, scalar>(TnbrName_);
-    if (!isA<thermalContactResistanceFvPatchScalarField>(nbrPf))
-    {
-        RuntimeIOError
-            << who().c_str() << ": the neighbour patch " << nbrPatch.name()
-            << " of region " << nbrMesh.name() << " has " << TnbrName_
-            << " of type '" << nbrPf.type() << "'; both sides of the"
-            << " interface must be thermalContactResistance"
-            << exit(FatalIOError);
-    }
     const auto& nbrField =
-        refCast<const thermalContactResistanceFvPatchScalarField>(nbrPf);
+        refCast<const thermalContactResistanceFvPatchScalarField>
+        (
+            *neighbourField(true)
+        );
     if (!checkedNeighbour_)
     {
         checkNeighbour(nbrField);
