@@ -2,6 +2,7 @@
 // InputError a file and line, ParameterError the parameter. Nothing returns NaN.
 #pragma once
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -37,5 +38,16 @@ private:
 double requirePositive(const std::string& parameter, double value);
 /// Throws ParameterError unless value is finite.
 double requireFinite(const std::string& parameter, double value);
+
+/// The same for a literal name: the name becomes a string only when the check fails, so the
+/// checks cost nothing on per-face paths.
+inline double requirePositive(const char* parameter, double value)
+{
+    return value > 0.0 && std::isfinite(value) ? value : requirePositive(std::string(parameter), value);
+}
+inline double requireFinite(const char* parameter, double value)
+{
+    return std::isfinite(value) ? value : requireFinite(std::string(parameter), value);
+}
 
 } // namespace roughContact
