@@ -608,6 +608,9 @@ void Foam::thermalContactResistanceFvPatchScalarField::autoMap
     areaFraction_.autoMap(m);
     conductance_.autoMap(m);
     contactPressure_.autoMap(m);
+    faceCache_ = {};
+    nbrDeltaCoeffs_.clear();
+    haveNbrDeltaCoeffs_ = false;
 }
 
 
@@ -627,6 +630,9 @@ void Foam::thermalContactResistanceFvPatchScalarField::rmap
     areaFraction_.rmap(tiptf.areaFraction_, addr);
     conductance_.rmap(tiptf.conductance_, addr);
     contactPressure_.rmap(tiptf.contactPressure_, addr);
+    faceCache_ = {};
+    nbrDeltaCoeffs_.clear();
+    haveNbrDeltaCoeffs_ = false;
 }
 
 
@@ -673,17 +679,54 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
     }
     else
     {
-        // Both sides' pressures, averaged: both sides get the same h.
-        scalarField nbrP(nbrField.interfacePressure());
-        mpp.distribute(nbrP);
-        contactPressure_ = 0.5*(interfacePressure() + nbrP);
+        // What this side needs of the neighbour, in one exchange: its cell
+        // temperature, kappa and pressure per face, and (once, while the
+        // mesh does not change) its deltaCoeffs.
+        vectorField nbrData(nbrPatch.size());
+        {
+            const scalarField nbrT(nbrField.patchInternalField());
+            const scalarField nbrK(nbrField.kappa(nbrField));
+            const scalarField nbrP(nbrField.interfacePressure());
+            forAll(nbrData, i)
+            {
+                nbrData[i] = vector(nbrT[i], nbrK[i], nbrP[i]);
+            }
+        }
+        mpp.distribute(nbrData);
+        // distribute() is collective: decide on what every processor knows
+        // alike (not on this processor's, possibly empty, face count).
+        if (!haveNbrDeltaCoeffs_ || nbrMesh.changing())
+        {
+            nbrDeltaCoeffs_ = nbrPatch.deltaCoeffs();
+            mpp.distribute(nbrDeltaCoeffs_);
+            haveNbrDeltaCoeffs_ = true;
+        }
+        const scalarField nbrTcell(nbrData.component(vector::X));
+        const scalarField nbrKappa(nbrData.component(vector::Y));
+        const scalarField nbrKDelta(nbrKappa*nbrDeltaCoeffs_);
 
-        scalarField nbrKappa(nbrField.kappa(nbrField));
-        scalarField nbrKDelta(nbrKappa*nbrPatch.deltaCoeffs());
-        mpp.distribute(nbrKappa);
-        mpp.distribute(nbrKDelta);
-        scalarField nbrTcell(nbrField.patchInternalField());
-        mpp.distribute(nbrTcell);
+        // Both sides' pressures, averaged: both sides get the same h.
+        contactPressure_ = 0.5*(interfacePressure() + nbrData.component(vector::Z));
+
+        try
+        {
+            interface_->faces
+            (
+                size(), contactPressure_.cdata(), myKappa.cdata(),
+                nbrKappa.cdata(), faceCache_, areaFraction_.data(),
+                conductance_.data()
+            );
+        }
+        catch (const roughContact::FaceError& e)
+        {
+            const label facei = label(e.face());
+            RuntimeIOError
+                << who().c_str() << ": face " << facei << " at "
+                << patch().Cf()[facei] << ": nominal pressure "
+                << contactPressure_[facei] << " Pa (mean of both sides), kappa "
+                << myKappa[facei] << " and " << nbrKappa[facei] << " W/m/K: "
+                << e.what() << exit(FatalIOError);
+        }
 
         bool apart = false;
         bool beyondTable = false;
@@ -694,24 +737,19 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
             const scalar P = contactPressure_[facei];
             try
             {
-                const roughContact::FaceContact c =
-                    interface_->face(P, myKappa[facei], nbrKappa[facei]);
-                conductance_[facei] = c.conductance;
-                areaFraction_[facei] = c.areaFraction;
                 f[facei] = roughContact::coupledValueFraction
                 (
-                    c.conductance, myKDelta[facei], nbrKDelta[facei]
+                    conductance_[facei], myKDelta[facei], nbrKDelta[facei]
                 );
             }
             catch (const std::exception& e)
             {
                 RuntimeIOError
                     << who().c_str() << ": face " << facei << " at "
-                    << patch().Cf()[facei] << ": nominal pressure " << P
-                    << " Pa (mean of both sides), kappa " << myKappa[facei]
-                    << " and " << nbrKappa[facei] << " W/m/K, kappa*delta "
-                    << myKDelta[facei] << " and " << nbrKDelta[facei]
-                    << ": " << e.what() << exit(FatalIOError);
+                    << patch().Cf()[facei] << ": h " << conductance_[facei]
+                    << " W/m^2/K, kappa*delta " << myKDelta[facei] << " and "
+                    << nbrKDelta[facei] << " W/m^2/K: " << e.what()
+                    << exit(FatalIOError);
             }
             apart = apart || P <= 0;
             beyondTable = beyondTable || (P > tableEnd && P < complete);

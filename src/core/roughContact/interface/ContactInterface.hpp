@@ -4,6 +4,7 @@
 // OpenFOAM glue fills an InterfaceSpec from its dictionary and calls this.
 #pragma once
 
+#include "roughContact/Error.hpp"
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/material/Materials.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
@@ -49,6 +50,20 @@ struct InterfaceSpec {
     std::size_t pointsPerDecade = 40;
 };
 
+/// Bad input at one face of a batch (ContactInterface::faces): what() reads
+/// "face I: PARAMETER: message".
+class FaceError : public ParameterError {
+public:
+    FaceError(std::size_t face, const ParameterError& why)
+        : ParameterError("face " + std::to_string(face), why.what()), face_(face)
+    {
+    }
+    std::size_t face() const noexcept { return face_; }
+
+private:
+    std::size_t face_;
+};
+
 /// What a boundary condition needs at one face.
 struct FaceContact {
     double areaFraction = 0.0; ///< A_r/A_n
@@ -68,6 +83,20 @@ public:
     /// contact) between solids of conductivities k1, k2 [W/(m K)] (finite, > 0), with
     /// k_s = 2 k1 k2/(k1 + k2). ParameterError on a NaN or infinite pressure or a bad k.
     FaceContact face(double P, double k1, double k2) const;
+    /// Per-face memory for faces(): each face's last pressure and its table values.
+    struct FaceCache {
+        std::vector<double> pressure;
+        std::vector<double> areaFraction;
+        std::vector<double> conductancePerConductivity;
+    };
+    /// face() for n faces: area[i] and h[i] from P[i], k1[i], k2[i]. A face whose pressure is
+    /// the one `cache` holds for it re-uses that table lookup (the common case: a pressure
+    /// constant in time, or several evaluations per time step); the results are the same as
+    /// face()'s, bit for bit. A cache of another size starts over. On bad input throws
+    /// FaceError naming the face.
+    void faces(std::size_t n, const double* P, const double* k1, const double* k2, FaceCache& cache,
+               double* area, double* h) const;
+
     /// The last pressure [Pa] the table resolves: above it and below complete contact the
     /// table returns its last values (a floor), so a boundary condition should say so.
     double tableEnd() const noexcept { return table_->pressures().back(); }

@@ -49,11 +49,5 @@ double constrictionConductancePerConductivity(const MultiscaleModel& model, doub
     return constrictionConductancePerConductivity(model.trace(checkLoad(load)), model.nominalArea());
 }
 
-double harmonicMeanConductivity(double k1, double k2)
-{
-    requirePositive("conductivity k1", k1);
-    requirePositive("conductivity k2", k2);
-    return 2.0 * k1 * k2 / (k1 + k2);
-}
 
 } // namespace roughContact

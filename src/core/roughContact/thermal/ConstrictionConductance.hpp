@@ -4,6 +4,7 @@
 // unverified).
 #pragma once
 
+#include "roughContact/Error.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
 
 #include <vector>
@@ -28,7 +29,13 @@ double constrictionConductancePerConductivity(const std::vector<LevelState>& tra
 /// h_c / k_s [1/m] of a multi-scale model at the load F/(A_n E').
 double constrictionConductancePerConductivity(const MultiscaleModel& model, double load);
 
-/// k_s = 2 k1 k2 / (k1 + k2) [W/(m K)]; both conductivities finite and > 0.
-double harmonicMeanConductivity(double k1, double k2);
+/// k_s = 2 k1 k2 / (k1 + k2) [W/(m K)]; both conductivities finite and > 0 (ParameterError
+/// otherwise). Inline: called per face and per evaluation.
+inline double harmonicMeanConductivity(double k1, double k2)
+{
+    requirePositive("conductivity k1", k1);
+    requirePositive("conductivity k2", k2);
+    return 2.0 * k1 * k2 / (k1 + k2);
+}
 
 } // namespace roughContact

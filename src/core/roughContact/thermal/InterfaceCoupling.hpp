@@ -15,15 +15,38 @@
 //   h = 0    (no contact):       w = 0, an adiabatic face.
 #pragma once
 
+#include <cmath>
+#include <limits>
+
 namespace roughContact {
 
+namespace detail {
+/// Throws the ParameterError that names what is wrong with h, kDelta or kDeltaNbr.
+[[noreturn]] void badCoupling(double h, double kDelta, double kDeltaNbr);
+inline bool positiveFinite(double x) { return x > 0.0 && x < std::numeric_limits<double>::infinity(); }
+} // namespace detail
+
 /// hEff = 1/(1/h + 1/kDeltaNbr) [W/(m^2 K)] for h in [0, +inf]; kDeltaNbr finite and > 0.
-double effectiveConductance(double h, double kDeltaNbr);
+inline double effectiveConductance(double h, double kDeltaNbr)
+{
+    if (!(h >= 0.0) || !detail::positiveFinite(kDeltaNbr)) {
+        detail::badCoupling(h, 1.0, kDeltaNbr);
+    }
+    return std::isinf(h) ? kDeltaNbr : h * kDeltaNbr / (h + kDeltaNbr);
+}
 
 /// The mixed condition's value fraction w = hEff/(hEff + kDelta) on the side whose cell
 /// conductance is kDelta, its reference value being the neighbour's cell temperature.
 /// h in [0, +inf]; kDelta and kDeltaNbr finite and > 0 (ParameterError otherwise).
-double coupledValueFraction(double h, double kDelta, double kDeltaNbr);
+/// Inline: called per face and per evaluation.
+inline double coupledValueFraction(double h, double kDelta, double kDeltaNbr)
+{
+    if (!detail::positiveFinite(kDelta)) {
+        detail::badCoupling(h, kDelta, kDeltaNbr);
+    }
+    const double hEff = effectiveConductance(h, kDeltaNbr);
+    return hEff / (hEff + kDelta);
+}
 
 /// The face temperature the mixed condition gives: w T_nbrCell + (1 - w) T_cell.
 inline double mixedFaceTemperature(double w, double Tcell, double TnbrCell)
