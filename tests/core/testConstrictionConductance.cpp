@@ -10,10 +10,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
 #include <string>
+#include <utility>
+#include <vector>
 
 using namespace roughContact;
 
@@ -220,4 +223,63 @@ TEST(ContactTable, RefusesBadRanges)
     EXPECT_THROW(ContactTable(*m, 1e6, 1e5), std::invalid_argument);
     EXPECT_THROW(ContactTable(*m, 1e3, 1e6, 1), std::invalid_argument);
     EXPECT_THROW(ContactTable(*m, 1e15, 1e16), std::invalid_argument); // beyond complete contact
+}
+
+// The table's lookup finds the interval through an index of equal buckets in log P; it must
+// pick the same interval as a plain binary search over the whole table, everywhere: at random
+// pressures, at every point and one ulp either side of it, and around the bucket edges (where
+// rounding may put a pressure in the neighbouring bucket). Compared bit for bit with the
+// log-log interpolation written out here from the table's own points.
+TEST(ContactTable, BucketLookupPicksTheSameIntervalAsABinarySearch)
+{
+    const Spectrum s = standin();
+    const double Ep = steel.reducedModulus();
+    for (const std::string& name : {std::string("jacksonGreen"), std::string("truncation")}) {
+        SCOPED_TRACE(name);
+        const auto m = multiscale(name, s);
+        const ContactTable table(*m, 1e-9 * Ep, 1e-1 * Ep);
+        const auto& p = table.pressures();
+        std::vector<double> logP, logA, logH;
+        for (std::size_t k = 0; k < p.size(); ++k) {
+            logP.push_back(std::log(p[k]));
+            logA.push_back(std::log(table.areaFractions()[k]));
+            logH.push_back(std::log(table.conductancesPerConductivity()[k]));
+        }
+        const auto reference = [&](double P) {
+            const double x = std::log(P);
+            const auto j = static_cast<std::size_t>(std::upper_bound(logP.begin(), logP.end(), x) - logP.begin());
+            const double t = (x - logP[j - 1]) / (logP[j] - logP[j - 1]);
+            return std::make_pair(std::min(1.0, std::exp(logA[j - 1] + t * (logA[j] - logA[j - 1]))),
+                                  std::exp(logH[j - 1] + t * (logH[j] - logH[j - 1])));
+        };
+        std::vector<double> checks;
+        std::mt19937_64 gen(11);
+        std::uniform_real_distribution<double> u(logP.front(), logP.back());
+        for (int k = 0; k < 20000; ++k) {
+            checks.push_back(std::exp(u(gen)));
+        }
+        for (std::size_t k = 1; k + 1 < p.size(); ++k) {
+            checks.push_back(p[k]);
+            checks.push_back(std::nextafter(p[k], 0.0));
+            checks.push_back(std::nextafter(p[k], HUGE_VAL));
+        }
+        const double width = (logP.back() - logP.front()) / double(p.size());
+        for (std::size_t k = 1; k < p.size(); ++k) {
+            const double edge = std::exp(logP.front() + double(k) * width);
+            checks.push_back(edge);
+            checks.push_back(std::nextafter(edge, 0.0));
+            checks.push_back(std::nextafter(edge, HUGE_VAL));
+        }
+        std::size_t compared = 0;
+        for (double P : checks) {
+            if (!(P > p.front() && P < p.back())) {
+                continue;
+            }
+            const auto want = reference(P);
+            ASSERT_EQ(table.areaFraction(P), want.first) << "P " << P;
+            ASSERT_EQ(table.conductancePerConductivity(P), want.second) << "P " << P;
+            ++compared;
+        }
+        EXPECT_GT(compared, 20000U);
+    }
 }

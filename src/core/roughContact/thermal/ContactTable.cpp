@@ -147,6 +147,13 @@ ContactTable::ContactTable(const MultiscaleModel& model, double minPressure, dou
         logArea_.push_back(std::log(area_[k]));
         logH_.push_back(std::log(h_[k]));
     }
+    const std::size_t buckets = p_.size();
+    bucketScale_ = double(buckets) / (logP_.back() - logP_.front());
+    for (std::size_t k = 0; k <= buckets; ++k) {
+        const double edge = logP_.front() + double(k) / bucketScale_;
+        bucketFirst_.push_back(
+            static_cast<std::size_t>(std::upper_bound(logP_.begin(), logP_.end(), edge) - logP_.begin()));
+    }
 }
 
 ContactTable::Position ContactTable::locate(double P) const
@@ -157,7 +164,17 @@ ContactTable::Position ContactTable::locate(double P) const
     }
     std::size_t j = 1; // interval [j-1, j]; below the table the first one extrapolates
     if (x > logP_.front()) {
-        j = static_cast<std::size_t>(std::upper_bound(logP_.begin(), logP_.end(), x) - logP_.begin());
+        // The bucket of x holds the answer, unless rounding put x in a neighbouring bucket:
+        // then search the whole table.
+        const auto k = std::min(static_cast<std::size_t>((x - logP_.front()) * bucketScale_),
+                                bucketFirst_.size() - 2);
+        const auto first = logP_.begin() + static_cast<std::ptrdiff_t>(std::max<std::size_t>(bucketFirst_[k], 1));
+        const auto last = logP_.begin() + static_cast<std::ptrdiff_t>(bucketFirst_[k + 1]) + 1;
+        auto it = std::upper_bound(first, std::min(last, logP_.end()), x);
+        if (!(it != logP_.end() && *(it - 1) <= x && x < *it)) {
+            it = std::upper_bound(logP_.begin(), logP_.end(), x);
+        }
+        j = static_cast<std::size_t>(it - logP_.begin());
     }
     return {j, (x - logP_[j - 1]) / (logP_[j] - logP_[j - 1]), false};
 }

@@ -65,6 +65,10 @@ private:
     double pComplete_;
     std::vector<double> p_;
     std::vector<double> logP_;
+    /// An index over log P in equal buckets (as many as points): bucketFirst_[k] is the first
+    /// point above the bucket's lower edge, so a lookup searches one bucket, not the table.
+    std::vector<std::size_t> bucketFirst_;
+    double bucketScale_ = 0.0; ///< buckets per unit of log P
     std::vector<double> area_;
     std::vector<double> h_;
     std::vector<double> logArea_;
