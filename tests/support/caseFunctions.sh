@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # tests/support/caseFunctions.sh: shared by the case tests under tests/cases (bash; source it).
 # Sets up the project's OpenFOAM environment and gives:
 #   copyCase SRC NAME   copy a tutorial (symlinks resolved) to $work/NAME, cleaned, and print
