@@ -1,6 +1,7 @@
 // The contact law of one frequency level of the multi-scale framework (seed §2.2).
 #pragma once
 
+#include <limits>
 #include <string>
 
 namespace roughContact {
@@ -28,6 +29,15 @@ public:
     /// For asperity models N_i = eta_i A_{i-1}, so this is eta_i * Abar_i(F / N_i).
     /// Values >= 1 mean the level is in complete contact; the result may be +inf.
     virtual double areaRatio(double pbar, const Level& level) const = 0;
+
+    /// A mean pressure from which on areaRatio(pbar, level) >= 1, i.e. the level is in
+    /// complete contact (assumption 5 then keeps A_i = A_{i-1}). An upper bound of the least
+    /// such pressure is allowed; +inf (the default) means unknown. MultiscaleModel uses it
+    /// only to skip areaRatio where its answer is known, so it never changes a result.
+    virtual double completeContactPressure(const Level&) const
+    {
+        return std::numeric_limits<double>::infinity();
+    }
 };
 
 } // namespace roughContact

@@ -14,7 +14,8 @@ public:
     double area(double w, double R) const override;
     double force(double w, double R) const override;
     double areaAtForce(double F, double R) const override;
-    /// (4 E' / (3 R)) (A / pi)^(3/2), the inverse of areaAtForce, raised by 1e-12 for rounding.
+    /// (4 E' / (3 R)) (A / pi)^(3/2), the inverse of areaAtForce (seed Eq. 20), raised by 1e-12
+    /// for rounding.
     double forceBeyondArea(double A, double R) const override;
     /// Interference at force F: w = (3 F / (4 E' R^(1/2)))^(2/3).
     double interference(double F, double R) const;

@@ -32,8 +32,9 @@ public:
     std::string name() const override;
     double areaRatio(double pbar, const Level& level) const override;
 
-    /// p* for the level (Eq. 6, or sqrt(2) pi E' beta f in the consistent form).
-    double completeContactPressure(const Level& level) const;
+    /// p* for the level (Eq. 6, or sqrt(2) pi E' beta f in the consistent form); from p* on
+    /// areaRatio is 1 exactly.
+    double completeContactPressure(const Level& level) const override;
     /// eta * Abar as a function of x = pbar/p* alone (x < 1).
     double areaRatioAt(double x) const;
 

@@ -30,7 +30,7 @@ public:
     double areaRatio(double pbar, const Level& level) const final;
     /// A mean pressure from which on areaRatio(pbar, level) >= 1 (the level is in complete
     /// contact): eta_i * forceBeyondArea(1/eta_i, R_i); +inf when unknown.
-    double completeContactPressure(const Level& level) const;
+    double completeContactPressure(const Level& level) const override;
 };
 
 } // namespace roughContact

@@ -19,7 +19,8 @@ public:
     double area(double w, double R) const override;
     double force(double w, double R) const override;
     double areaAtForce(double F, double R) const override;
-    /// Hertz below A_c, F_c up to 2 A_c (the jump), A H beyond; raised by 1e-12 for rounding.
+    /// Hertz below A_c, F_c up to 2 A_c (the jump), A H beyond (H = 2.84 S_y, seed §3.1);
+    /// raised by 1e-12 for rounding.
     double forceBeyondArea(double A, double R) const override;
 
     const YieldOnset& onset() const noexcept { return onset_; }

@@ -81,7 +81,7 @@ public:
 
     /// A_r/A_n and h_c = k_s (h_c/k_s)(P) at the nominal pressure P [Pa] (finite; P <= 0: no
     /// contact) between solids of conductivities k1, k2 [W/(m K)] (finite, > 0), with
-    /// k_s = 2 k1 k2/(k1 + k2). ParameterError on a NaN or infinite pressure or a bad k.
+    /// k_s = 2 k1 k2/(k1 + k2) (physics.md §5). ParameterError on a NaN or infinite pressure or a bad k.
     FaceContact face(double P, double k1, double k2) const;
     /// Per-face memory for faces(): each face's last pressure and its table values.
     struct FaceCache {

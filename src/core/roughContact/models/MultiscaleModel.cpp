@@ -1,8 +1,6 @@
 #include "roughContact/models/MultiscaleModel.hpp"
 
 #include "roughContact/Error.hpp"
-#include "roughContact/asperity/JohnsonGreenwoodHigginson.hpp"
-#include "roughContact/asperity/SphericalAsperity.hpp"
 
 #include <cmath>
 #include <limits>
@@ -24,16 +22,9 @@ MultiscaleModel::MultiscaleModel(const Spectrum& spectrum, double Eprime,
         }
     }
     constexpr double unknown = std::numeric_limits<double>::infinity();
-    const auto* spherical = dynamic_cast<const SphericalAsperity*>(asperity_.get());
-    const auto* jgh = dynamic_cast<const JohnsonGreenwoodHigginson*>(asperity_.get());
     completeAt_.reserve(levels_.size());
     for (const Level& level : levels_) {
-        double p = unknown;
-        if (spherical != nullptr) {
-            p = spherical->completeContactPressure(level);
-        } else if (jgh != nullptr) {
-            p = jgh->completeContactPressure(level); // its areaRatio is 1 from p* on, exactly
-        }
+        double p = asperity_->completeContactPressure(level);
         // The law's own answer at that pressure must be complete contact; if rounding says
         // otherwise, evaluate this level always.
         if (!(p > 0.0 && p < unknown && asperity_->areaRatio(p, level) >= 1.0)) {

@@ -49,5 +49,4 @@ double constrictionConductancePerConductivity(const MultiscaleModel& model, doub
     return constrictionConductancePerConductivity(model.trace(checkLoad(load)), model.nominalArea());
 }
 
-
 } // namespace roughContact

@@ -190,30 +190,12 @@ double ContactTable::at(const std::vector<double>& logValues, const Position& wh
 
 double ContactTable::areaFraction(double P) const
 {
-    if (std::isnan(P)) {
-        throw ParameterError("pressure", "is NaN");
-    }
-    if (P <= 0.0) {
-        return 0.0;
-    }
-    if (P >= pComplete_) {
-        return 1.0;
-    }
-    return std::min(1.0, interpolate(logArea_, P));
+    return values(P).areaFraction;
 }
 
 double ContactTable::conductancePerConductivity(double P) const
 {
-    if (std::isnan(P)) {
-        throw ParameterError("pressure", "is NaN");
-    }
-    if (P <= 0.0) {
-        return 0.0;
-    }
-    if (P >= pComplete_) {
-        return std::numeric_limits<double>::infinity();
-    }
-    return interpolate(logH_, P);
+    return values(P).conductancePerConductivity;
 }
 
 ContactTable::Values ContactTable::values(double P) const

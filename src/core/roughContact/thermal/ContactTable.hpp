@@ -32,8 +32,8 @@ public:
     double areaFraction(double P) const;
     /// h_c/k_s [1/m] at the nominal pressure P [Pa].
     double conductancePerConductivity(double P) const;
-    /// Both at once (one search of the table): {A_r/A_n, h_c/k_s}, the same numbers as the two
-    /// calls above.
+    /// Both at once (one search of the table): {A_r/A_n, h_c/k_s}; the two calls above are its
+    /// parts.
     struct Values {
         double areaFraction;
         double conductancePerConductivity;
@@ -59,7 +59,6 @@ private:
     };
     Position locate(double P) const;
     static double at(const std::vector<double>& logValues, const Position& where);
-    double interpolate(const std::vector<double>& logValues, double P) const { return at(logValues, locate(P)); }
 
     double Eprime_;
     double pComplete_;
