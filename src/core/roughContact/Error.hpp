@@ -1,5 +1,7 @@
 // Errors of the core. Every failure on bad input names where it came from:
 // InputError a file and line, ParameterError the parameter. Nothing returns NaN.
+// Checks test std::isfinite/std::isnan before any ordered comparison: `x > 0` raises the
+// invalid-operation flag for a NaN x, which is a SIGFPE under OpenFOAM (FloatingPoint.hpp).
 #pragma once
 
 #include <cmath>
@@ -43,7 +45,7 @@ double requireFinite(const std::string& parameter, double value);
 /// checks cost nothing on per-face paths.
 inline double requirePositive(const char* parameter, double value)
 {
-    return value > 0.0 && std::isfinite(value) ? value : requirePositive(std::string(parameter), value);
+    return std::isfinite(value) && value > 0.0 ? value : requirePositive(std::string(parameter), value);
 }
 inline double requireFinite(const char* parameter, double value)
 {

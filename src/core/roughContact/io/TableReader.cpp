@@ -2,6 +2,7 @@
 #include "roughContact/io/TableReader.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/FloatingPoint.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -131,7 +132,11 @@ bool parseNumber(const std::string& field, double& value)
     const char* begin = t.c_str();
     char* end = nullptr;
     errno = 0;
-    const double v = std::strtod(begin, &end);
+    double v = 0.0;
+    {
+        const QuietFloatingPoint quiet; // "1e999" raises overflow on its way to inf
+        v = std::strtod(begin, &end);
+    }
     if (end != begin + t.size()) {
         return false;
     }

@@ -71,7 +71,7 @@ std::vector<LevelState> MultiscaleModel::trace(double load) const
         s.density = level.density;
         s.radius = level.radius;
         s.asperities = level.density * A;
-        s.asperityForce = F / s.asperities;
+        s.asperityForce = F > 0.0 ? F / s.asperities : 0.0; // no load: no area, no asperity (not 0/0)
         if (F > 0.0) {
             const double pbar = F / A;
             const double r = pbar >= completeAt_[k] ? 1.0 : asperity_->areaRatio(pbar, level);

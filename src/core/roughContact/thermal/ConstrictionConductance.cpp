@@ -14,7 +14,7 @@ constexpr double pi = 3.14159265358979323846;
 
 double constrictionFactor(double eps)
 {
-    if (!(eps >= 0.0 && eps <= 1.0)) {
+    if (std::isnan(eps) || eps < 0.0 || eps > 1.0) {
         throw ParameterError("constriction ratio a/b", "must lie in [0, 1]");
     }
     const double g = 1.0 - eps;

@@ -12,7 +12,7 @@ namespace detail {
 void badCoupling(double h, double kDelta, double kDeltaNbr)
 {
     std::ostringstream os;
-    if (!(h >= 0.0)) { // also NaN
+    if (std::isnan(h) || h < 0.0) {
         os << "must be >= 0 (+inf for complete contact), got " << h;
         throw ParameterError("interface conductance h", os.str());
     }

@@ -23,13 +23,13 @@ namespace roughContact {
 namespace detail {
 /// Throws the ParameterError that names what is wrong with h, kDelta or kDeltaNbr.
 [[noreturn]] void badCoupling(double h, double kDelta, double kDeltaNbr);
-inline bool positiveFinite(double x) { return x > 0.0 && x < std::numeric_limits<double>::infinity(); }
+inline bool positiveFinite(double x) { return std::isfinite(x) && x > 0.0; }
 } // namespace detail
 
 /// hEff = 1/(1/h + 1/kDeltaNbr) [W/(m^2 K)] for h in [0, +inf]; kDeltaNbr finite and > 0.
 inline double effectiveConductance(double h, double kDeltaNbr)
 {
-    if (!(h >= 0.0) || !detail::positiveFinite(kDeltaNbr)) {
+    if (std::isnan(h) || h < 0.0 || !detail::positiveFinite(kDeltaNbr)) {
         detail::badCoupling(h, 1.0, kDeltaNbr);
     }
     return std::isinf(h) ? kDeltaNbr : h * kDeltaNbr / (h + kDeltaNbr);
