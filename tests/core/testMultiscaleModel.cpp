@@ -167,7 +167,8 @@ TEST(MultiscaleModel, traceIsConsistentWithAssumptions2And3)
 // few, elastic levels), over loads from far below to beyond complete contact.
 TEST(MultiscaleModel, completeContactShortcutGivesBitIdenticalAreas)
 {
-    const Spectrum surfaces[] = {standIn(), Spectrum::powerLaw(1e-12, 1.0, 1e3, 1e5, 0.0)};
+    // The power law: rms 0.09 nm, above the 1 fm floor of limits::minimumRoughness.
+    const Spectrum surfaces[] = {standIn(), Spectrum::powerLaw(1e-10, 1.0, 1e3, 1e5, 0.0)};
     for (const Spectrum& s : surfaces) {
         for (const auto& asperity : allAsperityModels()) {
             const MultiscaleModel m(s, Ep, asperity);

@@ -24,7 +24,8 @@ double Hertz::force(double w, double R) const
 
 double Hertz::areaAtForce(double F, double R) const
 {
-    return pi * std::cbrt(std::pow(3.0 * F * R / (4.0 * Eprime_), 2.0)); // seed Eq. 20
+    const double c = std::cbrt(3.0 * F * R / (4.0 * Eprime_)); // squared after the root: no overflow
+    return pi * c * c;                                          // seed Eq. 20
 }
 
 double Hertz::forceBeyondArea(double A, double R) const
@@ -35,7 +36,8 @@ double Hertz::forceBeyondArea(double A, double R) const
 
 double Hertz::interference(double F, double R) const
 {
-    return std::cbrt(std::pow(3.0 * F / (4.0 * Eprime_ * std::sqrt(R)), 2.0));
+    const double c = std::cbrt(3.0 * F / (4.0 * Eprime_ * std::sqrt(R)));
+    return c * c;
 }
 
 } // namespace roughContact

@@ -147,7 +147,8 @@ double JacksonGreen::interferenceRatioAtForce(double q) const
 {
     const double hertzTop = elasticLimit * std::sqrt(elasticLimit);
     if (q <= hertzTop || tableW_.empty()) {
-        return std::min(std::cbrt(q * q), wStarComplete_);
+        const double c = std::cbrt(q); // q^(2/3); q * q would underflow for a large asperity
+        return std::min(c * c, wStarComplete_);
     }
     if (q <= tableF_.front()) {
         return elasticLimit; // inside the force jump at 1.9 w_c

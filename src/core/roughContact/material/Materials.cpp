@@ -1,20 +1,49 @@
 #include "roughContact/material/Materials.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
+
+#include <sstream>
 
 namespace roughContact {
 
 namespace {
+void checkModulus(const std::string& what, double E)
+{
+    limits::requireInRange(what, E, limits::minimumModulus, limits::maximumModulus, "Pa");
+}
+
+// S_y/E within the yield strains the elasto-plastic laws are defined for (Limits.hpp).
+void checkYieldStrain(const std::string& which, double Sy, double E, const char* modulusName)
+{
+    requirePositive(which + " yield strength S_y", Sy);
+    const double strain = Sy / E;
+    if (strain < limits::minimumYieldStrain || strain > limits::maximumYieldStrain) {
+        std::ostringstream os;
+        os << "S_y/" << modulusName << " = " << Sy << " Pa / " << E << " Pa = " << strain << " must lie within ["
+           << limits::minimumYieldStrain << ", " << limits::maximumYieldStrain
+           << "]: the elasto-plastic asperity laws (seed Eqs. 11-19) are fitted for yield strains of "
+              "metals and hard polymers; check the units of S_y and " << modulusName;
+        throw ParameterError(which + " yield strength S_y", os.str());
+    }
+}
+
 void check(const Material& m, const std::string& which)
 {
-    requirePositive(which + " Young's modulus E", m.E);
+    checkModulus(which + " Young's modulus E", m.E);
     requireFinite(which + " Poisson's ratio nu", m.nu);
     if (!(m.nu > -1.0 && m.nu < 0.5)) {
         throw ParameterError(which + " Poisson's ratio nu", "must lie in (-1, 0.5)");
     }
     if (m.Sy) {
-        requirePositive(which + " yield strength S_y", *m.Sy);
+        checkYieldStrain(which, *m.Sy, m.E, "E");
     }
+}
+
+void checkReducedModulus(double Eprime)
+{
+    limits::requireInRange("reduced modulus E'", Eprime, limits::minimumReducedModulus,
+                           limits::maximumReducedModulus, "Pa");
 }
 } // namespace
 
@@ -23,6 +52,7 @@ ContactMaterials ContactMaterials::againstRigidFlat(const Material& m)
     check(m, "material");
     ContactMaterials c;
     c.Eprime_ = m.E / (1.0 - m.nu * m.nu);
+    checkReducedModulus(c.Eprime_);
     c.nu_ = m.nu;
     c.E_ = m.E;
     c.Sy_ = m.Sy;
@@ -35,6 +65,7 @@ ContactMaterials ContactMaterials::pair(const Material& a, const Material& b)
     check(b, "second material");
     ContactMaterials c;
     c.Eprime_ = 1.0 / ((1.0 - a.nu * a.nu) / a.E + (1.0 - b.nu * b.nu) / b.E);
+    checkReducedModulus(c.Eprime_);
     const bool bYieldsFirst = b.Sy && (!a.Sy || *b.Sy < *a.Sy);
     const Material& y = bYieldsFirst ? b : a;
     c.nu_ = y.nu;
@@ -47,7 +78,8 @@ ContactMaterials ContactMaterials::fromReducedModulus(double Eprime, std::option
                                                       std::optional<double> Sy)
 {
     ContactMaterials c;
-    c.Eprime_ = requirePositive("reduced modulus E'", Eprime);
+    checkReducedModulus(Eprime);
+    c.Eprime_ = Eprime;
     if (nu) {
         requireFinite("Poisson's ratio nu", *nu);
         if (!(*nu > -1.0 && *nu < 0.5)) {
@@ -57,7 +89,9 @@ ContactMaterials ContactMaterials::fromReducedModulus(double Eprime, std::option
         c.E_ = Eprime * (1.0 - *nu * *nu);
     }
     if (Sy) {
-        c.Sy_ = requirePositive("yield strength S_y", *Sy);
+        // With nu, S_y/E of the yielding material; without, S_y/E' (E is then unknown).
+        checkYieldStrain("material", *Sy, c.E_ ? *c.E_ : Eprime, c.E_ ? "E" : "E'");
+        c.Sy_ = *Sy;
     }
     return c;
 }

@@ -1,6 +1,7 @@
 #include "roughContact/models/ContactModel.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -19,9 +20,11 @@ std::vector<double> ContactModel::areaFractions(const std::vector<double>& loads
 
 double checkLoad(double load)
 {
-    if (!std::isfinite(load) || load < 0.0) {
+    if (!std::isfinite(load) || load < 0.0 || (load > 0.0 && load < limits::minimumLoad) ||
+        load > limits::maximumLoad) {
         std::ostringstream os;
-        os << "the load F/(A_n E') must be finite and >= 0, got " << load;
+        os << "the load F/(A_n E') must be 0 or within [" << limits::minimumLoad << ", " << limits::maximumLoad
+           << "], got " << load;
         throw ParameterError("load", os.str());
     }
     return load;

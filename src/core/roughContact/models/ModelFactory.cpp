@@ -1,5 +1,7 @@
 #include "roughContact/models/ModelFactory.hpp"
 
+#include "roughContact/Limits.hpp"
+
 #include "roughContact/Error.hpp"
 #include "roughContact/asperity/Hertz.hpp"
 #include "roughContact/asperity/JacksonGreen.hpp"
@@ -71,8 +73,11 @@ std::shared_ptr<const AsperityModel> makeAsperityModel(const std::string& name,
 std::unique_ptr<ContactModel> makeContactModel(const std::string& name, const Spectrum& spectrum,
                                                const ContactMaterials& m, const ModelOptions& options)
 {
-    if (isMultiscaleModel(name)) {
+    if (isMultiscaleModel(name)) { // the multi-scale model checks the surface itself
         return std::make_unique<MultiscaleModel>(spectrum, m.reducedModulus(), makeAsperityModel(name, m));
+    }
+    if (name == "greenwoodWilliamson" || name == "greenwoodWilliamsonJG" || name == "majumdarBhushan") {
+        limits::requireRoughness(spectrum);
     }
     if (name == "greenwoodWilliamson" || name == "greenwoodWilliamsonJG") {
         return GreenwoodWilliamson::fromSpectrum(spectrum, m, name == "greenwoodWilliamsonJG");

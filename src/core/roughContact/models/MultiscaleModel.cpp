@@ -1,6 +1,7 @@
 #include "roughContact/models/MultiscaleModel.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 
 #include <cmath>
 #include <limits>
@@ -15,8 +16,11 @@ MultiscaleModel::MultiscaleModel(const Spectrum& spectrum, double Eprime,
     if (!asperity_) {
         throw ParameterError("asperity model", "none given");
     }
+    limits::requireRoughness(spectrum);
     for (std::size_t i = 0; i < spectrum.size(); ++i) {
-        if (spectrum.amplitude(i) > 0.0) {
+        // Zero amplitude carries nothing; a flat level (Limits.hpp) is in complete contact at
+        // every load the model accepts: both are skipped, with the same result.
+        if (spectrum.amplitude(i) * spectrum.frequency(i) > limits::flatSlope) {
             levels_.push_back(Level::of(spectrum.frequency(i), spectrum.amplitude(i)));
             index_.push_back(i);
         }

@@ -1,6 +1,7 @@
 #include "roughContact/surface/Profile.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -11,16 +12,18 @@ Profile::Profile(std::vector<double> heights, double spacing, std::string source
     : z_(std::move(heights)), dx_(spacing), source_(std::move(source))
 {
     const std::string what = source_.empty() ? std::string("profile") : source_;
-    requirePositive(what + ": spacing", dx_);
+    limits::requireLength(what + ": spacing", dx_);
     if (z_.size() < minimumSize) {
         std::ostringstream os;
         os << "a profile needs at least " << minimumSize << " points, got " << z_.size();
         throw InputError(what, 0, os.str());
     }
+    limits::requireLength(what + ": scan length N dx", dx_ * static_cast<double>(z_.size()));
     for (std::size_t i = 0; i < z_.size(); ++i) {
-        if (!std::isfinite(z_[i])) {
+        if (!std::isfinite(z_[i]) || std::abs(z_[i]) > limits::maximumHeight) {
             std::ostringstream os;
-            os << "height number " << i + 1 << " is not finite (" << z_[i] << ")";
+            os << "height number " << i + 1 << " is " << z_[i] << " m; heights must be finite and within +-"
+               << limits::maximumHeight << " m";
             throw InputError(what, 0, os.str());
         }
     }

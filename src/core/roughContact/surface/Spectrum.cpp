@@ -1,6 +1,7 @@
 #include "roughContact/surface/Spectrum.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 #include "roughContact/surface/Profile.hpp"
 
 #include <fftw3.h>
@@ -29,17 +30,20 @@ Spectrum::Spectrum(std::vector<double> frequencies, std::vector<double> amplitud
       source_(std::move(source))
 {
     const std::string w = where(source_);
-    requirePositive(w + ": scan length L", length_);
+    limits::requireLength(w + ": scan length L (A_n = L^2)", length_);
     if (f_.size() != beta_.size()) {
         throw InputError(w, 0, "frequencies and amplitudes differ in number");
     }
     if (f_.empty()) {
         throw InputError(w, 0, "a spectrum needs at least one level");
     }
+    limits::requireLevelCount(w, static_cast<double>(f_.size()));
     for (std::size_t i = 0; i < f_.size(); ++i) {
-        if (!std::isfinite(f_[i]) || !(f_[i] > 0.0)) {
+        if (!std::isfinite(f_[i]) || f_[i] < 1.0 / limits::maximumLength ||
+            f_[i] > 1.0 / limits::minimumLength) {
             std::ostringstream os;
-            os << "level " << i + 1 << ": frequency must be finite and positive, got " << f_[i];
+            os << "level " << i + 1 << ": frequency " << f_[i] << " 1/m; its wavelength 1/f must lie within ["
+               << limits::minimumLength << " m, " << limits::maximumLength << " m]";
             throw InputError(w, 0, os.str());
         }
         if (i > 0 && !(f_[i] > f_[i - 1])) {
@@ -48,9 +52,10 @@ Spectrum::Spectrum(std::vector<double> frequencies, std::vector<double> amplitud
                << " then " << f_[i] << ")";
             throw InputError(w, 0, os.str());
         }
-        if (!std::isfinite(beta_[i]) || beta_[i] < 0.0) {
+        if (!std::isfinite(beta_[i]) || beta_[i] < 0.0 || beta_[i] > limits::maximumHeight) {
             std::ostringstream os;
-            os << "level " << i + 1 << ": amplitude must be finite and >= 0, got " << beta_[i];
+            os << "level " << i + 1 << ": amplitude must be finite, >= 0 and at most " << limits::maximumHeight
+               << " m, got " << beta_[i];
             throw InputError(w, 0, os.str());
         }
     }
@@ -58,8 +63,15 @@ Spectrum::Spectrum(std::vector<double> frequencies, std::vector<double> amplitud
 
 Spectrum Spectrum::fromProfile(const Profile& profile)
 {
+    const std::size_t n = profile.size();
+    {
+        std::ostringstream hint;
+        hint << "use every K-th sample (stride K >= "
+             << static_cast<std::size_t>(std::ceil(double(n / 2) / double(limits::maximumLevels))) << ")";
+        limits::requireLevelCount(where(profile.source()) + ": a profile of " + std::to_string(n) + " samples",
+                                  static_cast<double>(n / 2), hint.str());
+    }
     const Profile p = profile.detrended();
-    const std::size_t n = p.size();
     std::vector<double> in(p.heights());
     const std::size_t nc = n / 2 + 1;
     std::unique_ptr<fftw_complex, decltype(&fftw_free)> out(
@@ -90,30 +102,56 @@ Spectrum Spectrum::fromProfile(const Profile& profile)
     return s;
 }
 
+namespace {
+// Levels i/L in [fmin, fmax] of amplitude b_m f^-m, checked under the names `what` gives
+// ("power law", "fractal"): sizes and ranges before anything is allocated.
+Spectrum powerLawLevels(const std::string& what, double bm, double m, double fmin, double fmax, double length)
+{
+    requirePositive(what + " fmin", fmin);
+    requirePositive(what + " fmax", fmax);
+    if (!(fmax >= fmin)) {
+        throw ParameterError(what + " fmax", "must not be below fmin");
+    }
+    limits::requireInRange(what + " fmin", fmin, 1.0 / limits::maximumLength, 1.0 / limits::minimumLength, "1/m");
+    limits::requireInRange(what + " fmax", fmax, 1.0 / limits::maximumLength, 1.0 / limits::minimumLength, "1/m");
+    const double L = limits::requireLength(what + " length", length > 0.0 ? length : 1.0 / fmin);
+    // Levels i/L inside [fmin, fmax]; the small slack keeps i = fmin L when it is an integer.
+    // fmax L <= 1e15 (the ranges above), exact in a long long.
+    const auto i0 = std::max(1LL, static_cast<long long>(std::ceil(fmin * L * (1.0 - 1e-12))));
+    const auto i1 = static_cast<long long>(std::floor(fmax * L * (1.0 + 1e-12)));
+    if (i1 < i0) {
+        throw ParameterError(what, "no level i/L lies between fmin and fmax");
+    }
+    limits::requireLevelCount(what, static_cast<double>(i1 - i0 + 1),
+                              "narrow [fmin, fmax] or shorten the length L (levels are i/L)");
+    // beta from its logarithm: b_m f^-m itself can overflow before the range check sees it.
+    const double logBm = std::log(bm);
+    const double logMax = std::log(limits::maximumHeight);
+    std::vector<double> f;
+    std::vector<double> beta;
+    f.reserve(static_cast<std::size_t>(i1 - i0 + 1));
+    beta.reserve(f.capacity());
+    for (long long i = i0; i <= i1; ++i) {
+        const double fi = static_cast<double>(i) / L;
+        const double logBeta = logBm - m * std::log(fi);
+        if (logBeta > logMax) {
+            std::ostringstream os;
+            os << "amplitude b_m f^-m = " << std::exp(logBeta - logMax) * limits::maximumHeight
+               << " m at f = " << fi << " 1/m exceeds " << limits::maximumHeight << " m";
+            throw ParameterError(what, os.str());
+        }
+        f.push_back(fi);
+        beta.push_back(std::exp(logBeta)); // may underflow to 0 for steep laws: a flat level
+    }
+    return Spectrum(std::move(f), std::move(beta), L, what);
+}
+} // namespace
+
 Spectrum Spectrum::powerLaw(double bm, double m, double fmin, double fmax, double length)
 {
     requirePositive("power law b_m", bm);
     requireFinite("power law m", m);
-    requirePositive("power law fmin", fmin);
-    requirePositive("power law fmax", fmax);
-    if (!(fmax >= fmin)) {
-        throw ParameterError("power law fmax", "must not be below fmin");
-    }
-    const double L = length > 0.0 ? requirePositive("power law length", length) : 1.0 / fmin;
-    // Levels i/L inside [fmin, fmax]; the small slack keeps i = fmin L when it is an integer.
-    const auto i0 = static_cast<long long>(std::ceil(fmin * L * (1.0 - 1e-12)));
-    const auto i1 = static_cast<long long>(std::floor(fmax * L * (1.0 + 1e-12)));
-    if (i1 < std::max(1LL, i0)) {
-        throw ParameterError("power law", "no level i/L lies between fmin and fmax");
-    }
-    std::vector<double> f;
-    std::vector<double> beta;
-    for (long long i = std::max(1LL, i0); i <= i1; ++i) {
-        const double fi = static_cast<double>(i) / L;
-        f.push_back(fi);
-        beta.push_back(bm * std::pow(fi, -m));
-    }
-    return Spectrum(std::move(f), std::move(beta), L, "power law");
+    return powerLawLevels("power law", bm, m, fmin, fmax, length);
 }
 
 Spectrum Spectrum::fractal(double D, double G, double fmin, double fmax, double length)
@@ -122,15 +160,14 @@ Spectrum Spectrum::fractal(double D, double G, double fmin, double fmax, double 
     if (!(D > 1.0 && D < 2.0)) {
         throw ParameterError("fractal dimension D", "must lie strictly between 1 and 2");
     }
-    requirePositive("fractal roughness G", G);
-    const double L = length > 0.0 ? requirePositive("fractal length", length) : 1.0 / fmin;
+    limits::requireInRange("fractal roughness G", G, 1e-300, limits::maximumHeight, "m");
+    requirePositive("fractal fmin", fmin);
+    const double L = limits::requireLength("fractal length", length > 0.0 ? length : 1.0 / fmin);
     // beta^2 = 2 S(f) df with df = 1/L and S(f) = G^(2(D-1)) / (2 ln(gamma) f^(5-2D)):
     // a power law beta = b_m f^-m with m = (5-2D)/2, b_m = sqrt(G^(2(D-1)) / (ln(gamma) L)).
     const double lnGamma = std::log(1.5);
-    const double bm = std::sqrt(std::pow(G, 2.0 * (D - 1.0)) / (lnGamma * L));
-    Spectrum s = powerLaw(bm, 0.5 * (5.0 - 2.0 * D), fmin, fmax, L);
-    s.source_ = "fractal spectrum";
-    return s;
+    const double bm = std::exp((D - 1.0) * std::log(G) - 0.5 * std::log(lnGamma * L));
+    return powerLawLevels("fractal spectrum", bm, 0.5 * (5.0 - 2.0 * D), fmin, fmax, L);
 }
 
 double Spectrum::variance() const
@@ -195,18 +232,34 @@ std::vector<Bin> binsOf(const Spectrum& s)
     return bins;
 }
 
-// Power of `bins` falling in [lo, hi).
-double powerIn(const std::vector<Bin>& bins, double lo, double hi)
-{
-    double p = 0.0;
-    for (const Bin& b : bins) {
-        const double overlap = std::min(hi, b.hi) - std::max(lo, b.lo);
-        if (overlap > 0.0 && b.hi > b.lo) {
-            p += b.power * overlap / (b.hi - b.lo);
+// The power of sorted, contiguous bins falling into intervals asked for in increasing,
+// non-overlapping order: one sweep over the bins for all intervals, so re-binning n levels
+// onto K costs O(n + K), not O(n K).
+class BinSweep {
+public:
+    explicit BinSweep(const std::vector<Bin>& bins) : bins_(bins) {}
+
+    // Power in [lo, hi).
+    double take(double lo, double hi)
+    {
+        while (next_ < bins_.size() && bins_[next_].hi <= lo) {
+            ++next_; // wholly below this interval, hence below every later one
         }
+        double p = 0.0;
+        for (std::size_t k = next_; k < bins_.size() && bins_[k].lo < hi; ++k) {
+            const Bin& b = bins_[k];
+            const double overlap = std::min(hi, b.hi) - std::max(lo, b.lo);
+            if (overlap > 0.0 && b.hi > b.lo) {
+                p += b.power * overlap / (b.hi - b.lo);
+            }
+        }
+        return p;
     }
-    return p;
-}
+
+private:
+    const std::vector<Bin>& bins_;
+    std::size_t next_ = 0;
+};
 
 bool sameGrid(const Spectrum& a, const Spectrum& b)
 {
@@ -239,8 +292,16 @@ Spectrum Spectrum::combine(const Spectrum& a, const Spectrum& b)
     const std::vector<Bin> ba = binsOf(a);
     const std::vector<Bin> bb = binsOf(b);
     const double top = std::max(ba.back().hi, bb.back().hi);
+    // The grid's size before it is built: levels k/L up to the highest frequency either holds.
+    limits::requireLevelCount("the combination " + source, top * L + 1.0,
+                              "the longer scan sets the level spacing 1/L and the finer one the highest "
+                              "level; give two surfaces of similar length and resolution");
     std::vector<double> f;
     std::vector<double> beta;
+    f.reserve(static_cast<std::size_t>(top * L + 1.0));
+    beta.reserve(f.capacity());
+    BinSweep sa(ba);
+    BinSweep sb(bb);
     for (long long k = 1;; ++k) {
         const double fk = static_cast<double>(k) / L;
         const double lo = k == 1 ? 0.0 : fk - 0.5 / L;
@@ -248,7 +309,7 @@ Spectrum Spectrum::combine(const Spectrum& a, const Spectrum& b)
         if (lo >= top) {
             break;
         }
-        const double p = powerIn(ba, lo, hi) + powerIn(bb, lo, hi);
+        const double p = sa.take(lo, hi) + sb.take(lo, hi);
         f.push_back(fk);
         beta.push_back(std::sqrt(2.0 * p));
     }

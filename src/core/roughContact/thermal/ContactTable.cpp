@@ -1,6 +1,7 @@
 #include "roughContact/thermal/ContactTable.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 
 #include <algorithm>
@@ -33,11 +34,14 @@ constexpr double conductanceCeiling = 1e9;
 // loading path; +infinity when even 1e3 does not reach it.
 double completeContactLoad(const MultiscaleModel& model)
 {
-    double hi = 1e3;
+    double hi = limits::maximumLoad;
     if (model.areaFraction(hi) < 1.0) {
         return std::numeric_limits<double>::infinity();
     }
-    double lo = 1e-30;
+    double lo = limits::minimumLoad;
+    if (!(model.areaFraction(lo) < 1.0)) {
+        return lo;
+    }
     while (hi / lo > 1.0 + 1e-10) {
         const double mid = std::sqrt(lo * hi);
         (model.areaFraction(mid) < 1.0 ? lo : hi) = mid;
@@ -51,8 +55,10 @@ ContactTable::ContactTable(const MultiscaleModel& model, double minPressure, dou
                            std::size_t pointsPerDecade)
     : Eprime_(model.reducedModulus())
 {
-    requirePositive("minimum pressure", minPressure);
-    requirePositive("maximum pressure", maxPressure);
+    limits::requireInRange("minimum pressure", minPressure, limits::minimumLoad * Eprime_,
+                           limits::maximumLoad * Eprime_, "Pa");
+    limits::requireInRange("maximum pressure", maxPressure, limits::minimumLoad * Eprime_,
+                           limits::maximumLoad * Eprime_, "Pa");
     if (!(maxPressure > minPressure)) {
         throw ParameterError("maximum pressure", "must exceed the minimum pressure");
     }
@@ -62,9 +68,12 @@ ContactTable::ContactTable(const MultiscaleModel& model, double minPressure, dou
     pComplete_ = completeContactLoad(model) * Eprime_;
     if (!(minPressure < pComplete_)) {
         std::ostringstream os;
-        os << "the minimum pressure " << minPressure << " Pa is beyond complete contact (" << pComplete_
-           << " Pa): the table would be empty";
-        throw ParameterError("minimum pressure", os.str());
+        os << "the surface is in complete contact (A_r = A_n) from " << pComplete_
+           << " Pa on, at or below the table's lowest pressure " << minPressure
+           << " Pa (minPressure; by default 1e-9 E'): at every pressure the table would cover there is no "
+              "contact resistance; the surface is too smooth for these materials (check its units), or "
+              "lower minPressure";
+        throw ParameterError("contact table", os.str());
     }
     // The direct solve at one pressure: {A_r/A_n, h_c/k_s}.
     const auto solve = [&](double P) {

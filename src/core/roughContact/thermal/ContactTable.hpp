@@ -41,7 +41,7 @@ public:
     Values values(double P) const;
 
     /// The lowest pressure [Pa] of complete contact (A_r = A_n), to 1e-10 relative; +infinity
-    /// when the model does not reach it below 1e3 E'.
+    /// when the model does not reach it below limits::maximumLoad E' (Limits.hpp).
     double completeContactPressure() const noexcept { return pComplete_; }
     /// The table's points: pressures [Pa] and the values there.
     const std::vector<double>& pressures() const noexcept { return p_; }

@@ -1,0 +1,70 @@
+#include "roughContact/Limits.hpp"
+
+#include "roughContact/Error.hpp"
+#include "roughContact/surface/Spectrum.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace roughContact {
+namespace limits {
+
+double requireInRange(const std::string& what, double value, double lo, double hi, const char* unit)
+{
+    if (!std::isfinite(value) || value < lo || value > hi) {
+        const std::string u = *unit != '\0' ? std::string(" ") + unit : std::string();
+        std::ostringstream os;
+        os << "must lie within [" << lo << u << ", " << hi << u << "], got " << value << u;
+        throw ParameterError(what, os.str());
+    }
+    return value;
+}
+
+double requireLength(const std::string& what, double value)
+{
+    return requireInRange(what, value, minimumLength, maximumLength, "m");
+}
+
+void requireLevelCount(const std::string& what, double levels, const std::string& hint)
+{
+    if (levels > static_cast<double>(maximumLevels)) {
+        std::ostringstream os;
+        os.precision(3);
+        os << "would have " << levels << " frequency levels, more than the cap of " << maximumLevels
+           << " (about " << levels * bytesPerLevel / 1e6 << " MB and a pressure table of minutes; the cap "
+           << "allows " << maximumLevels * bytesPerLevel / 1e6 << " MB)";
+        if (!hint.empty()) {
+            os << "; " << hint;
+        }
+        throw ParameterError(what, os.str());
+    }
+}
+
+void requireRoughness(const Spectrum& surface)
+{
+    const std::string what = "surface " + (surface.source().empty() ? std::string("(spectrum)") : surface.source());
+    const double rms = std::sqrt(surface.profileVariance());
+    if (rms == 0.0) {
+        throw ParameterError(what, "has zero roughness (every amplitude is 0): perfectly smooth surfaces "
+                                   "conform and are in complete contact at any load; there is no contact "
+                                   "resistance to model");
+    }
+    if (rms < minimumRoughness) {
+        std::ostringstream os;
+        os << "rms height " << rms << " m is below " << minimumRoughness
+           << " m (a femtometre): not a physical roughness; check the units";
+        throw ParameterError(what, os.str());
+    }
+    for (std::size_t i = 0; i < surface.size(); ++i) {
+        if (surface.amplitude(i) * surface.frequency(i) > flatSlope) {
+            return;
+        }
+    }
+    std::ostringstream os;
+    os << "every level is flat (slope beta f <= " << flatSlope
+       << "): the surfaces are in complete contact at any load the models accept";
+    throw ParameterError(what, os.str());
+}
+
+} // namespace limits
+} // namespace roughContact
