@@ -32,7 +32,7 @@ struct Options {
     std::vector<std::string> spectra;
     std::vector<double> powerLaw; // b_m, m, fmin, fmax
     std::vector<double> fractal;  // D, G, fmin, fmax
-    std::string units;
+    std::optional<std::string> units;
     std::optional<double> dx;
     std::optional<double> length;
     std::size_t stride = 1;
@@ -41,7 +41,7 @@ struct Options {
     std::vector<double> nu;
     std::optional<double> Eprime;
     std::vector<double> Sy;
-    std::vector<double> loads;
+    std::vector<std::string> loads; // as given: "1e-5,1e-4" (split here, so "" is an error)
     std::string loadRange;
     std::optional<double> D;
     std::optional<double> G;
@@ -54,6 +54,10 @@ struct Options {
 std::vector<double> splitNumbers(const std::string& text, char sep, const std::string& option)
 {
     std::vector<double> out;
+    if (text.empty() || text.back() == sep) {
+        throw ParameterError(option, "'" + text + "' has an empty item; give numbers separated by '" +
+                                         std::string(1, sep) + "'");
+    }
     std::stringstream ss(text);
     std::string item;
     while (std::getline(ss, item, sep)) {
@@ -77,9 +81,11 @@ std::vector<double> loadsOf(const Options& o)
         const double lo = r[0];
         const double hi = r[1];
         const double n = r[2];
-        if (!(lo > 0.0) || !(hi >= lo) || n < 1 || n != std::floor(n) || n > 1e7) {
-            throw ParameterError("--load-range", "needs 0 < MIN <= MAX and a whole N >= 1");
+        if (!(lo > 0.0) || !(hi >= lo) || n < 1 || n != std::floor(n) || n > 1e6) {
+            throw ParameterError("--load-range", "needs 0 < MIN <= MAX and a whole N from 1 to 1000000");
         }
+        checkLoad(lo); // both ends within the accepted loads before any row is computed
+        checkLoad(hi);
         std::vector<double> out;
         const auto count = static_cast<std::size_t>(n);
         for (std::size_t i = 0; i < count; ++i) {
@@ -87,10 +93,13 @@ std::vector<double> loadsOf(const Options& o)
         }
         return out;
     }
-    for (double l : o.loads) {
-        checkLoad(l);
+    std::vector<double> out;
+    for (const std::string& text : o.loads) {
+        for (double l : splitNumbers(text, ',', "--loads")) {
+            out.push_back(checkLoad(l));
+        }
     }
-    return o.loads;
+    return out;
 }
 
 Spectrum surfaceOf(const Options& o)
@@ -107,8 +116,8 @@ Spectrum surfaceOf(const Options& o)
     }
     if (!o.profiles.empty()) {
         ProfileReadOptions ro;
-        if (!o.units.empty()) {
-            ro.units = parseLengthUnit(o.units);
+        if (o.units) {
+            ro.units = parseLengthUnit(*o.units); // "" is an unknown unit, not the default
         }
         ro.spacing = o.dx;
         std::optional<Spectrum> total;
@@ -211,21 +220,24 @@ int run(const Options& o)
     const std::vector<double> loads = loadsOf(o);
     const auto model = makeContactModel(o.model, spectrum, materials, mo);
 
-    std::cout.precision(10);
+    // The whole CSV is made before any of it is printed: an error half way leaves stdout empty.
+    std::ostringstream out;
+    out.precision(10);
     if (o.levels) {
         const auto* ms = dynamic_cast<const MultiscaleModel*>(model.get());
         if (ms == nullptr) {
             throw ParameterError("--levels", "the per-level trace exists for the multi-scale models only");
         }
         const double An = spectrum.nominalArea();
-        std::cout << "load,level,frequency,amplitude,eta,radius,asperities,asperity_force,area,complete\n";
+        out << "load,level,frequency,amplitude,eta,radius,asperities,asperity_force,area,complete\n";
         for (double load : loads) {
             for (const LevelState& s : ms->trace(load)) {
-                std::cout << load << ',' << s.index + 1 << ',' << s.frequency << ',' << s.amplitude << ','
+                out << load << ',' << s.index + 1 << ',' << s.frequency << ',' << s.amplitude << ','
                           << s.density << ',' << s.radius << ',' << s.asperities << ',' << s.asperityForce
-                          << ',' << s.area / An << ',' << (s.complete ? 1 : 0) << '\n';
+                    << ',' << s.area / An << ',' << (s.complete ? 1 : 0) << '\n';
             }
         }
+        std::cout << out.str();
         return 0;
     }
     const auto* ms = dynamic_cast<const MultiscaleModel*>(model.get());
@@ -233,18 +245,19 @@ int run(const Options& o)
         throw ParameterError("--conductance",
                              "the constriction conductance exists for the multi-scale models only");
     }
-    std::cout << "load,area,pressure" << (o.conductance ? ",h_per_k" : "") << '\n';
+    out << "load,area,pressure" << (o.conductance ? ",h_per_k" : "") << '\n';
     for (double load : loads) {
         const double a = model->areaFraction(load);
-        std::cout << load << ',' << a << ',';
+        out << load << ',' << a << ',';
         if (a > 0.0) {
-            std::cout << load / a; // F/(A_r E'), seed Eq. 34
+            out << load / a; // F/(A_r E'), seed Eq. 34
         }
         if (o.conductance) {
-            std::cout << ',' << constrictionConductancePerConductivity(*ms, load); // inf at complete contact
+            out << ',' << constrictionConductancePerConductivity(*ms, load); // inf at complete contact
         }
-        std::cout << '\n';
+        out << '\n';
     }
+    std::cout << out.str();
     return 0;
 }
 
@@ -294,7 +307,7 @@ int main(int argc, char** argv)
                    "(default 1/lowest frequency); A_n = L^2");
     app.add_option("--stride", o.stride,
                    "use every K-th profile sample (sampling interval K dx; seed Fig. 8)")
-        ->check(CLI::PositiveNumber);
+        ->check(CLI::Range(std::size_t(1), std::size_t(1000000000)));
 
     app.add_option("--model", o.model,
                    "hertz | jgh | jghConsistent | jacksonGreen | truncation (multi-scale, seed §2) | "
@@ -314,7 +327,7 @@ int main(int argc, char** argv)
         ->delimiter(',')
         ->expected(1, 2);
 
-    auto* loads = app.add_option("--loads", o.loads, "loads F/(A_n E'), comma separated")->delimiter(',');
+    auto* loads = app.add_option("--loads", o.loads, "loads F/(A_n E'), comma separated: 0, or 1e-30 to 1e4");
     auto* range = app.add_option("--load-range", o.loadRange, "MIN:MAX:N, N loads log spaced");
     loads->excludes(range);
 
@@ -334,7 +347,8 @@ int main(int argc, char** argv)
             throw CLI::RequiredError("--loads or --load-range");
         }
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        // CLI11 prints the message (or the help); its own codes (104-114) become the README's 1.
+        return app.exit(e) == 0 ? 0 : 1;
     }
     try {
         return run(o);

@@ -71,12 +71,13 @@ int column(const Csv& csv, const std::string& name)
     return 0;
 }
 
-// An error: non-zero exit, nothing on stdout, a message on stderr containing each of `needles`.
+// An error: exit status 1 (the README's), nothing on stdout, a message on stderr containing each
+// of `needles`.
 void expectError(const std::string& args, const std::vector<std::string>& needles)
 {
     SCOPED_TRACE("multiscaleContact " + args);
     const CommandResult r = run(args);
-    EXPECT_NE(r.status, 0);
+    EXPECT_EQ(r.status, 1);
     EXPECT_EQ(r.out, "") << "an error must not print a partial CSV";
     for (const std::string& n : needles) {
         EXPECT_NE(r.err.find(n), std::string::npos) << "stderr lacks '" << n << "':\n" << r.err;
@@ -242,4 +243,34 @@ TEST(Cli, ErrorPaths)
     const auto shortFile = dir.write("short.csv", "0,1\n1,2\n2,3\n");
     expectError("--profile '" + shortFile.string() + "' --model hertz --Eprime 2e11 --loads 1e-4",
                 {shortFile.string(), "8"});
+}
+
+TEST(Cli, BadInputFoundByAHostileUser)
+{
+    // Each was accepted, printed nonsense, or exited with CLI11's own codes (104-114).
+    const std::string p = "--profile '" + standin + "'";
+    const std::string hertz = " --model hertz --Eprime 2e11";
+    expectError(p + hertz + " --loads ''", {"--loads", "empty item"}); // was: load 0
+    expectError(p + hertz + " --loads 1e-4,", {"--loads", "empty item"});
+    expectError(p + hertz + " --loads 1e-4 --units ''", {"unknown unit ''"}); // was: accepted
+    expectError(p + hertz + " --loads 1e-4 --stride 0", {"--stride", "1 to 1000000000"}); // was: 300 digits
+    expectError(p + hertz + " --loads 1e-4 --no-such-option", {"--no-such-option"});    // was: exit 109
+    expectError(p + " --model nosuchmodel --Eprime 2e11 --loads 1e-4", {"nosuchmodel"}); // was: exit 105
+    expectError("--fractal 1.5,1e-9,10,1" + hertz + " --loads 1e-4", {"fractal"}); // was: "power law"
+    // A_n out of range: was "-nan" and exit 0, or area 0.
+    for (const char* dx : {"1e-300", "1e-150", "1e300"}) {
+        TempDir dir;
+        const auto z = dir.write("z.csv", "1\n2\n3\n2\n1\n2\n3\n4\n3\n2\n");
+        expectError("--profile '" + z.string() + "' --dx " + dx + hertz + " --loads 1e-4", {"spacing", "must lie within"});
+    }
+    expectError("--power-law 1e-8,1,1,10 --length 1e300" + hertz + " --loads 1e-4", {"length"});
+    // Rows were printed before the failing load: now nothing reaches stdout.
+    expectError(p + hertz + " --load-range 1e-300:1e300:5", {"load", "1e-300"});
+    expectError(p + hertz + " --loads 1e-4,1e-3,1e300", {"load", "1e+300"});
+    // A surface too large for the cap: the count and the memory in the message.
+    expectError("--power-law 1e-8,1,1,1e9" + hertz + " --loads 1e-4", {"1e+09 frequency levels", "MB"});
+    // Materials outside the fitted range: was SIGFPE under OpenFOAM, area 0 here.
+    expectError(p + " --model jacksonGreen --E 2e11 --nu 0.3 --Sy 1e65 --loads 1e-4", {"S_y/E"});
+    // Help is not an error.
+    EXPECT_EQ(run("--help").status, 0);
 }
