@@ -53,8 +53,7 @@ Spectrum withAmplitude(const Spectrum& s, std::size_t level, double amplitude)
 }
 
 // Expects `f` to throw E whose message contains `words`.
-template <class E, class F>
-void expectError(F&& f, const std::string& words)
+template <class E, class F> void expectError(F&& f, const std::string& words)
 {
     try {
         f();
@@ -106,7 +105,8 @@ TEST(ExtremeInputs, powerLawOfABillionLevelsIsRefused)
     // memory. The message says how many levels and what to change.
     expectError<ParameterError>([] { Spectrum::powerLaw(1e-8, 1.0, 1.0, 1e9); }, "1e+09 frequency levels");
     expectError<ParameterError>([] { Spectrum::powerLaw(1e-8, 1.0, 1.0, 1e9); }, "narrow [fmin, fmax]");
-    EXPECT_EQ(Spectrum::powerLaw(1e-8, 1.0, 1.0, double(limits::maximumLevels)).size(), limits::maximumLevels);
+    EXPECT_EQ(Spectrum::powerLaw(1e-8, 1.0, 1.0, double(limits::maximumLevels)).size(),
+              limits::maximumLevels);
 }
 
 TEST(ExtremeInputs, profileCombinedWithALongSpectrumIsRefused)
@@ -211,17 +211,31 @@ TEST(ExtremeInputs, materialsOutOfRangeAreRefused)
     // Was SIGFPE in the solver: E 1e7 with S_y 0.4e9 (B = 0.14 exp(23 S_y/E) overflows once
     // S_y/E > 30.9), E 1e300, S_y 1e100; S_y 1e65 gave area 0 at a positive load.
     expectError<ParameterError>([] { ContactMaterials::againstRigidFlat({1e7, 0.3, 0.4e9}); }, "S_y/E = ");
-    expectError<ParameterError>([] { ContactMaterials::againstRigidFlat({1e300, 0.3, 0.4e9}); },
-                                "Young's modulus E: must lie within");
-    expectError<ParameterError>([] { ContactMaterials::againstRigidFlat({2e11, 0.3, 1e100}); }, "yield strength");
-    expectError<ParameterError>([] { ContactMaterials::againstRigidFlat({2e11, 0.3, 1e65}); }, "yield strength");
-    expectError<ParameterError>([] { ContactMaterials::pair({2e11, 0.3, 0.2e9}, {2e11, 0.3, 1e-3}); },
-                                "second material yield strength");
+    expectError<ParameterError>(
+        [] {
+            ContactMaterials::againstRigidFlat({1e300, 0.3, 0.4e9});
+        },
+        "Young's modulus E: must lie within");
+    expectError<ParameterError>(
+        [] {
+            ContactMaterials::againstRigidFlat({2e11, 0.3, 1e100});
+        },
+        "yield strength");
+    expectError<ParameterError>(
+        [] {
+            ContactMaterials::againstRigidFlat({2e11, 0.3, 1e65});
+        },
+        "yield strength");
+    expectError<ParameterError>(
+        [] {
+            ContactMaterials::pair({2e11, 0.3, 0.2e9}, {2e11, 0.3, 1e-3});
+        },
+        "second material yield strength");
     expectError<ParameterError>([] { ContactMaterials::fromReducedModulus(1e300, 0.3, 0.2e9); },
                                 "reduced modulus");
     // The edges themselves are accepted.
-    EXPECT_NO_THROW(ContactMaterials::againstRigidFlat({limits::maximumModulus / 2, 0.3,
-                                                        limits::maximumYieldStrain * limits::maximumModulus / 2}));
+    EXPECT_NO_THROW(ContactMaterials::againstRigidFlat(
+        {limits::maximumModulus / 2, 0.3, limits::maximumYieldStrain * limits::maximumModulus / 2}));
 }
 
 TEST(ExtremeInputs, loadsOutOfRangeAreRefused)
@@ -278,7 +292,8 @@ TEST(ExtremeInputs, aLevelOfTinyAmplitudeCountsAsZero)
             const auto tiny = makeContactModel(name, withAmplitude(s, 5, amplitude), materials);
             const auto zero = makeContactModel(name, withAmplitude(s, 5, 0.0), materials);
             for (double load : {1e-30, 1e-9, 1e-6, 1e-3}) {
-                EXPECT_EQ(tiny->areaFraction(load), zero->areaFraction(load)) << amplitude << " load " << load;
+                EXPECT_EQ(tiny->areaFraction(load), zero->areaFraction(load))
+                    << amplitude << " load " << load;
                 expectConsistent(*tiny, load);
             }
         }
@@ -323,7 +338,7 @@ TEST(ExtremeInputs, everyModelIsFiniteAndConsistentAtTheCornersOfTheAcceptedRang
     // never a trap (overflow, division by zero, NaN), which would end this test.
     const std::vector<Spectrum> surfaces = {
         Spectrum::fromProfile(standinProfile()), Spectrum::fromProfile(scaled(1e-3)),
-        Spectrum::fromProfile(scaled(1e3)), Spectrum::powerLaw(1e-8, 30.0, 1.0, 1e3),
+        Spectrum::fromProfile(scaled(1e3)),      Spectrum::powerLaw(1e-8, 30.0, 1.0, 1e3),
         Spectrum::fractal(1.2, 1e-12, 1e2, 1e7), Spectrum::fractal(1.9, 1e-9, 1e2, 1e7)};
     const std::vector<Material> materials = {
         {limits::minimumModulus, 0.49, 0.05 * limits::minimumModulus},

@@ -42,7 +42,8 @@ void requireLevelCount(const std::string& what, double levels, const std::string
 
 void requireRoughness(const Spectrum& surface)
 {
-    const std::string what = "surface " + (surface.source().empty() ? std::string("(spectrum)") : surface.source());
+    const std::string what =
+        "surface " + (surface.source().empty() ? std::string("(spectrum)") : surface.source());
     const double rms = std::sqrt(surface.profileVariance());
     if (rms == 0.0) {
         throw ParameterError(what, "has zero roughness (every amplitude is 0): perfectly smooth surfaces "
