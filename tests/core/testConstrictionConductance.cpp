@@ -283,3 +283,33 @@ TEST(ContactTable, BucketLookupPicksTheSameIntervalAsABinarySearch)
         EXPECT_GT(compared, 20000U);
     }
 }
+
+TEST(ContactTable, ReachesCompleteContactAndSaysWhatEndedIt)
+{
+    // Was: the table stopped at the last grid point below complete contact, up to one grid step
+    // (6 %) short of it; the boundary condition then warned "raise maxPressure", which could
+    // not help (and with maxPressure 1e12 the grid's last point fell further short).
+    const Spectrum s = standin();
+    for (const std::string& name : {std::string("jacksonGreen"), std::string("truncation"), std::string("hertz")}) {
+        SCOPED_TRACE(name);
+        const auto m = multiscale(name, s);
+        const double Ep = steel.reducedModulus();
+        for (double maxP : {Ep, 1e12, 1e3 * Ep}) {
+            const ContactTable t(*m, 1e-9 * Ep, maxP);
+            const double complete = t.completeContactPressure();
+            ASSERT_TRUE(std::isfinite(complete));
+            if (t.end() == ContactTable::End::completeContact) {
+                // The last point is within 1e-6 of complete contact (the gap is closed in steps).
+                EXPECT_GE(t.pressures().back(), complete * (1.0 - 1.0001e-6)) << maxP;
+            } else {
+                ASSERT_EQ(t.end(), ContactTable::End::conductanceCeiling) << maxP;
+                EXPECT_GT(t.conductancesPerConductivity().back(), 1e9);
+            }
+            EXPECT_LT(t.pressures().back(), complete);
+        }
+        // A maximum below complete contact ends the table there, and says so.
+        const ContactTable shortTable(*m, 1e-9 * Ep, 1e-4 * Ep);
+        EXPECT_EQ(shortTable.end(), ContactTable::End::maxPressure);
+        EXPECT_NEAR(shortTable.pressures().back(), 1e-4 * Ep, 1e-9 * Ep);
+    }
+}

@@ -92,14 +92,31 @@ ContactTable::ContactTable(const MultiscaleModel& model, double minPressure, dou
     const double decades = std::log10(maxPressure / minPressure);
     const auto n = static_cast<std::size_t>(std::ceil(decades * double(pointsPerDecade))) + 1;
     std::vector<Sample> samples;
+    end_ = End::maxPressure;
     for (std::size_t k = 0; k < n; ++k) {
         const double P = minPressure * std::pow(maxPressure / minPressure, double(k) / double(n - 1));
         if (!(P < pComplete_)) {
+            end_ = End::completeContact;
             break;
         }
         samples.push_back(solve(P));
         if (samples.back().h > conductanceCeiling) {
+            end_ = End::conductanceCeiling;
             break;
+        }
+    }
+    // Complete contact cut the grid: close the gap to it (up to 1e-6 relative), which would
+    // otherwise hold h at the last grid point's value over up to one grid step (6 % of P).
+    if (end_ == End::completeContact && !samples.empty()) {
+        for (double gap = 0.1; gap >= 1e-6; gap *= 0.1) {
+            const double P = pComplete_ * (1.0 - gap);
+            if (P > samples.back().P) {
+                samples.push_back(solve(P));
+                if (samples.back().h > conductanceCeiling) {
+                    end_ = End::conductanceCeiling;
+                    break;
+                }
+            }
         }
     }
     // 2. Adaptive refinement: bisect (in log P) every interval whose log-log interpolation at

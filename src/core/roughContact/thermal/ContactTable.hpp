@@ -49,6 +49,13 @@ public:
     const std::vector<double>& conductancesPerConductivity() const noexcept { return h_; }
     double reducedModulus() const noexcept { return Eprime_; }
 
+    /// What ended the table: the maximum pressure asked for (then the values beyond it, up to
+    /// complete contact, are held at the last point's: a caller should say so and suggest a
+    /// higher maximum), complete contact (the table reaches to within 1e-6 of it), or h_c/k_s
+    /// beyond 1e9 1/m (perfect contact for any mesh; nothing to gain beyond).
+    enum class End { maxPressure, completeContact, conductanceCeiling };
+    End end() const noexcept { return end_; }
+
 private:
     /// The interval [j - 1, j] of log P and the position t in it; `end`: at or beyond the last
     /// point, where its values hold.
@@ -62,6 +69,7 @@ private:
 
     double Eprime_;
     double pComplete_;
+    End end_ = End::maxPressure;
     std::vector<double> p_;
     std::vector<double> logP_;
     /// An index over log P in equal buckets (as many as points): bucketFirst_[k] is the first
