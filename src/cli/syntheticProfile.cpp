@@ -21,9 +21,13 @@ int main(int argc, char** argv)
     app.add_option("--rms", spec.rms, "rms height [m]")->capture_default_str();
     app.add_option("--D", spec.D, "fractal dimension setting the PSD slope 5-2D")->capture_default_str();
     app.add_option("--seed", spec.seed, "random seed (std::mt19937_64)")->capture_default_str();
-    CLI11_PARSE(app, argc, argv);
     try {
-        const Profile p = generateSyntheticProfile(spec);
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : 1; // CLI11's own codes (104-114) are errors: 1
+    }
+    try {
+        const Profile p = generateSyntheticProfile(spec); // every check before the first line out
         std::cout << "# syntheticProfile --points " << spec.points << " --dx " << spec.spacing << " --rms "
                   << spec.rms << " --D " << spec.D << " --seed " << spec.seed << "\nx,z\n";
         std::cout.precision(17);

@@ -1,6 +1,7 @@
 #include "roughContact/surface/SyntheticProfile.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 
 #include <fftw3.h>
 
@@ -35,8 +36,15 @@ Profile generateSyntheticProfile(const SyntheticProfileSpec& spec)
     if (spec.points < Profile::minimumSize) {
         throw ParameterError("points", "a profile needs at least 8 points");
     }
-    requirePositive("spacing", spec.spacing);
-    requirePositive("rms", spec.rms);
+    // Checked before anything is allocated: the longest profile the models accept.
+    const std::size_t most = 2 * limits::maximumLevels + 1;
+    if (spec.points > most) {
+        throw ParameterError("points", "at most " + std::to_string(most) + " (the longest profile the models "
+                                                                          "accept: limits::maximumLevels)");
+    }
+    limits::requireLength("spacing", spec.spacing);
+    limits::requireLength("scan length points x spacing", spec.spacing * static_cast<double>(spec.points));
+    limits::requireInRange("rms", spec.rms, limits::minimumRoughness, limits::maximumHeight, "m");
     requireFinite("D", spec.D);
     if (!(spec.D > 1.0 && spec.D < 2.0)) {
         throw ParameterError("D", "must lie strictly between 1 and 2");
