@@ -5,6 +5,8 @@
 #include "PtrList.H"
 
 #include "roughContact/io/Units.hpp"
+#include "roughContact/surface/Spectrum.hpp"
+#include "roughContact/surface/SurfaceChecksum.hpp"
 
 #include <cmath>
 #include <map>
@@ -182,7 +184,18 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
         Info<< "thermalContactResistance: building the contact table for '"
             << name << "' (" << who.c_str() << ")" << endl;
         auto iface = std::make_shared<const roughContact::ContactInterface>(spec);
-        Info<< "    " << iface->summary().c_str() << endl;
+        Info<< "    " << iface->summary().c_str() << nl;
+        // What this run uses, so that a run can be traced to its surface (the
+        // condition writes the checksum into its field file, too).
+        const roughContact::Spectrum& surface = iface->surface();
+        Info<< "    surface checksum "
+            << roughContact::surfaceChecksumHex(surface).c_str() << ", "
+            << label(surface.size()) << " levels, rms height "
+            << std::sqrt(surface.profileVariance()) << " m, L = "
+            << surface.length() << " m" << nl
+            << "    " << dictFile << " is read once: changes to it"
+            << " (and to the surface files) during the run are not used"
+            << " until the run is restarted" << endl;
         cache.emplace(key, iface);
         return iface;
     }
