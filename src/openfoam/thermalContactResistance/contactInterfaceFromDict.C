@@ -82,9 +82,24 @@ roughContact::SurfaceSpec readSurface
             << "' (profile, spectrum, powerLaw or fractal)"
             << exit(FatalIOError);
     }
-    scalar L;
-    if (d.readIfPresent("length", L))
+    if (d.found("length"))
     {
+        if (s.kind == roughContact::SurfaceSpec::Kind::profile)
+        {
+            FatalIOErrorInFunction(d)
+                << "entry 'length' has no meaning for a surface of type"
+                << " profile: a profile's length is its number of samples"
+                << " times their spacing. 'length' is the scan length of a"
+                << " spectrum, powerLaw or fractal surface; remove it"
+                << exit(FatalIOError);
+        }
+        const scalar L = d.get<scalar>("length");
+        if (!(L > 0) || !std::isfinite(L))
+        {
+            FatalIOErrorInFunction(d)
+                << "entry 'length' must be a finite scan length > 0 [m],"
+                << " got " << L << exit(FatalIOError);
+        }
         s.length = L;
     }
     return s;

@@ -225,6 +225,30 @@ void Foam::thermalContactResistanceFvPatchScalarField::checkContactUnchanged()
 }
 
 
+void Foam::thermalContactResistanceFvPatchScalarField::checkKappaField() const
+{
+    if (method_ != mtLookup)
+    {
+        return;
+    }
+    const fvMesh& mesh = patch().boundaryMesh().mesh();
+    if
+    (
+        !mesh.foundObject<volScalarField>(kappaName_)
+     && !mesh.foundObject<volSymmTensorField>(kappaName_)
+    )
+    {
+        RuntimeIOError
+            << who().c_str() << ": entry 'kappa " << kappaName_ << "'"
+            << " (kappaMethod lookup): region " << mesh.name() << " has no"
+            << " volScalarField or volSymmTensorField '" << kappaName_
+            << "' (volScalarFields: "
+            << flatOutput(mesh.sortedNames<volScalarField>()) << ")"
+            << exit(FatalIOError);
+    }
+}
+
+
 void Foam::thermalContactResistanceFvPatchScalarField::checkNeighbour
 (
     const thermalContactResistanceFvPatchScalarField& nbr
@@ -756,6 +780,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
         checkNeighbour(nbrField);
     }
 
+    checkKappaField();
     const scalarField myKappa(kappa(*this));
     const scalarField myKDelta(myKappa*patch().deltaCoeffs());
     scalarField& f = this->valueFraction();
@@ -776,6 +801,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
         // mesh does not change) its deltaCoeffs.
         checkContactUnchanged();
         vectorField nbrData(nbrPatch.size());
+        nbrField.checkKappaField();
         {
             const scalarField nbrT(nbrField.patchInternalField());
             const scalarField nbrK(nbrField.kappa(nbrField));
@@ -799,7 +825,10 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
         const scalarField nbrKDelta(nbrKappa*nbrDeltaCoeffs_);
 
         // Both sides' pressures, averaged: both sides get the same h.
-        contactPressure_ = 0.5*(interfacePressure() + nbrData.component(vector::Z));
+        // Each half first: 0.5*(a + b) overflows for pressures near the
+        // largest double (a floating-point trap), 0.5*a + 0.5*b does not.
+        contactPressure_ =
+            0.5*interfacePressure() + 0.5*nbrData.component(vector::Z);
 
         try
         {
@@ -818,6 +847,14 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
                 << patch().Cf()[facei] << ": nominal pressure "
                 << contactPressure_[facei] << " Pa (mean of both sides), kappa "
                 << myKappa[facei] << " and " << nbrKappa[facei] << " W/m/K: "
+                << e.what() << exit(FatalIOError);
+        }
+        catch (const std::exception& e)
+        {
+            RuntimeIOError
+                << who().c_str() << ": entry 'contact " << contactName_
+                << "' (" << db().time().constant()/"thermalContactProperties"
+                << "): the contact conductance of the faces failed: "
                 << e.what() << exit(FatalIOError);
         }
 
