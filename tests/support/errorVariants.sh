@@ -1,4 +1,7 @@
 # shellcheck shell=bash
+# shellcheck disable=SC2034,SC2154
+# (sourced: top and work come from caseFunctions.sh, variantPrefix from the sourcing test; bT,
+# tT and props are for it)
 # tests/support/errorVariants.sh: the case tests that break tutorials/twoSlabs one way at a time
 # (tests/cases/errors, tests/cases/coreCrashes). Source it after caseFunctions.sh, with
 # variantPrefix set (the cases are $work/$variantPrefix-base and $work/$variantPrefix-NAME).
