@@ -5,6 +5,8 @@
 #include "PtrList.H"
 
 #include "roughContact/io/Units.hpp"
+#include "roughContact/surface/Spectrum.hpp"
+#include "roughContact/surface/SurfaceChecksum.hpp"
 
 #include <cmath>
 #include <map>
@@ -80,9 +82,24 @@ roughContact::SurfaceSpec readSurface
             << "' (profile, spectrum, powerLaw or fractal)"
             << exit(FatalIOError);
     }
-    scalar L;
-    if (d.readIfPresent("length", L))
+    if (d.found("length"))
     {
+        if (s.kind == roughContact::SurfaceSpec::Kind::profile)
+        {
+            FatalIOErrorInFunction(d)
+                << "entry 'length' has no meaning for a surface of type"
+                << " profile: a profile's length is its number of samples"
+                << " times their spacing. 'length' is the scan length of a"
+                << " spectrum, powerLaw or fractal surface; remove it"
+                << exit(FatalIOError);
+        }
+        const scalar L = d.get<scalar>("length");
+        if (!(L > 0) || !std::isfinite(L))
+        {
+            FatalIOErrorInFunction(d)
+                << "entry 'length' must be a finite scan length > 0 [m],"
+                << " got " << L << exit(FatalIOError);
+        }
         s.length = L;
     }
     return s;
@@ -182,7 +199,18 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
         Info<< "thermalContactResistance: building the contact table for '"
             << name << "' (" << who.c_str() << ")" << endl;
         auto iface = std::make_shared<const roughContact::ContactInterface>(spec);
-        Info<< "    " << iface->summary().c_str() << endl;
+        Info<< "    " << iface->summary().c_str() << nl;
+        // What this run uses, so that a run can be traced to its surface (the
+        // condition writes the checksum into its field file, too).
+        const roughContact::Spectrum& surface = iface->surface();
+        Info<< "    surface checksum "
+            << roughContact::surfaceChecksumHex(surface).c_str() << ", "
+            << label(surface.size()) << " levels, rms height "
+            << std::sqrt(surface.profileVariance()) << " m, L = "
+            << surface.length() << " m" << nl
+            << "    " << dictFile << " is read once: changes to it"
+            << " (and to the surface files) during the run are not used"
+            << " until the run is restarted" << endl;
         cache.emplace(key, iface);
         return iface;
     }

@@ -7,6 +7,7 @@
 #include "mappedPatchBase.H"
 #include "IOdictionary.H"
 
+#include "roughContact/surface/SurfaceChecksum.hpp"
 #include "roughContact/thermal/InterfaceCoupling.hpp"
 
 #include <cmath>
@@ -122,7 +123,9 @@ void Foam::thermalContactResistanceFvPatchScalarField::readContact
             propsName,
             runTime.constant(),
             runTime,
-            IOobject::MUST_READ,
+            // Re-read when modified (runTimeModifiable yes), only so that
+            // checkContactUnchanged() can say that a change is ignored.
+            IOobject::MUST_READ_IF_MODIFIED,
             IOobject::NO_WRITE
         );
         if (!io.typeHeaderOk<IOdictionary>(true))
@@ -150,6 +153,99 @@ void Foam::thermalContactResistanceFvPatchScalarField::readContact
     (
         props, contactName_, props.objectPath(), runTime.globalPath(), who()
     );
+    try
+    {
+        surfaceChecksum_ = roughContact::surfaceChecksumHex(interface_->surface());
+    }
+    catch (const std::exception& e)
+    {
+        FatalIOErrorInFunction(dict)
+            << who().c_str() << ": entry 'contact " << contactName_
+            << "' (" << props.objectPath() << "): the surface's checksum: "
+            << e.what() << exit(FatalIOError);
+    }
+    contactDigest_ = props.subDict(contactName_).digest();
+    contactCheckedTimeIndex_ = runTime.timeIndex();
+    checkRecordedSurface(dict);
+}
+
+
+void Foam::thermalContactResistanceFvPatchScalarField::checkRecordedSurface
+(
+    const dictionary& dict
+) const
+{
+    string recorded;
+    if (!dict.readIfPresent("surfaceChecksum", recorded))
+    {
+        return;
+    }
+    if (recorded != surfaceChecksum_)
+    {
+        WarningInFunction
+            << who().c_str() << ": the field file "
+            << internalField().objectPath() << " records the surface of"
+            << " the run that wrote it as surfaceChecksum " << recorded.c_str()
+            << ", but the surface of contact '" << contactName_
+            << "' now read (" << interface_->surface().source().c_str()
+            << ") has the checksum " << surfaceChecksum_.c_str() << "."
+            << " The surface has changed since the recorded run: h and"
+            << " A_r/A_n will change from that run's." << endl;
+    }
+}
+
+
+void Foam::thermalContactResistanceFvPatchScalarField::checkContactUnchanged()
+{
+    const Time& runTime = db().time();
+    if
+    (
+        warnedContactChanged_
+     || runTime.timeIndex() == contactCheckedTimeIndex_
+    )
+    {
+        return;
+    }
+    // Files are re-read between time steps: one comparison per step.
+    contactCheckedTimeIndex_ = runTime.timeIndex();
+    const IOdictionary& props =
+        runTime.lookupObject<IOdictionary>("thermalContactProperties");
+    const dictionary* entry = props.findDict(contactName_);
+    if (!entry || entry->digest() != contactDigest_)
+    {
+        WarningInFunction
+            << who().c_str() << ": entry '" << contactName_ << "' of "
+            << props.objectPath() << " has been "
+            << (entry ? "changed" : "removed") << " during the run. The"
+            << " change is ignored: the contact table stays as it was built"
+            << " at the start (surface, materials, model, pressure range)"
+            << " until the run is restarted." << endl;
+        warnedContactChanged_ = true;
+    }
+}
+
+
+void Foam::thermalContactResistanceFvPatchScalarField::checkKappaField() const
+{
+    if (method_ != mtLookup)
+    {
+        return;
+    }
+    const fvMesh& mesh = patch().boundaryMesh().mesh();
+    if
+    (
+        !mesh.foundObject<volScalarField>(kappaName_)
+     && !mesh.foundObject<volSymmTensorField>(kappaName_)
+    )
+    {
+        RuntimeIOError
+            << who().c_str() << ": entry 'kappa " << kappaName_ << "'"
+            << " (kappaMethod lookup): region " << mesh.name() << " has no"
+            << " volScalarField or volSymmTensorField '" << kappaName_
+            << "' (volScalarFields: "
+            << flatOutput(mesh.sortedNames<volScalarField>()) << ")"
+            << exit(FatalIOError);
+    }
 }
 
 
@@ -392,6 +488,9 @@ thermalContactResistanceFvPatchScalarField
     pressure_(),
     pressureFieldName_(),
     interface_(),
+    surfaceChecksum_(),
+    contactDigest_(),
+    contactCheckedTimeIndex_(-1),
     areaFraction_(p.size(), Zero),
     conductance_(p.size(), Zero),
     contactPressure_(p.size(), Zero),
@@ -401,7 +500,8 @@ thermalContactResistanceFvPatchScalarField
     dictEnd_(-1),
     checkedNeighbour_(false),
     warnedNoContact_(false),
-    warnedBeyondTable_(false)
+    warnedBeyondTable_(false),
+    warnedContactChanged_(false)
 {
     this->refValue() = 0.0;
     this->refGrad() = 0.0;
@@ -425,6 +525,9 @@ thermalContactResistanceFvPatchScalarField
     pressure_(),
     pressureFieldName_(),
     interface_(),
+    surfaceChecksum_(),
+    contactDigest_(),
+    contactCheckedTimeIndex_(-1),
     areaFraction_(p.size(), Zero),
     conductance_(p.size(), Zero),
     contactPressure_(p.size(), Zero),
@@ -434,7 +537,8 @@ thermalContactResistanceFvPatchScalarField
     dictEnd_(dict.endLineNumber()),
     checkedNeighbour_(false),
     warnedNoContact_(false),
-    warnedBeyondTable_(false)
+    warnedBeyondTable_(false),
+    warnedContactChanged_(false)
 {
     checkPatch();
     readContact(dict);
@@ -477,6 +581,9 @@ thermalContactResistanceFvPatchScalarField
     pressure_(),
     pressureFieldName_(ptf.pressureFieldName_),
     interface_(ptf.interface_),
+    surfaceChecksum_(ptf.surfaceChecksum_),
+    contactDigest_(ptf.contactDigest_),
+    contactCheckedTimeIndex_(ptf.contactCheckedTimeIndex_),
     areaFraction_(ptf.areaFraction_, mapper),
     conductance_(ptf.conductance_, mapper),
     contactPressure_(ptf.contactPressure_, mapper),
@@ -486,7 +593,8 @@ thermalContactResistanceFvPatchScalarField
     dictEnd_(ptf.dictEnd_),
     checkedNeighbour_(false),
     warnedNoContact_(ptf.warnedNoContact_),
-    warnedBeyondTable_(ptf.warnedBeyondTable_)
+    warnedBeyondTable_(ptf.warnedBeyondTable_),
+    warnedContactChanged_(ptf.warnedContactChanged_)
 {
     if (ptf.pressure_.valid())
     {
@@ -519,6 +627,9 @@ thermalContactResistanceFvPatchScalarField
     ),
     pressureFieldName_(ptf.pressureFieldName_),
     interface_(ptf.interface_),
+    surfaceChecksum_(ptf.surfaceChecksum_),
+    contactDigest_(ptf.contactDigest_),
+    contactCheckedTimeIndex_(ptf.contactCheckedTimeIndex_),
     areaFraction_(ptf.areaFraction_),
     conductance_(ptf.conductance_),
     contactPressure_(ptf.contactPressure_),
@@ -528,7 +639,8 @@ thermalContactResistanceFvPatchScalarField
     dictEnd_(ptf.dictEnd_),
     checkedNeighbour_(ptf.checkedNeighbour_),
     warnedNoContact_(ptf.warnedNoContact_),
-    warnedBeyondTable_(ptf.warnedBeyondTable_)
+    warnedBeyondTable_(ptf.warnedBeyondTable_),
+    warnedContactChanged_(ptf.warnedContactChanged_)
 {}
 
 
@@ -552,6 +664,9 @@ thermalContactResistanceFvPatchScalarField
     ),
     pressureFieldName_(ptf.pressureFieldName_),
     interface_(ptf.interface_),
+    surfaceChecksum_(ptf.surfaceChecksum_),
+    contactDigest_(ptf.contactDigest_),
+    contactCheckedTimeIndex_(ptf.contactCheckedTimeIndex_),
     areaFraction_(ptf.areaFraction_),
     conductance_(ptf.conductance_),
     contactPressure_(ptf.contactPressure_),
@@ -561,7 +676,8 @@ thermalContactResistanceFvPatchScalarField
     dictEnd_(ptf.dictEnd_),
     checkedNeighbour_(ptf.checkedNeighbour_),
     warnedNoContact_(ptf.warnedNoContact_),
-    warnedBeyondTable_(ptf.warnedBeyondTable_)
+    warnedBeyondTable_(ptf.warnedBeyondTable_),
+    warnedContactChanged_(ptf.warnedContactChanged_)
 {}
 
 
@@ -664,6 +780,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
         checkNeighbour(nbrField);
     }
 
+    checkKappaField();
     const scalarField myKappa(kappa(*this));
     const scalarField myKDelta(myKappa*patch().deltaCoeffs());
     scalarField& f = this->valueFraction();
@@ -682,7 +799,9 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
         // What this side needs of the neighbour, in one exchange: its cell
         // temperature, kappa and pressure per face, and (once, while the
         // mesh does not change) its deltaCoeffs.
+        checkContactUnchanged();
         vectorField nbrData(nbrPatch.size());
+        nbrField.checkKappaField();
         {
             const scalarField nbrT(nbrField.patchInternalField());
             const scalarField nbrK(nbrField.kappa(nbrField));
@@ -706,7 +825,10 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
         const scalarField nbrKDelta(nbrKappa*nbrDeltaCoeffs_);
 
         // Both sides' pressures, averaged: both sides get the same h.
-        contactPressure_ = 0.5*(interfacePressure() + nbrData.component(vector::Z));
+        // Each half first: 0.5*(a + b) overflows for pressures near the
+        // largest double (a floating-point trap), 0.5*a + 0.5*b does not.
+        contactPressure_ =
+            0.5*interfacePressure() + 0.5*nbrData.component(vector::Z);
 
         try
         {
@@ -725,6 +847,14 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
                 << patch().Cf()[facei] << ": nominal pressure "
                 << contactPressure_[facei] << " Pa (mean of both sides), kappa "
                 << myKappa[facei] << " and " << nbrKappa[facei] << " W/m/K: "
+                << e.what() << exit(FatalIOError);
+        }
+        catch (const std::exception& e)
+        {
+            RuntimeIOError
+                << who().c_str() << ": entry 'contact " << contactName_
+                << "' (" << db().time().constant()/"thermalContactProperties"
+                << "): the contact conductance of the faces failed: "
                 << e.what() << exit(FatalIOError);
         }
 
@@ -796,6 +926,8 @@ void Foam::thermalContactResistanceFvPatchScalarField::write(Ostream& os) const
     else
     {
         os.writeEntry("contact", contactName_);
+        // What this run used: a restart compares it (checkRecordedSurface).
+        os.writeEntry("surfaceChecksum", surfaceChecksum_);
         if (pressure_.valid())
         {
             if (pressure_->type() == "uniformValue")
