@@ -208,3 +208,22 @@ TEST(ContactInterface, BatchOfFacesWithCacheEqualsFaceByFace)
     k2[41] = -1.0;
     EXPECT_THROW(ci.faces(n, P.data(), k1.data(), k2.data(), cache, area.data(), h.data()), FaceError);
 }
+
+TEST(ContactInterface, HeldAtTableEndOnlyWhereMaxPressureCutTheTable)
+{
+    // The boundary condition warns "raise maxPressure" from this; before, it also warned in the
+    // gap between the table's last grid point and complete contact, where raising it could
+    // not help.
+    const ContactInterface full(steelOnCopper());
+    ASSERT_NE(full.table().end(), ContactTable::End::maxPressure);
+    for (double f : {0.5, 0.9, 0.999, 0.9999999}) {
+        EXPECT_FALSE(full.heldAtTableEnd(f * full.completeContactPressure())) << f;
+    }
+    InterfaceSpec spec = steelOnCopper();
+    spec.maxPressure = 1e7;
+    const ContactInterface cut(spec);
+    ASSERT_EQ(cut.table().end(), ContactTable::End::maxPressure);
+    EXPECT_FALSE(cut.heldAtTableEnd(0.5e7));
+    EXPECT_TRUE(cut.heldAtTableEnd(2e7));
+    EXPECT_FALSE(cut.heldAtTableEnd(2.0 * cut.completeContactPressure()));
+}

@@ -882,7 +882,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
                     << exit(FatalIOError);
             }
             apart = apart || P <= 0;
-            beyondTable = beyondTable || (P > tableEnd && P < complete);
+            beyondTable = beyondTable || interface_->heldAtTableEnd(P);
         }
         this->refValue() = nbrTcell;
 

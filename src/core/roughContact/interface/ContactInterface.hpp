@@ -100,6 +100,13 @@ public:
     /// The last pressure [Pa] the table resolves: above it and below complete contact the
     /// table returns its last values (a floor), so a boundary condition should say so.
     double tableEnd() const noexcept { return table_->pressures().back(); }
+    /// True when P lies beyond a table that the maximum pressure cut short (below complete
+    /// contact): its values are then held at the table's end, and raising maxPressure helps.
+    /// False where the table reaches complete contact or perfect conductance (ContactTable::end).
+    bool heldAtTableEnd(double P) const noexcept
+    {
+        return table_->end() == ContactTable::End::maxPressure && P > tableEnd() && P < completeContactPressure();
+    }
     double completeContactPressure() const noexcept { return table_->completeContactPressure(); }
 
     const ContactTable& table() const noexcept { return *table_; }
