@@ -107,34 +107,26 @@ roughContact::SurfaceSpec readSurface
 
 roughContact::Material readMaterial(const dictionary& d)
 {
-    // Checked here, not (only) by the core, so that the error names the
-    // entry as written (side1/side2 and E, nu, Sy) and its value.
+    // Read here, checked by the core (roughContact::checkMaterial: the one
+    // place for the accepted ranges), reported here so that the error names
+    // the sub-dictionary as written (side1/side2) and points at its lines.
     roughContact::Material m;
     m.E = d.get<scalar>("E");
-    if (!(m.E > 0) || !std::isfinite(m.E))
-    {
-        FatalIOErrorInFunction(d)
-            << "entry 'E' of " << d.dictName() << " must be a finite Young's"
-            << " modulus > 0 [Pa], got " << m.E << exit(FatalIOError);
-    }
     m.nu = d.get<scalar>("nu");
-    if (!(m.nu > -1 && m.nu < 0.5))
-    {
-        FatalIOErrorInFunction(d)
-            << "entry 'nu' of " << d.dictName() << " must be a Poisson's"
-            << " ratio in (-1, 0.5), got " << m.nu << exit(FatalIOError);
-    }
     scalar Sy;
     if (d.readIfPresent("Sy", Sy))
     {
-        if (!(Sy > 0) || !std::isfinite(Sy))
-        {
-            FatalIOErrorInFunction(d)
-                << "entry 'Sy' of " << d.dictName() << " must be a finite"
-                << " yield strength > 0 [Pa], got " << Sy
-                << exit(FatalIOError);
-        }
         m.Sy = Sy;
+    }
+    try
+    {
+        roughContact::checkMaterial(m, d.dictName());
+    }
+    catch (const std::exception& e)
+    {
+        FatalIOErrorInFunction(d)
+            << "entry " << e.what() << " (entries E, nu, Sy of "
+            << d.dictName() << ")" << exit(FatalIOError);
     }
     return m;
 }

@@ -28,17 +28,23 @@ void checkYieldStrain(const std::string& which, double Sy, double E, const char*
     }
 }
 
-void check(const Material& m, const std::string& which)
+} // namespace
+
+void checkMaterial(const Material& m, const std::string& which)
 {
     checkModulus(which + " Young's modulus E", m.E);
     requireFinite(which + " Poisson's ratio nu", m.nu);
     if (!(m.nu > -1.0 && m.nu < 0.5)) {
-        throw ParameterError(which + " Poisson's ratio nu", "must lie in (-1, 0.5)");
+        std::ostringstream os;
+        os << "must lie in (-1, 0.5), got " << m.nu;
+        throw ParameterError(which + " Poisson's ratio nu", os.str());
     }
     if (m.Sy) {
         checkYieldStrain(which, *m.Sy, m.E, "E");
     }
 }
+
+namespace {
 
 void checkReducedModulus(double Eprime)
 {
@@ -49,7 +55,7 @@ void checkReducedModulus(double Eprime)
 
 ContactMaterials ContactMaterials::againstRigidFlat(const Material& m)
 {
-    check(m, "material");
+    checkMaterial(m, "material");
     ContactMaterials c;
     c.Eprime_ = m.E / (1.0 - m.nu * m.nu);
     checkReducedModulus(c.Eprime_);
@@ -61,8 +67,8 @@ ContactMaterials ContactMaterials::againstRigidFlat(const Material& m)
 
 ContactMaterials ContactMaterials::pair(const Material& a, const Material& b)
 {
-    check(a, "first material");
-    check(b, "second material");
+    checkMaterial(a, "first material");
+    checkMaterial(b, "second material");
     ContactMaterials c;
     c.Eprime_ = 1.0 / ((1.0 - a.nu * a.nu) / a.E + (1.0 - b.nu * b.nu) / b.E);
     checkReducedModulus(c.Eprime_);

@@ -14,6 +14,10 @@ struct Material {
     std::optional<double> Sy;
 };
 
+/// Throws ParameterError naming `which` and the property unless E, nu and S_y lie within what
+/// the core accepts (Limits.hpp): E in [1e3, 1e13] Pa, nu in (-1, 0.5), S_y/E in [1e-6, 0.1].
+void checkMaterial(const Material& m, const std::string& which);
+
 /// What the contact models need of the pair:
 /// - E' from 1/E' = (1-nu1^2)/E1 + (1-nu2^2)/E2 (physics.md §1),
 /// - the yield strength S_y, Poisson's ratio nu and modulus E of the material that yields
