@@ -223,6 +223,12 @@ Profile readProfile(std::istream& in, const std::string& path, const ProfileRead
         if (!(dx > 0.0) || !std::isfinite(dx)) {
             throw ParameterError("spacing", "is out of the range of a double in metres");
         }
+        if (!std::isfinite(dx * static_cast<double>(n))) {
+            // Found by fuzzing: the scan length N dx (Profile::length) would be infinite.
+            std::ostringstream os;
+            os << "gives a scan length N dx (N = " << n << ") out of the range of a double in metres";
+            throw ParameterError("spacing", os.str());
+        }
         return Profile(std::move(heights), dx, path);
     }
 
@@ -251,7 +257,10 @@ Profile readProfile(std::istream& in, const std::string& path, const ProfileRead
     const double x0 = rows.x.front();
     const double xLast = rows.x.back();
     const double dx = (xLast - x0) / static_cast<double>(n - 1);
-    if (!std::isfinite(dx) || !std::isfinite(dx * xScale) || !(dx * xScale > 0.0)) {
+    // The scan length N dx (Profile::length) must be finite too: (x_last - x_0) N / (N - 1) can
+    // overflow where x_last - x_0 does not.
+    if (!std::isfinite(dx) || !std::isfinite(dx * xScale) || !(dx * xScale > 0.0)
+        || !std::isfinite(dx * xScale * static_cast<double>(n))) {
         std::ostringstream os;
         os.precision(17);
         os << "the spacing (x_last - x_first) / (N - 1) = " << dx << " " << unitName
