@@ -55,22 +55,25 @@ inline std::optional<double> digitChoice(char c)
     return c >= '0' && c <= '9' ? std::optional<double>(choice(c)) : std::nullopt;
 }
 
-/// "" when what() of an expected error is sound: names the input, short, printable ASCII.
+/// "" when an expected error's text is sound: short, printable ASCII, and for an InputError
+/// naming the input. An InputError's message() is checked, not what(): what() is a C string and
+/// ends at the first NUL byte of an echoed field.
 inline std::string checkMessage(const std::exception& e)
 {
-    const std::string what = e.what();
+    const auto* input = dynamic_cast<const roughContact::InputError*>(&e);
+    if (input && input->file() != inputName) {
+        return "InputError not naming the file: " + input->file();
+    }
+    const std::string what = input ? input->message() : std::string(e.what());
     if (what.size() > longestMessage) {
-        return "error message of " + std::to_string(what.size()) + " characters: "
-               + what.substr(0, 200) + "...";
+        return "error message of " + std::to_string(what.size())
+               + " characters: " + roughContact::detail::printable(what, 200);
     }
     for (char c : what) {
         const auto u = static_cast<unsigned char>(c);
         if (u < 0x20 || u > 0x7E) {
-            return "error message with a non-printable byte: " + what;
+            return "error message with a non-printable byte: " + roughContact::detail::printable(what, 400);
         }
-    }
-    if (dynamic_cast<const roughContact::InputError*>(&e) && what.rfind(inputName, 0) != 0) {
-        return "InputError not naming the file: " + what;
     }
     return "";
 }
