@@ -38,8 +38,7 @@ std::string content(const fs::path& file)
 
 /// Every file of the target's corpus passes check; the corpus has at least minimumFiles files
 /// (so that a missing or emptied corpus fails instead of passing on nothing).
-template <class Check>
-void replay(const std::string& target, Check check, std::size_t minimumFiles)
+template <class Check> void replay(const std::string& target, Check check, std::size_t minimumFiles)
 {
     const std::vector<fs::path> files = corpus(target);
     ASSERT_GE(files.size(), minimumFiles) << "tests/fuzz/corpus/" << target;

@@ -66,8 +66,8 @@ inline std::string checkMessage(const std::exception& e)
     }
     const std::string what = input ? input->message() : std::string(e.what());
     if (what.size() > longestMessage) {
-        return "error message of " + std::to_string(what.size())
-               + " characters: " + roughContact::detail::printable(what, 200);
+        return "error message of " + std::to_string(what.size()) +
+               " characters: " + roughContact::detail::printable(what, 200);
     }
     for (char c : what) {
         const auto u = static_cast<unsigned char>(c);
@@ -84,8 +84,7 @@ inline bool finite(double v)
 }
 
 /// Runs read(in) on the content and checks it with check(result); "" when all is well.
-template <class Read, class Check>
-std::string checkReader(const std::string& content, Read read, Check check)
+template <class Read, class Check> std::string checkReader(const std::string& content, Read read, Check check)
 {
     std::istringstream in(content);
     try {
@@ -104,7 +103,7 @@ inline std::string checkProfileInput(const std::string& input)
     roughContact::ProfileReadOptions options;
     const char u = input.size() > 0 ? input[0] : '-';
     if (u == 'm' || u == 'u' || u == 'n') {
-        options.units = u == 'm' ? roughContact::LengthUnit::m
+        options.units = u == 'm'   ? roughContact::LengthUnit::m
                         : u == 'u' ? roughContact::LengthUnit::um
                                    : roughContact::LengthUnit::nm;
     }
