@@ -579,6 +579,25 @@ TEST(DektakProfile, roughnessBetweenTheCursorsMatchesTheInstrumentsOwnResults)
     EXPECT_NEAR(rq, 0.01143e-6, 0.01 * 0.01143e-6);
 }
 
+// The stream overload is what the path version reads through: the same profile, and errors
+// name the given file name.
+TEST(DektakProfile, aStreamReadsTheSameAsThePath)
+{
+    const Profile fromPath = readProfile(dektakPath);
+    std::ifstream in(dektakPath, std::ios::binary);
+    const Profile fromStream = readProfile(in, "export.csv");
+    EXPECT_EQ(fromStream.heights(), fromPath.heights());
+    EXPECT_EQ(fromStream.spacing(), fromPath.spacing());
+    EXPECT_EQ(fromStream.source(), "export.csv");
+    std::istringstream bad("0 1\n1 2\n2 x\n");
+    try {
+        readProfile(bad, "bad.csv");
+        ADD_FAILURE() << "bad.csv was read";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("bad.csv:3: ", 0), 0u) << e.what();
+    }
+}
+
 TEST(DektakProfile, unitsOptionOverridesTheHeader)
 {
     const Profile um = readProfile(dektakPath);
