@@ -194,6 +194,35 @@ TEST_F(ProfileReaderTest, badSpacingOptionIsAParameterError)
     }
 }
 
+// Found by fuzzing (tests/fuzz/corpus/profileReader/crash-one-column-spacing-max-double-
+// length-inf): a finite spacing whose scan length N dx overflows gave a Profile of length inf.
+TEST_F(ProfileReaderTest, spacingWhoseScanLengthOverflowsIsAParameterError)
+{
+    const std::string path = write("z.txt", "1\n2\n3\n4\n5\n6\n7\n8\n");
+    ProfileReadOptions o;
+    o.spacing = std::numeric_limits<double>::max() / 4.0; // finite; 8 of them are not
+    try {
+        const Profile p = readProfile(path, o);
+        ADD_FAILURE() << "accepted: length " << p.length();
+    } catch (const ParameterError& e) {
+        EXPECT_EQ(e.parameter(), "spacing");
+    }
+    o.spacing = std::numeric_limits<double>::max() / 8.0; // 8 of them are finite
+    EXPECT_TRUE(std::isfinite(readProfile(path, o).length()));
+}
+
+// The same for positions: x from -0.45 max to 0.45 max spans 0.9 max (finite), but with 8
+// points the scan length is 8/7 of that.
+TEST_F(ProfileReaderTest, positionsWhoseScanLengthOverflowsAreAnInputError)
+{
+    const double half = 0.45 * std::numeric_limits<double>::max();
+    const std::string path = write("xz.txt", columns(8, -half, 2.0 * half / 7.0, ramp));
+    expectLocated(profileError(path), path, 8, "out of the range of a double");
+    // Half that span is read.
+    const std::string fine = write("fine.txt", columns(8, -half / 2.0, half / 7.0, ramp));
+    EXPECT_TRUE(std::isfinite(readProfile(fine).length()));
+}
+
 TEST_F(ProfileReaderTest, spacingGivenForATwoColumnFileIsAnError)
 {
     const std::string path = write("p.txt", columns(8, 0.0, 1e-6, ramp));
@@ -346,6 +375,15 @@ TEST_F(ProfileReaderTest, positionsMustIncreaseStrictly)
 }
 
 // ---- bad files ------------------------------------------------------------------------------
+
+// The reader keeps line numbers only where they jump (blank and comment lines): errors after
+// a jump still name the right lines.
+TEST_F(ProfileReaderTest, errorsAfterBlankAndCommentLinesNameTheirLines)
+{
+    const std::string path =
+        write("gap.txt", "x z\n0 1\n1 2\n\n# comment\n2 3\n3 4\n\n4 5\n3.5 6\n5 7\n6 8\n7 9\n");
+    expectLocated(profileError(path), path, 10, "x = 3.5 m after x = 4 m on line 9");
+}
 
 TEST_F(ProfileReaderTest, fewerThanEightPoints)
 {
@@ -539,6 +577,25 @@ TEST(DektakProfile, roughnessBetweenTheCursorsMatchesTheInstrumentsOwnResults)
     rq = std::sqrt(rq / m);
     EXPECT_NEAR(ra, 0.00525e-6, 0.01 * 0.00525e-6);
     EXPECT_NEAR(rq, 0.01143e-6, 0.01 * 0.01143e-6);
+}
+
+// The stream overload is what the path version reads through: the same profile, and errors
+// name the given file name.
+TEST(DektakProfile, aStreamReadsTheSameAsThePath)
+{
+    const Profile fromPath = readProfile(dektakPath);
+    std::ifstream in(dektakPath, std::ios::binary);
+    const Profile fromStream = readProfile(in, "export.csv");
+    EXPECT_EQ(fromStream.heights(), fromPath.heights());
+    EXPECT_EQ(fromStream.spacing(), fromPath.spacing());
+    EXPECT_EQ(fromStream.source(), "export.csv");
+    std::istringstream bad("0 1\n1 2\n2 x\n");
+    try {
+        readProfile(bad, "bad.csv");
+        ADD_FAILURE() << "bad.csv was read";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("bad.csv:3: ", 0), 0u) << e.what();
+    }
 }
 
 TEST(DektakProfile, unitsOptionOverridesTheHeader)

@@ -265,6 +265,36 @@ TEST_F(TableReaderTest, nonNumericField)
     expectLocated(tableError(path), path, 3, "non-numeric field 'x6' in column 2");
 }
 
+TEST(Printable, escapesNonPrintableBytesAndCutsLongText)
+{
+    EXPECT_EQ(printable("1.5e-3"), "1.5e-3");
+    EXPECT_EQ(printable(std::string("a\0b\tc\xB5m\x7F", 8)), "a\\x00b\\x09c\\xB5m\\x7F");
+    EXPECT_EQ(printable(std::string(40, 'x')), std::string(40, 'x'));
+    EXPECT_EQ(printable(std::string(41, 'x')), std::string(40, 'x') + "...");
+    // An escape is never cut in two: 10 escapes (40 characters) fit, the 11th does not.
+    EXPECT_EQ(printable(std::string(11, '\0')), [] {
+        std::string s;
+        for (int i = 0; i < 10; ++i) {
+            s += "\\x00";
+        }
+        return s + "...";
+    }());
+    EXPECT_EQ(printable(std::string(100, 'y'), 80), std::string(80, 'y') + "...");
+}
+
+// A megabyte of junk (NUL bytes included) in one field: the message shows its first 40
+// characters, escaped, not the megabyte.
+TEST_F(TableReaderTest, aHugeBinaryFieldIsEchoedShortAndPrintable)
+{
+    std::string junk = "abc";
+    junk += std::string("\0\x01", 2);
+    junk += std::string(1 << 20, 'q');
+    const std::string path = write("junk.txt", "1 2\n3 " + junk + "\n");
+    const InputError e = tableError(path);
+    expectLocated(e, path, 2, "non-numeric field 'abc\\x00\\x01" + std::string(29, 'q') + "...' in column 2");
+    EXPECT_LT(std::string(e.what()).size(), path.size() + 100);
+}
+
 TEST_F(TableReaderTest, decimalCommaIsNotSilentlyMisread)
 {
     // "0,5;1,5" (a European spreadsheet) splits into four fields: too many columns, not 0 and 5.

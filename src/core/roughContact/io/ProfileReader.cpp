@@ -8,6 +8,8 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <istream>
 #include <limits>
 #include <sstream>
 #include <vector>
@@ -97,15 +99,70 @@ PrintedPrecision printedPrecision(const std::string& field)
     }
     return p;
 }
+
+/// The rows of a profile file, kept compact (about 8 + 8 + 8 bytes and the printed position a
+/// row, instead of a TableRow each): heights, positions, the positions as printed (for their
+/// rounding and for error messages) and the line numbers where they do not simply count up.
+class ProfileRows : public detail::TableSink {
+public:
+    void row(const detail::TableRow& r) override
+    {
+        if (lineJumps_.empty() || r.line != line(size() - 1) + 1) {
+            lineJumps_.push_back({size(), r.line});
+        }
+        z.push_back(r.values.back());
+        if (r.values.size() == 2) {
+            x.push_back(r.values[0]);
+            printed_.append(r.firstField);
+            printedEnd_.push_back(printed_.size());
+        }
+    }
+    void restart() override { *this = ProfileRows(); }
+
+    std::size_t size() const { return z.size(); }
+    /// The line of row i.
+    long line(std::size_t i) const
+    {
+        const auto jump = std::upper_bound(lineJumps_.begin(), lineJumps_.end(), i,
+                                           [](std::size_t row, const LineJump& j) { return row < j.row; })
+                          - 1;
+        return jump->line + static_cast<long>(i - jump->row);
+    }
+    /// The position of row i as printed (two-column files).
+    std::string printed(std::size_t i) const
+    {
+        const std::size_t begin = i == 0 ? 0 : printedEnd_[i - 1];
+        return printed_.substr(begin, printedEnd_[i] - begin);
+    }
+
+    /// Heights (the last column) and positions (the first of two), as read.
+    std::vector<double> z;
+    std::vector<double> x;
+
+private:
+    struct LineJump {
+        std::size_t row;
+        long line;
+    };
+    std::vector<LineJump> lineJumps_;
+    std::string printed_;
+    std::vector<std::size_t> printedEnd_;
+};
 } // namespace
 
 Profile readProfile(const std::string& path, const ProfileReadOptions& options)
 {
+    std::ifstream in = detail::openInputFile(path);
+    return readProfile(in, path, options);
+}
+
+Profile readProfile(std::istream& in, const std::string& path, const ProfileReadOptions& options)
+{
     detail::TableReadOptions tableOptions;
     tableOptions.maxColumns = 2;
     tableOptions.sectionMarker = dektakMarker;
-    const detail::Table table = detail::readTable(path, tableOptions);
-    const std::vector<detail::TableRow>& rows = table.rows;
+    ProfileRows rows;
+    const detail::Table table = detail::scanTable(in, path, tableOptions, rows);
 
     if (rows.size() < Profile::minimumSize) {
         std::ostringstream os;
@@ -125,7 +182,7 @@ Profile readProfile(const std::string& path, const ProfileReadOptions& options)
         // A Dektak export: its data header names the unit of each column, e.g.
         // "Lateral um,Raw Micrometer,". Heights may be in another unit than positions (nm, A).
         if (table.headerLine == 0) {
-            throw InputError(path, rows.front().line,
+            throw InputError(path, rows.line(0),
                              "a Bruker Dektak export (it has a \"Scan Data\" line) without the "
                              "data header that names its units; give the units option");
         }
@@ -143,7 +200,7 @@ Profile readProfile(const std::string& path, const ProfileReadOptions& options)
         if (xNamed == 0.0 || zNamed == 0.0) {
             const std::size_t column = xNamed == 0.0 ? 1 : 2;
             throw InputError(path, table.headerLine,
-                             "the Dektak data header '" + table.header
+                             "the Dektak data header '" + detail::printable(table.header, 80)
                                  + "' names no length unit (um, nm, Angstrom, mm or m) for column "
                                  + std::to_string(column) + "; give the units option");
         }
@@ -151,10 +208,9 @@ Profile readProfile(const std::string& path, const ProfileReadOptions& options)
         zScale = twoColumns ? zNamed : xNamed;
     }
 
-    std::vector<double> heights(n);
-    const std::size_t zColumn = twoColumns ? 1 : 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        heights[i] = rows[i].values[zColumn] * zScale; // finite: read finite, scales <= 1
+    std::vector<double> heights = std::move(rows.z);
+    for (double& z : heights) {
+        z *= zScale; // finite: read finite, scales <= 1
     }
 
     if (!twoColumns) {
@@ -166,6 +222,12 @@ Profile readProfile(const std::string& path, const ProfileReadOptions& options)
         const double dx = requirePositive("spacing", *options.spacing) * xScale;
         if (!(dx > 0.0) || !std::isfinite(dx)) {
             throw ParameterError("spacing", "is out of the range of a double in metres");
+        }
+        if (!std::isfinite(dx * static_cast<double>(n))) {
+            // Found by fuzzing: the scan length N dx (Profile::length) would be infinite.
+            std::ostringstream os;
+            os << "gives a scan length N dx (N = " << n << ") out of the range of a double in metres";
+            throw ParameterError("spacing", os.str());
         }
         return Profile(std::move(heights), dx, path);
     }
@@ -182,25 +244,28 @@ Profile readProfile(const std::string& path, const ProfileReadOptions& options)
                                  : xScale == 1e-9 ? std::string("nm")
                                                   : std::string("Angstrom");
     for (std::size_t i = 1; i < n; ++i) {
-        if (!(rows[i].values[0] > rows[i - 1].values[0])) {
+        if (!(rows.x[i] > rows.x[i - 1])) {
             std::ostringstream os;
             os.precision(17);
-            os << "positions must increase strictly: x = " << rows[i].firstField << " "
-               << unitName << " after x = " << rows[i - 1].firstField << " " << unitName
-               << " on line " << rows[i - 1].line;
-            throw InputError(path, rows[i].line, os.str());
+            os << "positions must increase strictly: x = " << detail::printable(rows.printed(i)) << " "
+               << unitName << " after x = " << detail::printable(rows.printed(i - 1)) << " " << unitName
+               << " on line " << rows.line(i - 1);
+            throw InputError(path, rows.line(i), os.str());
         }
     }
 
-    const double x0 = rows.front().values[0];
-    const double xLast = rows.back().values[0];
+    const double x0 = rows.x.front();
+    const double xLast = rows.x.back();
     const double dx = (xLast - x0) / static_cast<double>(n - 1);
-    if (!std::isfinite(dx) || !std::isfinite(dx * xScale) || !(dx * xScale > 0.0)) {
+    // The scan length N dx (Profile::length) must be finite too: (x_last - x_0) N / (N - 1) can
+    // overflow where x_last - x_0 does not.
+    if (!std::isfinite(dx) || !std::isfinite(dx * xScale) || !(dx * xScale > 0.0)
+        || !std::isfinite(dx * xScale * static_cast<double>(n))) {
         std::ostringstream os;
         os.precision(17);
         os << "the spacing (x_last - x_first) / (N - 1) = " << dx << " " << unitName
            << " is out of the range of a double in metres";
-        throw InputError(path, rows.back().line, os.str());
+        throw InputError(path, rows.line(n - 1), os.str());
     }
 
     // Uniform-grid check. A printed position x_i is the true t_i plus a rounding error
@@ -220,14 +285,13 @@ Profile readProfile(const std::string& path, const ProfileReadOptions& options)
     // decimals under fixed printing: q = 10^-D.
     int mostDecimals = std::numeric_limits<int>::min();
     int mostSignificant = 0;
-    std::vector<PrintedPrecision> printed(n);
     for (std::size_t i = 0; i < n; ++i) {
-        printed[i] = printedPrecision(rows[i].firstField);
-        mostDecimals = std::max(mostDecimals, printed[i].decimals);
-        mostSignificant = std::max(mostSignificant, printed[i].significant);
+        const PrintedPrecision p = printedPrecision(rows.printed(i));
+        mostDecimals = std::max(mostDecimals, p.decimals);
+        mostSignificant = std::max(mostSignificant, p.significant);
     }
     const auto step = [&](std::size_t i) {
-        const PrintedPrecision& p = printed[i];
+        const PrintedPrecision p = printedPrecision(rows.printed(i)); // again: not kept, to save memory
         const int d = p.significant == 0
                           ? mostDecimals
                           : std::min(mostDecimals, p.decimals + mostSignificant - p.significant);
@@ -244,16 +308,16 @@ Profile readProfile(const std::string& path, const ProfileReadOptions& options)
     for (std::size_t i = 0; i < n; ++i) {
         const double s = static_cast<double>(i) / static_cast<double>(n - 1);
         const double expected = x0 + static_cast<double>(i) * dx;
-        const double found = rows[i].values[0];
+        const double found = rows.x[i];
         const double tolerance = 0.5 * (step(i) + (1.0 - s) * qFirst + s * qLast) + slack;
         if (!(std::abs(found - expected) <= tolerance)) {
             std::ostringstream os;
             os.precision(10);
             os << "uneven spacing: expected x = " << expected << " " << unitName
                << " on the uniform grid x_0 + i dx (dx = " << dx << " " << unitName
-               << "), found " << rows[i].firstField << "; tolerance " << tolerance << " "
+               << "), found " << detail::printable(rows.printed(i)) << "; tolerance " << tolerance << " "
                << unitName << " for positions printed to " << step(i) << " " << unitName;
-            throw InputError(path, rows[i].line, os.str());
+            throw InputError(path, rows.line(i), os.str());
         }
     }
 

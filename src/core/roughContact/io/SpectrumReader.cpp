@@ -5,6 +5,8 @@
 #include "roughContact/io/TableReader.hpp"
 
 #include <cstdlib>
+#include <fstream>
+#include <istream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -35,9 +37,18 @@ Spectrum readSpectrum(const std::string& path, std::optional<double> length)
     if (length) {
         requirePositive("length", *length);
     }
+    std::ifstream in = detail::openInputFile(path);
+    return readSpectrum(in, path, length);
+}
+
+Spectrum readSpectrum(std::istream& in, const std::string& path, std::optional<double> length)
+{
+    if (length) {
+        requirePositive("length", *length);
+    }
     detail::TableReadOptions tableOptions;
     tableOptions.maxColumns = 2;
-    const detail::Table table = detail::readTable(path, tableOptions);
+    const detail::Table table = detail::readTable(in, path, tableOptions);
     if (table.rows.empty()) {
         throw InputError(path, 0, "no data rows; a spectrum needs at least one level");
     }

@@ -3,6 +3,7 @@
 
 #include "roughContact/surface/Spectrum.hpp"
 
+#include <iosfwd>
 #include <optional>
 #include <string>
 
@@ -16,5 +17,9 @@ namespace roughContact {
 /// Throws InputError(path, line, ...) for bad content (line 0 for an unreadable or empty file)
 /// and ParameterError("length", ...) for a bad length.
 Spectrum readSpectrum(const std::string& path, std::optional<double> length = std::nullopt);
+
+/// The same from a stream; path is the file name that errors and the spectrum's source give.
+Spectrum readSpectrum(std::istream& in, const std::string& path,
+                      std::optional<double> length = std::nullopt);
 
 } // namespace roughContact

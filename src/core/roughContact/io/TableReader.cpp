@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <istream>
+#include <memory>
 #include <sstream>
 
 namespace roughContact {
@@ -38,47 +40,6 @@ std::string trim(const std::string& s)
     return s.substr(first, last - first);
 }
 
-std::string readWholeFile(const std::string& path)
-{
-    std::ifstream in(path, std::ios::in | std::ios::binary);
-    if (!in) {
-        throw InputError(path, 0, "cannot open the file for reading");
-    }
-    std::string content;
-    char buffer[1 << 16];
-    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-        content.append(buffer, static_cast<std::size_t>(in.gcount()));
-    }
-    if (in.bad()) {
-        // E.g. a directory: it opens, but reading fails.
-        throw InputError(path, 0, "cannot open the file for reading (read error)");
-    }
-    return content;
-}
-
-/// The lines of content; line k (1-based) is element k-1.
-std::vector<std::string> splitLines(const std::string& content)
-{
-    // "\n" ends a line; a "\r" before it (or several: some exports write "\r\r\n") is trailing
-    // whitespace, so line numbers agree with wc, grep -n and sed. A file without any "\n" uses
-    // classic Mac "\r" endings.
-    const char end = content.find('\n') != std::string::npos ? '\n' : '\r';
-    std::vector<std::string> lines;
-    std::size_t start = 0;
-    while (start < content.size()) {
-        std::size_t stop = content.find(end, start);
-        if (stop == std::string::npos) {
-            stop = content.size();
-        }
-        lines.push_back(content.substr(start, stop - start));
-        start = stop + 1;
-    }
-    if (!lines.empty() && lines.front().compare(0, 3, "\xEF\xBB\xBF") == 0) {
-        lines.front().erase(0, 3); // UTF-8 byte-order mark
-    }
-    return lines;
-}
-
 std::string withoutComment(const std::string& line)
 {
     const auto hash = line.find('#');
@@ -87,7 +48,7 @@ std::string withoutComment(const std::string& line)
 
 std::string quoted(const std::string& field)
 {
-    return "'" + field + "'";
+    return "'" + printable(field) + "'";
 }
 } // namespace
 
@@ -146,49 +107,77 @@ bool parseNumber(const std::string& field, double& value)
     return true;
 }
 
-Table readTable(const std::string& path, const TableReadOptions& options)
-{
-    const std::vector<std::string> lines = splitLines(readWholeFile(path));
-    Table table;
+namespace {
+/// The table being read, line by line: its layout so far, and the first error while the
+/// section marker may still come (the error is then thrown at the end, unless the marker comes).
+class TableScanner {
+public:
+    TableScanner(const std::string& name, const TableReadOptions& options, TableSink& sink)
+        : name_(name), options_(options), sink_(sink)
+    {
+    }
 
-    std::size_t first = 0; // index of the first line to read
-    if (!options.sectionMarker.empty()) {
-        for (std::size_t k = 0; k < lines.size(); ++k) {
-            if (trim(lines[k]) == options.sectionMarker) {
-                first = k + 1;
-                table.sectionFound = true;
-                break;
+    void line(long lineNo, const std::string& line)
+    {
+        if (!options_.sectionMarker.empty() && !table_.sectionFound
+            && trim(line) == options_.sectionMarker) {
+            // Everything up to and including the marker is skipped, errors too.
+            table_ = Table();
+            table_.sectionFound = true;
+            rows_ = 0;
+            firstRowLine_ = 0;
+            deferred_.reset();
+            sink_.restart();
+            return;
+        }
+        if (deferred_) {
+            return; // only looking for the marker
+        }
+        try {
+            data(lineNo, withoutComment(line));
+        } catch (const InputError& e) {
+            if (options_.sectionMarker.empty() || table_.sectionFound) {
+                throw;
             }
+            deferred_ = std::make_unique<InputError>(e);
         }
     }
 
-    for (std::size_t k = first; k < lines.size(); ++k) {
-        const long lineNo = static_cast<long>(k) + 1;
-        const std::string text = withoutComment(lines[k]);
+    Table finish()
+    {
+        if (deferred_) {
+            throw *deferred_;
+        }
+        return table_;
+    }
+
+private:
+    void data(long lineNo, const std::string& text)
+    {
         if (text.empty()) {
-            continue;
+            return;
         }
         const std::vector<std::string> fields = splitFields(text);
         if (fields.empty()) {
-            continue; // only separators, e.g. ",,,"
+            return; // only separators, e.g. ",,,"
         }
         double value = 0.0;
-        if (table.rows.empty() && table.headerLine == 0 && !parseNumber(fields[0], value)) {
-            table.header = text;
-            table.headerLine = lineNo;
-            continue;
+        if (rows_ == 0 && table_.headerLine == 0 && !parseNumber(fields[0], value)) {
+            table_.header = text;
+            table_.headerLine = lineNo;
+            return;
         }
 
-        TableRow row;
-        row.line = lineNo;
-        row.firstField = fields[0];
-        const std::size_t checked = std::min(fields.size(), options.maxColumns);
+        row_.line = lineNo;
+        row_.firstField = fields[0];
+        row_.values.clear();
+        const std::size_t checked = std::min(fields.size(), options_.maxColumns);
         for (std::size_t c = 0; c < checked; ++c) {
             const std::string& field = fields[c];
             std::ostringstream os;
             if (field.empty()) {
                 os << "empty field in column " << c + 1;
-                throw InputError(path, lineNo, os.str());
+                throw InputError(name_, lineNo, os.str());
             }
             if (!parseNumber(field, value)) {
                 os << "non-numeric field " << quoted(field) << " in column " << c + 1;
@@ -197,38 +186,151 @@ Table readTable(const std::string& path, const TableReadOptions& options)
                 for (const std::string& f : fields) {
                     anyNumber = anyNumber || parseNumber(f, ignored);
                 }
-                if (!anyNumber && table.headerLine != 0) {
+                if (!anyNumber && table_.headerLine != 0) {
                     os << " (only one header line is allowed; the header is line "
-                       << table.headerLine << ")";
+                       << table_.headerLine << ")";
                 } else if (!anyNumber) {
                     os << " (a header line is allowed only before the first data row)";
                 }
-                throw InputError(path, lineNo, os.str());
+                throw InputError(name_, lineNo, os.str());
             }
             if (!std::isfinite(value)) {
-                os << "field " << quoted(field) << " in column " << c + 1
-                   << " is not a finite number";
-                throw InputError(path, lineNo, os.str());
+                os << "field " << quoted(field) << " in column " << c + 1 << " is not a finite number";
+                throw InputError(name_, lineNo, os.str());
             }
-            row.values.push_back(value);
+            row_.values.push_back(value);
         }
-        if (fields.size() > options.maxColumns) {
+        if (fields.size() > options_.maxColumns) {
             std::ostringstream os;
-            os << fields.size() << " columns; at most " << options.maxColumns
-               << " are allowed";
-            throw InputError(path, lineNo, os.str());
+            os << fields.size() << " columns; at most " << options_.maxColumns << " are allowed";
+            throw InputError(name_, lineNo, os.str());
         }
-        if (table.rows.empty()) {
-            table.columns = fields.size();
-        } else if (fields.size() != table.columns) {
+        if (rows_ == 0) {
+            table_.columns = fields.size();
+            firstRowLine_ = lineNo;
+        } else if (fields.size() != table_.columns) {
             std::ostringstream os;
             os << fields.size() << (fields.size() == 1 ? " column" : " columns") << " where line "
-               << table.rows.front().line << " has " << table.columns;
-            throw InputError(path, lineNo, os.str());
+               << firstRowLine_ << " has " << table_.columns;
+            throw InputError(name_, lineNo, os.str());
         }
-        table.rows.push_back(std::move(row));
+        ++rows_;
+        sink_.row(row_);
     }
+
+    const std::string& name_;
+    const TableReadOptions& options_;
+    TableSink& sink_;
+    Table table_;
+    std::size_t rows_ = 0;
+    long firstRowLine_ = 0;
+    TableRow row_;
+    std::unique_ptr<InputError> deferred_;
+};
+
+/// Keeps every row: readTable.
+class RowsSink : public TableSink {
+public:
+    void row(const TableRow& row) override { rows.push_back(row); }
+    void restart() override { rows.clear(); }
+    std::vector<TableRow> rows;
+};
+
+void checkNotBad(const std::istream& in, const std::string& name)
+{
+    if (in.bad()) {
+        // E.g. a directory: it opens, but reading fails.
+        throw InputError(name, 0, "cannot open the file for reading (read error)");
+    }
+}
+
+void dropByteOrderMark(std::string& line)
+{
+    if (line.compare(0, 3, "\xEF\xBB\xBF") == 0) {
+        line.erase(0, 3); // UTF-8 byte-order mark
+    }
+}
+} // namespace
+
+std::string printable(const std::string& text, std::size_t maxLength)
+{
+    std::string shown;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const auto u = static_cast<unsigned char>(text[i]);
+        char piece[5] = {static_cast<char>(u), '\0'};
+        if (u < 0x20 || u > 0x7E) {
+            static const char hex[] = "0123456789ABCDEF";
+            piece[0] = '\\';
+            piece[1] = 'x';
+            piece[2] = hex[u >> 4];
+            piece[3] = hex[u & 0xF];
+            piece[4] = '\0';
+        }
+        const std::size_t length = u < 0x20 || u > 0x7E ? 4 : 1;
+        if (shown.size() + length > maxLength) {
+            return shown + "...";
+        }
+        shown.append(piece, length);
+    }
+    return shown;
+}
+
+std::ifstream openInputFile(const std::string& path)
+{
+    std::ifstream in(path, std::ios::in | std::ios::binary);
+    if (!in) {
+        throw InputError(path, 0, "cannot open the file for reading");
+    }
+    return in;
+}
+
+Table scanTable(std::istream& in, const std::string& name, const TableReadOptions& options,
+                TableSink& sink)
+{
+    // "\n" ends a line; a "\r" before it (or several: some exports write "\r\r\n") is trailing
+    // whitespace, so line numbers agree with wc, grep -n and sed. A file without any "\n" uses
+    // classic Mac "\r" endings: then the first getline reads all of it.
+    TableScanner scanner(name, options, sink);
+    std::string line;
+    if (std::getline(in, line)) {
+        dropByteOrderMark(line);
+        if (!in.eof()) {
+            long lineNo = 1;
+            scanner.line(lineNo, line);
+            while (std::getline(in, line)) {
+                scanner.line(++lineNo, line);
+            }
+        } else {
+            const std::string content = std::move(line);
+            long lineNo = 0;
+            std::size_t start = 0;
+            while (start < content.size()) {
+                std::size_t stop = content.find('\r', start);
+                if (stop == std::string::npos) {
+                    stop = content.size();
+                }
+                line.assign(content, start, stop - start);
+                scanner.line(++lineNo, line);
+                start = stop + 1;
+            }
+        }
+    }
+    checkNotBad(in, name);
+    return scanner.finish();
+}
+
+Table readTable(std::istream& in, const std::string& name, const TableReadOptions& options)
+{
+    RowsSink sink;
+    Table table = scanTable(in, name, options, sink);
+    table.rows = std::move(sink.rows);
     return table;
+}
+
+Table readTable(const std::string& path, const TableReadOptions& options)
+{
+    std::ifstream in = openInputFile(path);
+    return readTable(in, path, options);
 }
 
 } // namespace detail

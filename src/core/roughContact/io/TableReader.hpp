@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,16 @@ struct Table {
     bool sectionFound = false;
 };
 
+/// Where scanTable delivers the data rows, one at a time, as it reads them.
+class TableSink {
+public:
+    virtual ~TableSink() = default;
+    /// The next data row (the same object is reused for the following one).
+    virtual void row(const TableRow& row) = 0;
+    /// options.sectionMarker was found: every row delivered so far came before it; drop them.
+    virtual void restart() = 0;
+};
+
 /// Reads path as lines of numbers. Separators are commas, semicolons, tabs or spaces in any mix
 /// (a run of whitespace is one separator, so is a comma or semicolon with whitespace around it).
 /// Empty fields at the end of a line are ignored; `#` starts a comment; blank lines are skipped.
@@ -50,6 +61,22 @@ struct Table {
 /// non-finite field, too many columns or a column count differing from the first row's.
 /// An empty table (no rows) is returned as such: callers decide on the minimum size.
 Table readTable(const std::string& path, const TableReadOptions& options = {});
+
+/// The same from a stream; name is the file name that errors give.
+Table readTable(std::istream& in, const std::string& name, const TableReadOptions& options = {});
+
+/// readTable without keeping the rows: each goes to sink as it is read, so that the caller keeps
+/// only what it needs (the file is never held whole in memory unless it has no "\n"). The same
+/// rows, errors and layout; the returned Table has no rows.
+Table scanTable(std::istream& in, const std::string& name, const TableReadOptions& options,
+                TableSink& sink);
+
+/// The file at path opened for reading; throws InputError(path, 0, ...) when it cannot be.
+std::ifstream openInputFile(const std::string& path);
+
+/// text as an error message echoes it: bytes outside printable ASCII as \xNN, and cut with
+/// "..." after about maxLength characters (a bad field may be a megabyte long or binary).
+std::string printable(const std::string& text, std::size_t maxLength = 40);
 
 /// The fields of one line (comment already removed), split as readTable does; empty fields at
 /// the end are dropped.

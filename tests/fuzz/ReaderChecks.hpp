@@ -1,0 +1,186 @@
+// What the fuzz targets (tests/fuzz/fuzz*.cpp) and the corpus replay (tests/core/testFuzzCorpus.cpp)
+// check of one input: the reader either returns sound data or throws InputError/ParameterError
+// with a short, printable message. Anything else is a bug, described by the returned text.
+//
+// An input is the file's content after a few option bytes, so that one input also chooses the
+// reader's options:
+//  - profile:  byte 1 the units option ('m', 'u', 'n'; anything else: unset), byte 2 the
+//              spacing option ('0'-'9': spacingChoices[digit]; anything else: unset);
+//  - spectrum: byte 1 the length option ('0'-'9': lengthChoices[digit]; anything else: unset);
+//  - table:    byte 1 the options: maxColumns = 1 + byte % 4, and the section marker
+//              "Scan Data" when byte & 4.
+#pragma once
+
+#include "roughContact/Error.hpp"
+#include "roughContact/io/ProfileReader.hpp"
+#include "roughContact/io/SpectrumReader.hpp"
+#include "roughContact/io/TableReader.hpp"
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <string>
+
+namespace roughContactFuzz {
+
+/// The file name the readers are given (errors name it).
+inline const std::string inputName = "fuzz-input";
+
+/// The longest error message accepted, file name included: a message echoes at most a few
+/// short fields (io/TableReader printable: about 40 characters each, 80 for a header).
+constexpr std::size_t longestMessage = 400;
+
+/// Spacing and length options a digit chooses: ordinary, huge, tiny, zero, negative, NaN, inf.
+inline double choice(char digit)
+{
+    const double choices[10] = {1e-7,
+                                1.0,
+                                2.5e-6,
+                                1e300,
+                                std::numeric_limits<double>::max(),
+                                std::numeric_limits<double>::denorm_min(),
+                                0.0,
+                                -1.0,
+                                std::numeric_limits<double>::quiet_NaN(),
+                                std::numeric_limits<double>::infinity()};
+    return choices[digit - '0'];
+}
+
+inline std::optional<double> digitChoice(char c)
+{
+    return c >= '0' && c <= '9' ? std::optional<double>(choice(c)) : std::nullopt;
+}
+
+/// "" when an expected error's text is sound: short, printable ASCII, and for an InputError
+/// naming the input. An InputError's message() is checked, not what(): what() is a C string and
+/// ends at the first NUL byte of an echoed field.
+inline std::string checkMessage(const std::exception& e)
+{
+    const auto* input = dynamic_cast<const roughContact::InputError*>(&e);
+    if (input && input->file() != inputName) {
+        return "InputError not naming the file: " + input->file();
+    }
+    const std::string what = input ? input->message() : std::string(e.what());
+    if (what.size() > longestMessage) {
+        return "error message of " + std::to_string(what.size()) +
+               " characters: " + roughContact::detail::printable(what, 200);
+    }
+    for (char c : what) {
+        const auto u = static_cast<unsigned char>(c);
+        if (u < 0x20 || u > 0x7E) {
+            return "error message with a non-printable byte: " + roughContact::detail::printable(what, 400);
+        }
+    }
+    return "";
+}
+
+inline bool finite(double v)
+{
+    return std::isfinite(v);
+}
+
+/// Runs read(in) on the content and checks it with check(result); "" when all is well.
+template <class Read, class Check> std::string checkReader(const std::string& content, Read read, Check check)
+{
+    std::istringstream in(content);
+    try {
+        return check(read(in));
+    } catch (const roughContact::InputError& e) {
+        return checkMessage(e);
+    } catch (const roughContact::ParameterError& e) {
+        return checkMessage(e);
+    } catch (const std::exception& e) {
+        return std::string("unexpected exception: ") + e.what();
+    }
+}
+
+inline std::string checkProfileInput(const std::string& input)
+{
+    roughContact::ProfileReadOptions options;
+    const char u = input.size() > 0 ? input[0] : '-';
+    if (u == 'm' || u == 'u' || u == 'n') {
+        options.units = u == 'm'   ? roughContact::LengthUnit::m
+                        : u == 'u' ? roughContact::LengthUnit::um
+                                   : roughContact::LengthUnit::nm;
+    }
+    options.spacing = digitChoice(input.size() > 1 ? input[1] : '-');
+    const std::string content = input.size() > 2 ? input.substr(2) : std::string();
+    return checkReader(
+        content, [&](std::istream& in) { return roughContact::readProfile(in, inputName, options); },
+        [](const roughContact::Profile& p) -> std::string {
+            if (p.size() < roughContact::Profile::minimumSize) {
+                return "profile of " + std::to_string(p.size()) + " points";
+            }
+            if (!finite(p.spacing()) || !(p.spacing() > 0.0) || !finite(p.length())) {
+                std::ostringstream os;
+                os.precision(17);
+                os << "profile with spacing " << p.spacing() << " and length " << p.length();
+                return os.str();
+            }
+            for (double z : p.heights()) {
+                if (!finite(z)) {
+                    return "profile with a non-finite height";
+                }
+            }
+            return "";
+        });
+}
+
+inline std::string checkSpectrumInput(const std::string& input)
+{
+    const std::optional<double> length = digitChoice(input.empty() ? '-' : input[0]);
+    const std::string content = input.size() > 1 ? input.substr(1) : std::string();
+    return checkReader(
+        content, [&](std::istream& in) { return roughContact::readSpectrum(in, inputName, length); },
+        [](const roughContact::Spectrum& s) -> std::string {
+            if (s.size() == 0 || s.frequencies().size() != s.amplitudes().size()) {
+                return "spectrum without levels or with unequal columns";
+            }
+            if (!finite(s.length()) || !(s.length() > 0.0)) {
+                return "spectrum with a non-finite or non-positive length";
+            }
+            for (std::size_t i = 0; i < s.size(); ++i) {
+                if (!finite(s.frequency(i)) || !finite(s.amplitude(i))) {
+                    return "spectrum with a non-finite level";
+                }
+            }
+            return "";
+        });
+}
+
+inline std::string checkTableInput(const std::string& input)
+{
+    const auto byte = static_cast<unsigned char>(input.empty() ? 0 : input[0]);
+    roughContact::detail::TableReadOptions options;
+    options.maxColumns = 1 + byte % 4;
+    if (byte & 4) {
+        options.sectionMarker = "Scan Data";
+    }
+    const std::string content = input.size() > 1 ? input.substr(1) : std::string();
+    return checkReader(
+        content, [&](std::istream& in) { return roughContact::detail::readTable(in, inputName, options); },
+        [&](const roughContact::detail::Table& t) -> std::string {
+            if (t.rows.empty() != (t.columns == 0) || t.columns > options.maxColumns) {
+                return "table with " + std::to_string(t.columns) + " columns";
+            }
+            long previous = t.headerLine;
+            for (const roughContact::detail::TableRow& row : t.rows) {
+                if (row.values.size() != t.columns || !(row.line > previous)) {
+                    return "row on line " + std::to_string(row.line) + " out of order or of a wrong size";
+                }
+                previous = row.line;
+                for (double v : row.values) {
+                    if (!finite(v)) {
+                        return "row on line " + std::to_string(row.line) + " with a non-finite value";
+                    }
+                }
+            }
+            return "";
+        });
+}
+
+} // namespace roughContactFuzz

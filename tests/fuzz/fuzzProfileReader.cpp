@@ -1,0 +1,20 @@
+// libFuzzer target: the profile reader on arbitrary input (tests/fuzz/ReaderChecks.hpp says what
+// the first bytes choose and what is checked); any bug aborts. Run it with tests/fuzz/run.
+#include "ReaderChecks.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+    const std::string input(reinterpret_cast<const char*>(data), size);
+    const std::string bug = roughContactFuzz::checkProfileInput(input);
+    if (!bug.empty()) {
+        std::fprintf(stderr, "fuzzProfileReader: %s\n", bug.c_str());
+        std::abort();
+    }
+    return 0;
+}
