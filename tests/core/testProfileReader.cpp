@@ -1,6 +1,7 @@
 // Reading measured profiles (io/ProfileReader): layouts, units, the uniform-grid check, every
 // error (naming file and line), and the real Dektak export tests/data/io/dektak-1.csv.
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/surface/Profile.hpp"
 #include "roughContact/surface/Spectrum.hpp"
@@ -198,29 +199,37 @@ TEST_F(ProfileReaderTest, badSpacingOptionIsAParameterError)
 // length-inf): a finite spacing whose scan length N dx overflows gave a Profile of length inf.
 TEST_F(ProfileReaderTest, spacingWhoseScanLengthOverflowsIsAParameterError)
 {
+    // Found by fuzzing: a finite spacing whose scan length N dx overflowed. Spacing and scan
+    // length must lie within the accepted lengths (roughContact/Limits.hpp), checked before
+    // N dx is formed.
     const std::string path = write("z.txt", "1\n2\n3\n4\n5\n6\n7\n8\n");
     ProfileReadOptions o;
-    o.spacing = std::numeric_limits<double>::max() / 4.0; // finite; 8 of them are not
-    try {
-        const Profile p = readProfile(path, o);
-        ADD_FAILURE() << "accepted: length " << p.length();
-    } catch (const ParameterError& e) {
-        EXPECT_EQ(e.parameter(), "spacing");
+    for (double dx : {std::numeric_limits<double>::max() / 4.0, 2.0 * limits::maximumLength,
+                      limits::maximumLength / 4.0, 0.5 * limits::minimumLength}) {
+        o.spacing = dx;
+        try {
+            const Profile p = readProfile(path, o);
+            ADD_FAILURE() << "accepted: length " << p.length();
+        } catch (const ParameterError& e) {
+            EXPECT_NE(e.parameter().find("spacing"), std::string::npos) << e.what();
+        }
     }
-    o.spacing = std::numeric_limits<double>::max() / 8.0; // 8 of them are finite
-    EXPECT_TRUE(std::isfinite(readProfile(path, o).length()));
+    o.spacing = limits::maximumLength / 8.0; // 8 of them are the longest scan accepted
+    EXPECT_EQ(readProfile(path, o).length(), limits::maximumLength);
 }
 
-// The same for positions: x from -0.45 max to 0.45 max spans 0.9 max (finite), but with 8
-// points the scan length is 8/7 of that.
 TEST_F(ProfileReaderTest, positionsWhoseScanLengthOverflowsAreAnInputError)
 {
+    // Found by fuzzing: two positions near the largest double, whose span overflowed. Positions
+    // beyond +-maximumLength are refused on their line, before any difference is taken.
     const double half = 0.45 * std::numeric_limits<double>::max();
     const std::string path = write("xz.txt", columns(8, -half, 2.0 * half / 7.0, ramp));
-    expectLocated(profileError(path), path, 8, "out of the range of a double");
-    // Half that span is read.
-    const std::string fine = write("fine.txt", columns(8, -half / 2.0, half / 7.0, ramp));
-    EXPECT_TRUE(std::isfinite(readProfile(fine).length()));
+    expectLocated(profileError(path), path, 1, "lies beyond");
+    // Within the accepted lengths, a span of most of them is read.
+    const std::string fine = write("fine.txt", columns(8, -400.0, 100.0, ramp));
+    EXPECT_EQ(readProfile(fine).length(), 800.0);
+    const std::string tooLong = write("long.txt", columns(8, -400.0, 140.0, ramp));
+    expectLocated(profileError(tooLong), tooLong, 8, "scan length");
 }
 
 TEST_F(ProfileReaderTest, spacingGivenForATwoColumnFileIsAnError)

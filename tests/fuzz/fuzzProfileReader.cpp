@@ -2,11 +2,20 @@
 // the first bytes choose and what is checked); any bug aborts. Run it with tests/fuzz/run.
 #include "ReaderChecks.hpp"
 
+#include <cfenv>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+
+// Floating-point traps on, as OpenFOAM runs the readers (a solver traps overflow, invalid
+// operations and division by zero): an overflow in a reader is a crash here too.
+extern "C" int LLVMFuzzerInitialize(int*, char***)
+{
+    feenableexcept(FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW);
+    return 0;
+}
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

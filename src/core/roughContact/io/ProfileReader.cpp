@@ -2,6 +2,7 @@
 #include "roughContact/io/ProfileReader.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 #include "roughContact/io/TableReader.hpp"
 
 #include <algorithm>
@@ -219,16 +220,10 @@ Profile readProfile(std::istream& in, const std::string& path, const ProfileRead
                              "one column of heights and no positions: a sample spacing is needed "
                              "(give the spacing option)");
         }
-        const double dx = requirePositive("spacing", *options.spacing) * xScale;
-        if (!(dx > 0.0) || !std::isfinite(dx)) {
-            throw ParameterError("spacing", "is out of the range of a double in metres");
-        }
-        if (!std::isfinite(dx * static_cast<double>(n))) {
-            // Found by fuzzing: the scan length N dx (Profile::length) would be infinite.
-            std::ostringstream os;
-            os << "gives a scan length N dx (N = " << n << ") out of the range of a double in metres";
-            throw ParameterError("spacing", os.str());
-        }
+        // The spacing in metres within the accepted lengths (Limits.hpp) before N dx is formed:
+        // found by fuzzing, a finite spacing whose scan length N dx overflowed.
+        const double dx = limits::requireLength("spacing", requirePositive("spacing", *options.spacing) * xScale);
+        limits::requireLength("spacing: the scan length N dx", dx * static_cast<double>(n));
         return Profile(std::move(heights), dx, path);
     }
 
@@ -243,8 +238,16 @@ Profile readProfile(std::istream& in, const std::string& path, const ProfileRead
                                  : xScale == 1e-6 ? std::string("um")
                                  : xScale == 1e-9 ? std::string("nm")
                                                   : std::string("Angstrom");
-    for (std::size_t i = 1; i < n; ++i) {
-        if (!(rows.x[i] > rows.x[i - 1])) {
+    for (std::size_t i = 0; i < n; ++i) {
+        // Positions within the accepted lengths (Limits.hpp), so that their differences cannot
+        // overflow (found by fuzzing: a span of two positions near the largest double).
+        if (std::abs(rows.x[i] * xScale) > limits::maximumLength) {
+            std::ostringstream os;
+            os << "position x = " << detail::printable(rows.printed(i)) << " " << unitName << " lies beyond +-"
+               << limits::maximumLength << " m";
+            throw InputError(path, rows.line(i), os.str());
+        }
+        if (i > 0 && !(rows.x[i] > rows.x[i - 1])) {
             std::ostringstream os;
             os.precision(17);
             os << "positions must increase strictly: x = " << detail::printable(rows.printed(i)) << " "
@@ -257,14 +260,14 @@ Profile readProfile(std::istream& in, const std::string& path, const ProfileRead
     const double x0 = rows.x.front();
     const double xLast = rows.x.back();
     const double dx = (xLast - x0) / static_cast<double>(n - 1);
-    // The scan length N dx (Profile::length) must be finite too: (x_last - x_0) N / (N - 1) can
-    // overflow where x_last - x_0 does not.
-    if (!std::isfinite(dx) || !std::isfinite(dx * xScale) || !(dx * xScale > 0.0)
-        || !std::isfinite(dx * xScale * static_cast<double>(n))) {
+    // Finite: the positions lie within +-maximumLength. The spacing and the scan length N dx
+    // must lie within the accepted lengths too.
+    const double length = dx * xScale * static_cast<double>(n);
+    if (dx * xScale < limits::minimumLength || length > limits::maximumLength) {
         std::ostringstream os;
         os.precision(17);
-        os << "the spacing (x_last - x_first) / (N - 1) = " << dx << " " << unitName
-           << " is out of the range of a double in metres";
+        os << "the spacing (x_last - x_first) / (N - 1) = " << dx << " " << unitName << " and the scan length N dx = "
+           << length << " m must lie within [" << limits::minimumLength << " m, " << limits::maximumLength << " m]";
         throw InputError(path, rows.line(n - 1), os.str());
     }
 
