@@ -227,3 +227,11 @@ TEST(ContactInterface, HeldAtTableEndOnlyWhereMaxPressureCutTheTable)
     EXPECT_TRUE(cut.heldAtTableEnd(2e7));
     EXPECT_FALSE(cut.heldAtTableEnd(2.0 * cut.completeContactPressure()));
 }
+
+TEST(ContactInterface, ALengthForAProfileIsRefused)
+{
+    // Was silently ignored (the boundary condition refuses it too, naming the entry).
+    InterfaceSpec spec = steelOnCopper();
+    spec.surfaces[0].length = 1e-3;
+    EXPECT_THROW(ContactInterface{spec}, ParameterError);
+}

@@ -23,6 +23,10 @@ Spectrum SurfaceSpec::spectrum() const
         if (stride < 1) {
             throw ParameterError("stride", "must be at least 1");
         }
+        if (length) {
+            throw ParameterError("length", "has no meaning for a profile, whose scan length is N dx; it is for a "
+                                           "spectrum, power law or fractal");
+        }
         return Spectrum::fromProfile(readProfile(file, profileOptions).subsampled(stride));
     }
     case Kind::spectrum:
