@@ -61,6 +61,11 @@ constexpr double flatSlope = minimumLoad / 8.0;
 constexpr std::size_t maximumLevels = 1000000;
 constexpr double bytesPerLevel = 200.0;
 
+/// The most points of an areal surface (4096 x 4096): 134 MB of heights. What a model built on
+/// it needs beyond that (a boundary-element solve holds several padded copies) is checked by
+/// the model.
+constexpr std::size_t maximumGridPoints = 4096 * 4096;
+
 /// Throws ParameterError(what, ...) unless value lies in [lo, hi] (and is finite); `unit`
 /// follows the numbers in the message ("m", "Pa", "" for none).
 double requireInRange(const std::string& what, double value, double lo, double hi, const char* unit);

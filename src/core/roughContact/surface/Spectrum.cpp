@@ -61,6 +61,14 @@ Spectrum::Spectrum(std::vector<double> frequencies, std::vector<double> amplitud
     }
 }
 
+Spectrum Spectrum::withNyquistLevel(std::vector<double> frequencies, std::vector<double> amplitudes,
+                                    double length, std::string source, bool nyquist)
+{
+    Spectrum s(std::move(frequencies), std::move(amplitudes), length, std::move(source));
+    s.nyquist_ = nyquist;
+    return s;
+}
+
 Spectrum Spectrum::fromProfile(const Profile& profile)
 {
     const std::size_t n = profile.size();

@@ -17,6 +17,11 @@ public:
     Spectrum(std::vector<double> frequencies, std::vector<double> amplitudes, double length,
              std::string source = "");
 
+    /// The constructor's spectrum, marked as ending in the Nyquist level of an even-length
+    /// profile when `nyquist` (for spectra derived from profiles: averages of line scans).
+    static Spectrum withNyquistLevel(std::vector<double> frequencies, std::vector<double> amplitudes,
+                                     double length, std::string source, bool nyquist);
+
     /// FFT (FFTW) of the profile after removing its mean and linear tilt: f_k = k/L,
     /// beta_k = 2|Z_k|/N for 0 < k < N/2 and |Z_{N/2}|/N at Nyquist (physics.md §1).
     static Spectrum fromProfile(const Profile& profile);
