@@ -1,0 +1,67 @@
+// The surface compliance of an elastic half-space on a grid: the normal displacement u that a
+// pressure p causes, u = K p, evaluated with FFTs (FFTW, plans made once and reused).
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace roughContact {
+
+/// u = K p on an nx x ny grid of spacings dx, dy (row by row: index iy * nx + ix), for a
+/// half-space of reduced modulus E' = 1/((1-nu1^2)/E1 + (1-nu2^2)/E2) (two elastic bodies
+/// reduce to one rigid and one of modulus E': Johnson, Contact Mechanics, 1985, §4.2).
+///  - periodic: the grid is one period of a periodic surface; in Fourier space
+///    u(q) = 2 p(q) / (E' |q|) (Johnson 1985 Eq. 12.39 for one wave; Stanley & Kato, J. Tribol.
+///    119 (1997) 481), |q| = 2 pi sqrt((kx/Lx)^2 + (ky/Ly)^2). The mean (q = 0) displacement of
+///    a periodic half-space is unbounded and is set to 0: displacements are relative to their mean.
+///  - non-periodic: the grid is a patch of an unbounded surface, pressure zero outside it. Each
+///    cell carries a uniform pressure; the displacement of a uniformly loaded rectangle is
+///    Love's closed form (Love, Phil. Trans. A 228 (1929) 377; Johnson 1985 §3.3):
+///    u(x, y) = p/(pi E') [F(x+a, y+b) - F(x+a, y-b) - F(x-a, y+b) + F(x-a, y-b)],
+///    F(x, y) = x asinh(y/|x|) + y asinh(x/|y|), a = dx/2, b = dy/2 (the integral of 1/r over
+///    the rectangle). The sum over cells is a discrete convolution, evaluated without
+///    wrap-around on a grid padded to 2nx x 2ny (Liu, Wang & Liu, Wear 243 (2000) 101, DC-FFT).
+class HalfSpaceOperator {
+public:
+    HalfSpaceOperator(std::size_t nx, std::size_t ny, double dx, double dy, double Eprime, bool periodic);
+    ~HalfSpaceOperator();
+    HalfSpaceOperator(const HalfSpaceOperator&) = delete;
+    HalfSpaceOperator& operator=(const HalfSpaceOperator&) = delete;
+
+    /// u = K p; p and u hold nx * ny values (they may be the same array).
+    void apply(const double* p, double* u) const;
+    std::vector<double> apply(const std::vector<double>& p) const;
+
+    std::size_t nx() const noexcept { return nx_; }
+    std::size_t ny() const noexcept { return ny_; }
+    std::size_t size() const noexcept { return nx_ * ny_; }
+    double dx() const noexcept { return dx_; }
+    double dy() const noexcept { return dy_; }
+    double reducedModulus() const noexcept { return Eprime_; }
+    bool periodic() const noexcept { return periodic_; }
+    /// The largest eigenvalue of K [m/Pa] (the largest magnitude of its Fourier multiplier),
+    /// the step bound of gradient methods.
+    double largestEigenvalue() const noexcept { return largest_; }
+    /// Bytes the operator holds (kernel and FFT buffers), for the memory check of its callers.
+    static double bytesFor(std::size_t nx, std::size_t ny, bool periodic);
+
+    /// Love's displacement [m] at (x, y) of a pressure p [Pa] uniform over |x'| <= a, |y'| <= b.
+    static double loveRectangle(double x, double y, double a, double b, double p, double Eprime);
+
+private:
+    struct Fft;
+    std::size_t nx_;
+    std::size_t ny_;
+    double dx_;
+    double dy_;
+    double Eprime_;
+    bool periodic_;
+    std::size_t mx_; ///< FFT grid: nx (periodic) or 2 nx
+    std::size_t my_;
+    std::vector<double> kernel_; ///< the real, symmetric kernel's transform, my x (mx/2 + 1)
+    std::unique_ptr<Fft> fft_;
+    double largest_ = 0.0;
+};
+
+} // namespace roughContact

@@ -1,0 +1,391 @@
+#include "roughContact/bem/PolonskyKeer.hpp"
+
+#include "roughContact/Error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace roughContact {
+
+PolonskyKeer::PolonskyKeer(const HalfSpaceOperator& op, std::vector<double> heights,
+                           PolonskyKeerOptions options)
+    : op_(op), h_(std::move(heights)), options_(options)
+{
+    if (h_.size() != op_.size()) {
+        throw ParameterError("heights", "has " + std::to_string(h_.size()) + " values for the operator's " +
+                                            std::to_string(op_.size()) + " grid points");
+    }
+    double s = 0.0;
+    double m = 0.0;
+    for (double v : h_) {
+        requireFinite("height", v);
+        m += v;
+    }
+    m /= double(h_.size());
+    for (double v : h_) {
+        s += (v - m) * (v - m);
+    }
+    hScale_ = std::sqrt(s / double(h_.size()));
+    if (!(hScale_ > 0.0)) {
+        throw ParameterError("heights", "the surface is flat (zero rms height): nothing to solve");
+    }
+    requirePositive("tolerance", options_.tolerance);
+    if (options_.hardness) {
+        requirePositive("hardness H", *options_.hardness);
+    }
+}
+
+ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmStart) const
+{
+    requirePositive("mean pressure", P);
+    if (options_.hardness) {
+        return solveCapped(P, warmStart);
+    }
+    const std::size_t n = h_.size();
+    const double H = std::numeric_limits<double>::infinity();
+    const double W = P * double(n); // the sum of the cells' pressures
+    std::vector<double> p(n, P);
+    if (warmStart != nullptr && warmStart->size() == n) {
+        double sum = 0.0;
+        for (double v : *warmStart) {
+            sum += v;
+        }
+        if (sum > 0.0) {
+            for (std::size_t i = 0; i < n; ++i) {
+                p[i] = std::min(H, (*warmStart)[i] * W / sum);
+            }
+        }
+    }
+    std::vector<double> u(n);
+    std::vector<double> g(n);
+    std::vector<double> t(n, 0.0);
+    std::vector<double> r(n);
+    std::vector<double> pOld(n);
+    std::vector<char> active(n);
+    double delta = 0.0;
+    double Gold = 1.0;
+    double shift = 0.0; // the last iteration's mean gap on the active set (s = g - shift)
+    ContactSolution out;
+    bool firstIteration = true;
+    for (std::size_t it = 1; it <= options_.maxIterations; ++it) {
+        op_.apply(p.data(), u.data());
+        for (std::size_t i = 0; i < n; ++i) {
+            g[i] = u[i] - h_[i];
+        }
+        // The active (elastic contact) set: p > 0, except plastic points (p = H) that the
+        // surface still presses into (separation <= 0).
+        std::size_t na = 0;
+        double gbar = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const bool plasticHeld = p[i] >= H && (firstIteration || g[i] - shift <= 0.0);
+            active[i] = p[i] > 0.0 && !plasticHeld;
+            if (active[i]) {
+                gbar += g[i];
+                ++na;
+            }
+        }
+        firstIteration = false;
+        if (na == 0) {
+            // Every loaded point is plastic: nothing left for the elastic solve.
+            out.converged = true;
+            out.iterations = it;
+            break;
+        }
+        gbar /= double(na);
+        shift = gbar;
+        double G = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            g[i] -= gbar;
+            if (active[i]) {
+                G += g[i] * g[i];
+            }
+        }
+        const double gapResidual = std::sqrt(G / double(na)) / hScale_;
+        for (std::size_t i = 0; i < n; ++i) {
+            t[i] = active[i] ? g[i] + delta * (G / Gold) * t[i] : 0.0;
+        }
+        Gold = G;
+        op_.apply(t.data(), r.data());
+        double rbar = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (active[i]) {
+                rbar += r[i];
+            }
+        }
+        rbar /= double(na);
+        double num = 0.0;
+        double den = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (active[i]) {
+                num += g[i] * t[i];
+                den += (r[i] - rbar) * t[i];
+            }
+        }
+        const double tau = den > 0.0 ? num / den : 0.0;
+        pOld = p;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (active[i]) {
+                p[i] = std::clamp(p[i] - tau * t[i], 0.0, H);
+            }
+        }
+        // Overlap: points without pressure that the surface penetrates get some.
+        bool overlap = false;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (p[i] == 0.0 && g[i] < 0.0) {
+                p[i] = std::min(H, -tau * g[i]);
+                overlap = overlap || p[i] > 0.0;
+            }
+        }
+        delta = overlap ? 0.0 : 1.0;
+        // The load: scale the points below H so that the sum is W (the plastic ones hold H).
+        double sumFree = 0.0;
+        double sumHeld = 0.0;
+        for (double v : p) {
+            (v >= H ? sumHeld : sumFree) += v;
+        }
+        if (sumFree > 0.0 && W > sumHeld) {
+            const double k = (W - sumHeld) / sumFree;
+            for (double& v : p) {
+                if (v < H) {
+                    v = std::min(H, v * k);
+                }
+            }
+        } else if (sumFree + sumHeld > 0.0) {
+            const double k = W / (sumFree + sumHeld);
+            for (double& v : p) {
+                v *= k;
+            }
+        }
+        double change = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            change += std::abs(p[i] - pOld[i]);
+        }
+        out.residual = std::max(change / W, gapResidual);
+        out.iterations = it;
+        if (out.residual <= options_.tolerance && !overlap) {
+            out.converged = true;
+            break;
+        }
+    }
+    return finish(std::move(p), P, out);
+}
+
+ContactSolution PolonskyKeer::finish(std::vector<double> p, double P, ContactSolution out) const
+{
+    // The reported state: the final pressure's displacement and separations.
+    const std::size_t n = h_.size();
+    const double H = options_.hardness ? *options_.hardness : std::numeric_limits<double>::infinity();
+    std::vector<double> u(n);
+    op_.apply(p.data(), u.data());
+    std::size_t nc = 0;
+    std::size_t nh = 0;
+    double D = 0.0; // rigid approach: the separation is 0 on the elastic contact set
+    std::size_t nd = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (p[i] > 0.0) {
+            ++nc;
+        }
+        if (p[i] >= H) {
+            ++nh;
+        } else if (p[i] > 0.0) {
+            D += h_[i] - u[i];
+            ++nd;
+        }
+    }
+    if (nd == 0) { // all plastic: the approach makes the least separation of the free points 0
+        D = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < n; ++i) {
+            if (p[i] == 0.0) {
+                D = std::min(D, h_[i] - u[i]);
+            }
+        }
+        if (!std::isfinite(D)) {
+            D = 0.0;
+        }
+    } else {
+        D /= double(nd);
+    }
+    out.gap.resize(n);
+    double sep = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double sv = p[i] > 0.0 ? 0.0 : std::max(0.0, u[i] - h_[i] + D);
+        out.gap[i] = sv;
+        sep += sv;
+    }
+    out.pressure = std::move(p);
+    out.meanPressure = P;
+    out.areaFraction = double(nc) / double(n);
+    out.plasticFraction = double(nh) / double(n);
+    out.meanSeparation = sep / double(n);
+    return out;
+}
+
+namespace {
+// The exact projection onto {0 <= p <= H, sum p = W}: p = clamp(z - mu, 0, H) with mu found by
+// bisection (the sum falls monotonically with mu, from n H at mu = min z - H to 0 at max z).
+void projectCapped(const std::vector<double>& z, double H, double W, std::vector<double>& p)
+{
+    double lo = *std::min_element(z.begin(), z.end()) - H;
+    double hi = *std::max_element(z.begin(), z.end());
+    const auto sumAt = [&](double mu) {
+        double sum = 0.0;
+        for (double v : z) {
+            sum += std::clamp(v - mu, 0.0, H);
+        }
+        return sum;
+    };
+    for (int k = 0; k < 200 && hi - lo > 1e-15 * (std::abs(lo) + std::abs(hi)); ++k) {
+        const double mid = 0.5 * (lo + hi);
+        (sumAt(mid) > W ? lo : hi) = mid;
+    }
+    const double mu = 0.5 * (lo + hi);
+    p.resize(z.size());
+    double sum = 0.0;
+    for (std::size_t i = 0; i < z.size(); ++i) {
+        p[i] = std::clamp(z[i] - mu, 0.0, H);
+        sum += p[i];
+    }
+    // The bisection leaves the sum within round-off of W; scale the free points onto it.
+    double free = 0.0;
+    for (double v : p) {
+        if (v < H) {
+            free += v;
+        }
+    }
+    if (free > 0.0) {
+        const double k = 1.0 + (W - sum) / free;
+        for (double& v : p) {
+            if (v < H) {
+                v = std::min(H, v * k);
+            }
+        }
+    }
+}
+} // namespace
+
+ContactSolution PolonskyKeer::solveCapped(double P, const std::vector<double>* warmStart) const
+{
+    const double H = *options_.hardness;
+    if (P > H) {
+        std::ostringstream os;
+        os << "the mean pressure " << P << " Pa exceeds the hardness " << H << " Pa: every point would flow";
+        throw ParameterError("mean pressure", os.str());
+    }
+    const std::size_t n = h_.size();
+    const double W = P * double(n);
+    std::vector<double> x(n, P);
+    if (warmStart != nullptr && warmStart->size() == n) {
+        projectCapped(*warmStart, H, W, x);
+    }
+    const double step = 1.0 / op_.largestEigenvalue();
+    std::vector<double> y = x;
+    std::vector<double> xNew(n);
+    std::vector<double> z(n);
+    std::vector<double> grad(n);
+    double t = 1.0;
+    ContactSolution out;
+    for (std::size_t it = 1; it <= options_.maxIterations; ++it) {
+        op_.apply(y.data(), grad.data()); // the gradient of 1/2 p.Kp - p.h at y: K y - h
+        for (std::size_t i = 0; i < n; ++i) {
+            grad[i] -= h_[i];
+            z[i] = y[i] - step * grad[i];
+        }
+        projectCapped(z, H, W, xNew);
+        double change = 0.0;
+        double restart = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            change += std::abs(xNew[i] - x[i]);
+            restart += grad[i] * (xNew[i] - x[i]);
+        }
+        const double tNew = 0.5 * (1.0 + std::sqrt(1.0 + 4.0 * t * t));
+        if (restart > 0.0) { // the momentum points uphill: restart it
+            t = 1.0;
+            y = xNew;
+        } else {
+            for (std::size_t i = 0; i < n; ++i) {
+                y[i] = xNew[i] + (t - 1.0) / tNew * (xNew[i] - x[i]);
+            }
+            t = tNew;
+        }
+        x.swap(xNew);
+        out.iterations = it;
+        out.residual = change / W;
+        if (out.residual <= options_.tolerance) {
+            out.converged = true;
+            break;
+        }
+    }
+    return finish(std::move(x), P, out);
+}
+
+SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<bool>& contact,
+                                double tolerance, std::size_t maxIterations)
+{
+    const std::size_t n = op.size();
+    if (contact.size() != n) {
+        throw ParameterError("contact set", "does not match the grid");
+    }
+    SpotConductance out;
+    const std::size_t nc = static_cast<std::size_t>(std::count(contact.begin(), contact.end(), true));
+    if (nc == 0) {
+        out.converged = true;
+        return out;
+    }
+    if (nc == n) {
+        out.perConductivity = std::numeric_limits<double>::infinity();
+        out.converged = true;
+        return out;
+    }
+    // Conjugate gradients for K_cc x = 1 (K restricted to the contact set: symmetric positive
+    // definite), x = 0 off the set.
+    std::vector<double> x(n, 0.0);
+    std::vector<double> res(n, 0.0);
+    std::vector<double> d(n, 0.0);
+    std::vector<double> Kd(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        res[i] = contact[i] ? 1.0 : 0.0;
+    }
+    d = res;
+    double rr = double(nc);
+    const double norm = std::sqrt(double(nc));
+    for (std::size_t it = 1; it <= maxIterations; ++it) {
+        op.apply(d.data(), Kd.data());
+        double dKd = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (contact[i]) {
+                dKd += d[i] * Kd[i];
+            }
+        }
+        const double alpha = rr / dKd;
+        double rrNew = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (contact[i]) {
+                x[i] += alpha * d[i];
+                res[i] -= alpha * Kd[i];
+                rrNew += res[i] * res[i];
+            }
+        }
+        out.iterations = it;
+        out.residual = std::sqrt(rrNew) / norm;
+        if (out.residual <= tolerance) {
+            out.converged = true;
+            break;
+        }
+        const double beta = rrNew / rr;
+        rr = rrNew;
+        for (std::size_t i = 0; i < n; ++i) {
+            d[i] = contact[i] ? res[i] + beta * d[i] : 0.0;
+        }
+    }
+    double mean = 0.0;
+    for (double v : x) {
+        mean += v;
+    }
+    mean /= double(n);
+    out.perConductivity = mean / op.reducedModulus();
+    return out;
+}
+
+} // namespace roughContact

@@ -1,0 +1,90 @@
+// Normal, frictionless, non-adhesive contact of a rigid rough surface with an elastic half-space
+// (two rough elastic bodies reduce to it: their composite surface against a half-space of the
+// reduced modulus E'), solved on a grid by the constrained conjugate-gradient method of
+// Polonsky & Keer, "A numerical method for solving rough contact problems based on the
+// multi-level multi-summation and conjugate gradient techniques", Wear 231 (1999) 206-219,
+// and, with a perfectly plastic cap p <= H (points at H may overlap: the surface is flattened
+// there; Almqvist et al., Wear 262 (2007) 1164), the same problem as the bound-constrained
+// quadratic programme min 1/2 p.Kp - p.h, 0 <= p <= H, mean(p) = P, solved by accelerated
+// projected gradients with adaptive restart (Beck & Teboulle, SIAM J. Imaging Sci. 2 (2009)
+// 183; O'Donoghue & Candes, Found. Comput. Math. 15 (2015) 715; for rough contact: Bugnicourt
+// et al., Tribol. Lett. 66 (2018) 29), the projection onto the capped set being exact.
+#pragma once
+
+#include "roughContact/bem/HalfSpaceOperator.hpp"
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace roughContact {
+
+struct PolonskyKeerOptions {
+    /// Convergence: the relative residual (below) at most this.
+    double tolerance = 1e-8;
+    std::size_t maxIterations = 20000;
+    /// Perfectly plastic cap p <= H [Pa]; none when unset.
+    std::optional<double> hardness;
+};
+
+/// The solution at one mean pressure.
+struct ContactSolution {
+    std::vector<double> pressure; ///< p [Pa] per cell (>= 0; <= H with the cap)
+    std::vector<double> gap;      ///< separation s [m] per cell: 0 in contact, > 0 apart
+    double meanPressure = 0.0;    ///< P = mean of p over all cells [Pa]
+    double areaFraction = 0.0;    ///< A_r/A_n: the fraction of cells with p > 0
+    double plasticFraction = 0.0; ///< the fraction of cells at p = H
+    /// Mean separation [m]: the separation averaged over the nominal area, contact counting 0.
+    /// Periodic: relative to the mean surface displacement (set 0 there, see HalfSpaceOperator),
+    /// so that d(mean separation) is the rigid approach.
+    double meanSeparation = 0.0;
+    std::size_t iterations = 0;
+    /// max(sum |p - p_previous| / sum p of the last iteration (Polonsky & Keer's criterion),
+    /// rms separation on the elastic contact set / rms height): 0 for the exact solution.
+    double residual = 0.0;
+    bool converged = false;
+};
+
+class PolonskyKeer {
+public:
+    /// heights [m] (nx * ny, the operator's grid; peaks positive, the rigid surface pressed
+    /// into the half-space). The heights are used as given (detrend them first).
+    PolonskyKeer(const HalfSpaceOperator& op, std::vector<double> heights, PolonskyKeerOptions options = {});
+
+    /// The contact at mean pressure P [Pa] (> 0; at most H with the cap). warmStart: a previous
+    /// solution's pressure (e.g. at a neighbouring load), scaled to P as the first iterate.
+    ContactSolution solve(double meanPressure, const std::vector<double>* warmStart = nullptr) const;
+
+    const HalfSpaceOperator& op() const noexcept { return op_; }
+    const std::vector<double>& heights() const noexcept { return h_; }
+    const PolonskyKeerOptions& options() const noexcept { return options_; }
+
+private:
+    ContactSolution solveCapped(double meanPressure, const std::vector<double>* warmStart) const;
+    ContactSolution finish(std::vector<double> p, double meanPressure, ContactSolution out) const;
+
+    const HalfSpaceOperator& op_;
+    std::vector<double> h_;
+    double hScale_; ///< rms height (for the residual)
+    PolonskyKeerOptions options_;
+};
+
+/// The conductance of the contact set: the heat flux between two half-spaces of conductivities
+/// k1, k2 that touch on the cells of `contact` (true: in contact) at a uniform temperature jump,
+/// over that jump and the nominal area, divided by k_s = 2 k1 k2 / (k1 + k2): h_c/k_s [1/m].
+/// The temperature rise of a half-space under a surface flux has the same 1/r kernel as the
+/// displacement under a pressure (with 1/(2 pi k) for 1/(pi E') per body), so with x solving
+/// K x = 1 on the contact set (x = 0 elsewhere; conjugate gradients), h_c/k_s = mean(x) / E':
+/// k_s/E' times the contact's stiffness per nominal area. For elastic contact this is Barber's
+/// relation h_c = (k_s/E') dP/d(-mean separation) (Barber, Proc. R. Soc. A 459 (2003) 53).
+/// +inf when every cell is in contact; 0 when none is.
+struct SpotConductance {
+    double perConductivity = 0.0; ///< h_c/k_s [1/m]
+    std::size_t iterations = 0;
+    double residual = 0.0; ///< ||K x - 1|| / ||1|| on the contact set
+    bool converged = false;
+};
+SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<bool>& contact,
+                                double tolerance = 1e-10, std::size_t maxIterations = 20000);
+
+} // namespace roughContact

@@ -1,0 +1,324 @@
+// The boundary-element contact solver held to exact solutions: Love's rectangle, the periodic
+// half-space's Fourier multiplier, Westergaard's sinusoidal ridge (partial and complete
+// contact), Hertz, the complete contact of a bisinusoid, Holm's conductance of one spot,
+// Barber's relation between conductance and mean separation, and the plastic cap.
+#include "roughContact/Error.hpp"
+#include "roughContact/bem/HalfSpaceOperator.hpp"
+#include "roughContact/bem/PolonskyKeer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+using namespace roughContact;
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+const double Ep = 100e9; // E' [Pa]
+
+// z = amplitude cos(2 pi x / lambda) on nx x ny cells of one period lambda along x.
+std::vector<double> ridge(std::size_t nx, std::size_t ny, double amplitude)
+{
+    std::vector<double> h(nx * ny);
+    for (std::size_t iy = 0; iy < ny; ++iy) {
+        for (std::size_t ix = 0; ix < nx; ++ix) {
+            h[iy * nx + ix] = amplitude * std::cos(2 * pi * double(ix) / double(nx));
+        }
+    }
+    return h;
+}
+
+// A Gaussian random periodic surface with a power-law spectrum (Hurst exponent 0.8), rms 1.
+std::vector<double> randomSurface(std::size_t n, unsigned seed)
+{
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> phase(0.0, 2 * pi);
+    std::vector<double> h(n * n, 0.0);
+    const int kmax = int(n) / 4;
+    for (int kx = -kmax; kx <= kmax; ++kx) {
+        for (int ky = 0; ky <= kmax; ++ky) {
+            const double k = std::hypot(kx, ky);
+            if (k < 2 || k > kmax || (ky == 0 && kx < 0)) {
+                continue;
+            }
+            const double a = std::pow(k, -(1.0 + 0.8));
+            const double ph = phase(rng);
+            for (std::size_t iy = 0; iy < n; ++iy) {
+                for (std::size_t ix = 0; ix < n; ++ix) {
+                    h[iy * n + ix] +=
+                        a * std::cos(2 * pi * (kx * double(ix) + ky * double(iy)) / double(n) + ph);
+                }
+            }
+        }
+    }
+    double s = 0.0;
+    for (double v : h) {
+        s += v * v;
+    }
+    s = std::sqrt(s / double(h.size()));
+    for (double& v : h) {
+        v /= s;
+    }
+    return h;
+}
+} // namespace
+
+TEST(HalfSpaceOperator, LoveRectangleAgainstItsLimits)
+{
+    const double a = 1e-6;
+    // Centre of a square of side 2a: the integral of 1/r over it is 8 a ln(1 + sqrt 2).
+    EXPECT_NEAR(HalfSpaceOperator::loveRectangle(0, 0, a, a, 1.0, Ep),
+                8 * a * std::log(1 + std::sqrt(2.0)) / (pi * Ep), 1e-14 * a / Ep);
+    // Far away it is a point force: p (4 a b) / (pi E' r), to O((a/r)^2).
+    for (double r : {100 * a, 1000 * a}) {
+        const double u = HalfSpaceOperator::loveRectangle(0.6 * r, 0.8 * r, a, 2 * a, 1.0, Ep);
+        EXPECT_NEAR(u / (8 * a * a / (pi * Ep * r)), 1.0, 2 * (a / r) * (a / r)) << r;
+    }
+}
+
+TEST(HalfSpaceOperator, PeriodicMultiplierIsExactForOneWave)
+{
+    // p = p0 cos(2 pi x / L): u = 2 p0 cos / (E' q), q = 2 pi / L (to round-off).
+    const std::size_t nx = 64;
+    const std::size_t ny = 8;
+    const double L = 1e-4;
+    const HalfSpaceOperator K(nx, ny, L / nx, 2e-6, Ep, true);
+    const std::vector<double> p = ridge(nx, ny, 1e6);
+    const std::vector<double> u = K.apply(p);
+    const double q = 2 * pi / L;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        EXPECT_NEAR(u[i], 2 * p[i] / (Ep * q), 1e-12 * 2e6 / (Ep * q)) << i;
+    }
+}
+
+TEST(PolonskyKeer, WestergaardPartialAndCompleteContact)
+{
+    // A sinusoidal ridge z = D cos(2 pi x / lambda) on an elastic half-space (Westergaard 1939;
+    // Johnson 1985 §13.2): complete contact from p* = pi E' D / lambda; below it the contact
+    // half-width a has P / p* = sin^2(pi a / lambda) and the pressure peaks at 2 P / sin(pi a / lambda).
+    const std::size_t nx = 512;
+    const std::size_t ny = 4;
+    const double lambda = 1e-4;
+    const double D = 1e-6;
+    const HalfSpaceOperator K(nx, ny, lambda / nx, lambda / nx, Ep, true);
+    const PolonskyKeer solver(K, ridge(nx, ny, D));
+    const double pStar = pi * Ep * D / lambda;
+    for (double ratio : {0.05, 0.25, 0.6}) {
+        const ContactSolution s = solver.solve(ratio * pStar);
+        ASSERT_TRUE(s.converged) << ratio << " residual " << s.residual;
+        const double sinA = std::sqrt(ratio);
+        const double area = 2 * std::asin(sinA) / pi; // 2a / lambda
+        const double peak = 2 * ratio * pStar / sinA;
+        double pmax = 0.0;
+        for (double v : s.pressure) {
+            pmax = std::max(pmax, v);
+        }
+        // 1 %: the bound; the grid resolves the area to 1/512 = 0.2 %.
+        EXPECT_NEAR(s.areaFraction / area, 1.0, 0.01) << ratio;
+        EXPECT_NEAR(pmax / peak, 1.0, 0.01) << ratio;
+    }
+    // Complete contact: p = P + p* cos(2 pi x / lambda) everywhere.
+    const double P = 1.2 * pStar;
+    const ContactSolution s = solver.solve(P);
+    ASSERT_TRUE(s.converged);
+    EXPECT_EQ(s.areaFraction, 1.0);
+    for (std::size_t ix = 0; ix < nx; ++ix) {
+        const double exact = P + pStar * std::cos(2 * pi * double(ix) / double(nx));
+        EXPECT_NEAR(s.pressure[ix], exact, 0.01 * pStar) << ix;
+    }
+    EXPECT_NEAR(s.meanSeparation, 0.0, 1e-12 * D);
+}
+
+TEST(PolonskyKeer, WestergaardConvergesUnderGridRefinement)
+{
+    // The area error at P = p*/4 (exact A_r/A_n = 1/3) on 32 to 512 cells a period: printed,
+    // and falling with the cell size.
+    const double lambda = 1e-4;
+    const double D = 1e-6;
+    const double pStar = pi * Ep * D / lambda;
+    double previous = 1.0;
+    for (std::size_t nx : {32u, 64u, 128u, 256u, 512u}) {
+        const HalfSpaceOperator K(nx, 4, lambda / double(nx), lambda / double(nx), Ep, true);
+        const ContactSolution s = PolonskyKeer(K, ridge(nx, 4, D)).solve(0.25 * pStar);
+        const double error = std::abs(s.areaFraction * 3.0 - 1.0);
+        std::printf(
+            "Westergaard, %4zu cells a period: A_r/A_n = %.6f (exact 1/3), error %.2e, %zu iterations\n", nx,
+            s.areaFraction, error, s.iterations);
+        EXPECT_LE(error, std::max(previous, 2.0 / double(nx))) << nx;
+        previous = error;
+    }
+}
+
+TEST(PolonskyKeer, HertzContactRadiusAndCentralPressure)
+{
+    // A paraboloid z = -r^2 / (2 R) pressed by F (Hertz; Johnson 1985 §4.2):
+    // a = (3 F R / (4 E'))^(1/3), p0 = 3 F / (2 pi a^2). Non-periodic: one sphere on a patch.
+    const std::size_t n = 160;
+    const double R = 1e-3;
+    const double L = 1e-4;
+    const double dx = L / double(n);
+    std::vector<double> h(n * n);
+    for (std::size_t iy = 0; iy < n; ++iy) {
+        for (std::size_t ix = 0; ix < n; ++ix) {
+            const double x = (double(ix) + 0.5 - 0.5 * double(n)) * dx;
+            const double y = (double(iy) + 0.5 - 0.5 * double(n)) * dx;
+            h[iy * n + ix] = -(x * x + y * y) / (2 * R);
+        }
+    }
+    const HalfSpaceOperator K(n, n, dx, dx, Ep, false);
+    const PolonskyKeer solver(K, h);
+    const double aTarget = 0.25 * L; // a quarter of the patch: 40 cells
+    const double F = 4 * Ep * aTarget * aTarget * aTarget / (3 * R);
+    const ContactSolution s = solver.solve(F / (L * L));
+    ASSERT_TRUE(s.converged) << s.residual;
+    const double a = std::sqrt(s.areaFraction * L * L / pi);
+    double p0 = 0.0;
+    for (double v : s.pressure) {
+        p0 = std::max(p0, v);
+    }
+    // 2 %: the bound, met at 40 cells a radius (the cells' staircase edge).
+    EXPECT_NEAR(a / aTarget, 1.0, 0.02);
+    EXPECT_NEAR(p0 / (3 * F / (2 * pi * aTarget * aTarget)), 1.0, 0.02);
+}
+
+TEST(PolonskyKeer, BisinusoidCompleteContactPressure)
+{
+    // z = D cos(2 pi x / lambda) cos(2 pi y / lambda): complete contact from
+    // p* = sqrt(2) pi E' D / lambda (Johnson, Greenwood & Higginson, Int. J. Mech. Sci. 27
+    // (1985) 383): the pressure is then P + p* cos cos, and it touches 0 at P = p*.
+    const std::size_t n = 64;
+    const double lambda = 1e-4;
+    const double D = 1e-6;
+    std::vector<double> h(n * n);
+    for (std::size_t iy = 0; iy < n; ++iy) {
+        for (std::size_t ix = 0; ix < n; ++ix) {
+            h[iy * n + ix] =
+                D * std::cos(2 * pi * double(ix) / double(n)) * std::cos(2 * pi * double(iy) / double(n));
+        }
+    }
+    const HalfSpaceOperator K(n, n, lambda / n, lambda / n, Ep, true);
+    const PolonskyKeer solver(K, h);
+    const double pStar = std::sqrt(2.0) * pi * Ep * D / lambda;
+    EXPECT_EQ(solver.solve(1.02 * pStar).areaFraction, 1.0);
+    EXPECT_LT(solver.solve(0.98 * pStar).areaFraction, 1.0);
+    const ContactSolution s = solver.solve(1.5 * pStar);
+    for (std::size_t i = 0; i < n * n; ++i) {
+        EXPECT_NEAR(s.pressure[i], 1.5 * pStar + pStar * h[i] / D, 1e-6 * pStar) << i;
+    }
+}
+
+TEST(SpotConductance, HolmsConductanceOfOneSpot)
+{
+    // One circular spot of radius a between two half-spaces: h_c A_n = 2 a k_s (Holm; the
+    // flat punch's stiffness 2 a E'). The disc is the cells whose centres lie inside it; a is
+    // the radius of the disc of the same area.
+    const std::size_t n = 128;
+    const double L = 1e-4;
+    const double dx = L / double(n);
+    const HalfSpaceOperator K(n, n, dx, dx, Ep, false);
+    std::vector<bool> contact(n * n, false);
+    std::size_t cells = 0;
+    for (std::size_t iy = 0; iy < n; ++iy) {
+        for (std::size_t ix = 0; ix < n; ++ix) {
+            const double x = (double(ix) + 0.5 - 0.5 * double(n)) * dx;
+            const double y = (double(iy) + 0.5 - 0.5 * double(n)) * dx;
+            if (std::hypot(x, y) < 0.2 * L) {
+                contact[iy * n + ix] = true;
+                ++cells;
+            }
+        }
+    }
+    const double a = std::sqrt(double(cells) * dx * dx / pi);
+    const SpotConductance c = spotConductance(K, contact);
+    ASSERT_TRUE(c.converged) << c.residual;
+    EXPECT_NEAR(c.perConductivity * L * L / (2 * a), 1.0, 0.02);
+}
+
+TEST(SpotConductance, BarbersRelationOnARoughSurface)
+{
+    // Elastic contact: h_c / k_s = (1/E') dP/d(-mean separation) (Barber 2003), here by a
+    // central difference of two solves against the linear solve at the middle load. 2 %: the
+    // issue's bound; the difference's own error is O(eps^2) = 1e-4.
+    const std::size_t n = 128;
+    const double L = 1e-4;
+    std::vector<double> h = randomSurface(n, 11);
+    for (double& v : h) {
+        v *= 1e-7;
+    }
+    const HalfSpaceOperator K(n, n, L / n, L / n, Ep, true);
+    const PolonskyKeer solver(K, h);
+    for (double P : {1e-3 * Ep * 1e-3, 1e-2 * Ep * 1e-3}) {
+        const double eps = 0.01;
+        const ContactSolution mid = solver.solve(P);
+        const ContactSolution lo = solver.solve(P * (1 - eps), &mid.pressure);
+        const ContactSolution hi = solver.solve(P * (1 + eps), &mid.pressure);
+        ASSERT_TRUE(mid.converged && lo.converged && hi.converged);
+        const double barber = (2 * eps * P) / (lo.meanSeparation - hi.meanSeparation) / Ep;
+        std::vector<bool> contact(n * n);
+        for (std::size_t i = 0; i < n * n; ++i) {
+            contact[i] = mid.pressure[i] > 0.0;
+        }
+        const SpotConductance c = spotConductance(K, contact);
+        ASSERT_TRUE(c.converged);
+        std::printf("P = %.3g Pa: A_r/A_n = %.4f, h_c/k_s = %.6g 1/m (spots), %.6g 1/m (Barber)\n", P,
+                    mid.areaFraction, c.perConductivity, barber);
+        EXPECT_NEAR(c.perConductivity / barber, 1.0, 0.02) << P;
+    }
+}
+
+TEST(PolonskyKeer, PlasticCapHoldsTheLoadAtTheHardness)
+{
+    // With p <= H every contact point carries at most H, so A_r >= F / H; with H far below the
+    // elastic pressures every contact point flows and A_r = F / H exactly (to the cell).
+    const std::size_t n = 64;
+    const double L = 1e-4;
+    std::vector<double> h = randomSurface(n, 5);
+    for (double& v : h) {
+        v *= 1e-7;
+    }
+    const HalfSpaceOperator K(n, n, L / n, L / n, Ep, true);
+    const double P = 1e-3 * Ep * 1e-2;
+    const ContactSolution elastic = PolonskyKeer(K, h).solve(P);
+    double pmax = 0.0;
+    for (double v : elastic.pressure) {
+        pmax = std::max(pmax, v);
+    }
+    for (double H : {0.5 * pmax, 0.1 * pmax}) {
+        PolonskyKeerOptions o;
+        o.hardness = H;
+        const ContactSolution s = PolonskyKeer(K, h, o).solve(P);
+        ASSERT_TRUE(s.converged) << H << ": residual " << s.residual << " after " << s.iterations;
+        double smax = 0.0;
+        double mean = 0.0;
+        for (double v : s.pressure) {
+            smax = std::max(smax, v);
+            mean += v / double(n * n);
+        }
+        EXPECT_LE(smax, H);
+        EXPECT_NEAR(mean, P, 1e-9 * P);
+        EXPECT_GE(s.areaFraction, P / H - 1e-12);
+        EXPECT_GE(s.areaFraction, elastic.areaFraction);
+    }
+    // A cap above every elastic pressure changes nothing: the capped solver (projected
+    // gradients) finds the elastic solver's (Polonsky-Keer) solution.
+    {
+        PolonskyKeerOptions o;
+        o.hardness = 10 * pmax;
+        const ContactSolution s = PolonskyKeer(K, h, o).solve(P);
+        ASSERT_TRUE(s.converged) << s.residual;
+        EXPECT_EQ(s.plasticFraction, 0.0);
+        EXPECT_NEAR(s.areaFraction, elastic.areaFraction, 2.0 / double(n * n));
+        for (std::size_t i = 0; i < n * n; ++i) {
+            EXPECT_NEAR(s.pressure[i], elastic.pressure[i], 1e-3 * pmax) << i;
+        }
+    }
+    PolonskyKeerOptions o;
+    o.hardness = 2 * P; // far below the elastic peak pressures
+    const ContactSolution s = PolonskyKeer(K, h, o).solve(P);
+    ASSERT_TRUE(s.converged) << s.residual;
+    EXPECT_NEAR(s.areaFraction, P / *o.hardness, 1.0 / double(n * n));
+    EXPECT_GT(s.plasticFraction, 0.9 * s.areaFraction);
+}
