@@ -5,11 +5,14 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/bem/HalfSpaceOperator.hpp"
 #include "roughContact/bem/PolonskyKeer.hpp"
+#include "roughContact/models/BoundaryElement.hpp"
+#include "roughContact/surface/ArealSurface.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -321,4 +324,108 @@ TEST(PolonskyKeer, PlasticCapHoldsTheLoadAtTheHardness)
     ASSERT_TRUE(s.converged) << s.residual;
     EXPECT_NEAR(s.areaFraction, P / *o.hardness, 1.0 / double(n * n));
     EXPECT_GT(s.plasticFraction, 0.9 * s.areaFraction);
+}
+
+namespace {
+ArealSurface arealOf(const std::vector<double>& h, std::size_t n, double L, const std::string& name)
+{
+    return ArealSurface(h, n, n, L / double(n), L / double(n), name);
+}
+} // namespace
+
+TEST(BoundaryElementModel, DependsOnTheCompositeOnly)
+{
+    // Two rough surfaces and their composite: the gap depends on h1 + h2 only, so moving
+    // roughness from one to the other changes nothing.
+    const std::size_t n = 64;
+    const double L = 1e-4;
+    std::vector<double> h1 = randomSurface(n, 1);
+    std::vector<double> h2 = randomSurface(n, 2);
+    std::vector<double> a(n * n), b(n * n), sum(n * n);
+    for (std::size_t i = 0; i < n * n; ++i) {
+        h1[i] *= 1e-7;
+        h2[i] *= 5e-8;
+        a[i] = h1[i] + 0.3 * h2[i];
+        b[i] = 0.7 * h2[i];
+        sum[i] = h1[i] + h2[i];
+    }
+    BoundaryElementOptions o;
+    o.periodic = true;
+    const BoundaryElementModel pair(compositeSurface(arealOf(h1, n, L, "1"), arealOf(h2, n, L, "2")), Ep, o);
+    const BoundaryElementModel moved(compositeSurface(arealOf(a, n, L, "a"), arealOf(b, n, L, "b")), Ep, o);
+    const BoundaryElementModel one(arealOf(sum, n, L, "sum"), Ep, o);
+    for (double load : {1e-4, 1e-3}) {
+        const BoundaryElementPoint p = pair.solve(load);
+        const BoundaryElementPoint q = moved.solve(load);
+        const BoundaryElementPoint r = one.solve(load);
+        EXPECT_EQ(p.areaFraction, r.areaFraction) << load;
+        EXPECT_NEAR(q.areaFraction, r.areaFraction, 1.0 / double(n * n)) << load; // round-off in the sum
+        EXPECT_NEAR(p.conductancePerConductivity, r.conductancePerConductivity,
+                    1e-9 * r.conductancePerConductivity);
+        EXPECT_NEAR(p.meanSeparation, r.meanSeparation, 1e-9 * r.meanSeparation);
+    }
+    EXPECT_THROW(compositeSurface(arealOf(h1, n, L, "1"), arealOf(h2, n, 2 * L, "2")), InputError);
+}
+
+TEST(BoundaryElementModel, CurveWithWarmStartsEqualsColdSolves)
+{
+    const std::size_t n = 64;
+    const double L = 1e-4;
+    std::vector<double> h = randomSurface(n, 9);
+    for (double& v : h) {
+        v *= 1e-7;
+    }
+    BoundaryElementOptions o;
+    o.periodic = true;
+    const BoundaryElementModel model(arealOf(h, n, L, "random"), Ep, o);
+    const std::vector<double> loads = {3e-3, 1e-4, 1e-3, 3e-4};
+    std::size_t calls = 0;
+    const std::vector<BoundaryElementPoint> curve =
+        model.curve(loads, [&](std::size_t done, std::size_t total, const BoundaryElementPoint&) {
+            ++calls;
+            EXPECT_EQ(total, loads.size());
+            EXPECT_EQ(done, calls);
+        });
+    EXPECT_EQ(calls, loads.size());
+    double previousArea = 0.0;
+    for (std::size_t k = 0; k < loads.size(); ++k) {
+        const BoundaryElementPoint cold = model.solve(loads[k]);
+        EXPECT_EQ(curve[k].load, loads[k]);
+        // The same solution to the solver's tolerance: the contact sets may differ by a cell.
+        EXPECT_NEAR(curve[k].areaFraction, cold.areaFraction, 2.0 / double(n * n)) << loads[k];
+        EXPECT_NEAR(curve[k].conductancePerConductivity / cold.conductancePerConductivity, 1.0, 1e-3)
+            << loads[k];
+        EXPECT_TRUE(std::isfinite(cold.conductancePerConductivity) && cold.conductancePerConductivity > 0.0);
+        previousArea = std::max(previousArea, cold.areaFraction);
+    }
+    EXPECT_GT(curve[0].areaFraction, curve[1].areaFraction); // 3e-3 above 1e-4
+    EXPECT_EQ(model.solve(0.0).areaFraction, 0.0);
+}
+
+TEST(BoundaryElementModel, CompleteContactAndHardnessLimits)
+{
+    // A sinusoidal ridge beyond Westergaard's p*: complete contact, h_c infinite. With a
+    // hardness below the load every point flows: complete contact too.
+    const std::size_t n = 64;
+    const double L = 1e-4;
+    const double D = 1e-6;
+    BoundaryElementOptions o;
+    o.periodic = true;
+    const BoundaryElementModel model(ArealSurface(ridge(n, n, D), n, n, L / n, L / n, "ridge"), Ep, o);
+    const double pStar = pi * Ep * D / L;
+    const BoundaryElementPoint full = model.solve(1.5 * pStar / Ep);
+    EXPECT_EQ(full.areaFraction, 1.0);
+    EXPECT_EQ(full.conductancePerConductivity, std::numeric_limits<double>::infinity());
+    const BoundaryElementPoint part = model.solve(0.25 * pStar / Ep);
+    EXPECT_NEAR(part.areaFraction, 1.0 / 3.0, 2.0 / double(n));
+    EXPECT_TRUE(std::isfinite(part.conductancePerConductivity));
+    o.hardness = 0.1 * pStar;
+    const BoundaryElementModel soft(ArealSurface(ridge(n, n, D), n, n, L / n, L / n, "ridge"), Ep, o);
+    EXPECT_EQ(soft.solve(0.2 * pStar / Ep).areaFraction, 1.0);
+    EXPECT_NEAR(soft.solve(0.05 * pStar / Ep).areaFraction, 0.5, 1.0 / double(n)); // F/H
+    // Memory checked before allocating.
+    BoundaryElementOptions tiny;
+    tiny.memoryLimit = 1e3;
+    EXPECT_THROW(BoundaryElementModel(ArealSurface(ridge(n, n, D), n, n, L / n, L / n, "ridge"), Ep, tiny),
+                 ParameterError);
 }

@@ -44,7 +44,6 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
         return solveCapped(P, warmStart);
     }
     const std::size_t n = h_.size();
-    const double H = std::numeric_limits<double>::infinity();
     const double W = P * double(n); // the sum of the cells' pressures
     std::vector<double> p(n, P);
     if (warmStart != nullptr && warmStart->size() == n) {
@@ -54,63 +53,57 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
         }
         if (sum > 0.0) {
             for (std::size_t i = 0; i < n; ++i) {
-                p[i] = std::min(H, (*warmStart)[i] * W / sum);
+                p[i] = std::max(0.0, (*warmStart)[i]) * W / sum;
             }
         }
     }
-    std::vector<double> u(n);
-    std::vector<double> g(n);
+    std::vector<double> u(n); // K p
+    std::vector<double> g(n); // separation: u - h less its mean on the contact set
     std::vector<double> t(n, 0.0);
     std::vector<double> r(n);
-    std::vector<double> pOld(n);
-    std::vector<char> active(n);
     double delta = 0.0;
     double Gold = 1.0;
-    double shift = 0.0; // the last iteration's mean gap on the active set (s = g - shift)
     ContactSolution out;
-    bool firstIteration = true;
+    bool uCurrent = false; // u = K p already (updated by linearity in the last iteration)
+    std::size_t sinceExact = 0;
     for (std::size_t it = 1; it <= options_.maxIterations; ++it) {
-        op_.apply(p.data(), u.data());
-        for (std::size_t i = 0; i < n; ++i) {
-            g[i] = u[i] - h_[i];
+        // The displacement: by an FFT, or (when the last step neither clamped nor added a
+        // point) by linearity, K(k (p - tau t)) = k (u - tau r); an exact one every 20
+        // iterations keeps round-off from accumulating.
+        if (!uCurrent || sinceExact >= 20) {
+            op_.apply(p.data(), u.data());
+            sinceExact = 0;
         }
-        // The active (elastic contact) set: p > 0, except plastic points (p = H) that the
-        // surface still presses into (separation <= 0).
         std::size_t na = 0;
         double gbar = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
-            const bool plasticHeld = p[i] >= H && (firstIteration || g[i] - shift <= 0.0);
-            active[i] = p[i] > 0.0 && !plasticHeld;
-            if (active[i]) {
+            g[i] = u[i] - h_[i];
+            if (p[i] > 0.0) {
                 gbar += g[i];
                 ++na;
             }
         }
-        firstIteration = false;
         if (na == 0) {
-            // Every loaded point is plastic: nothing left for the elastic solve.
-            out.converged = true;
-            out.iterations = it;
-            break;
+            throw ParameterError("mean pressure", "no point carries load: the solve lost its contact set");
         }
         gbar /= double(na);
-        shift = gbar;
         double G = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
             g[i] -= gbar;
-            if (active[i]) {
+            if (p[i] > 0.0) {
                 G += g[i] * g[i];
             }
         }
         const double gapResidual = std::sqrt(G / double(na)) / hScale_;
+        const double beta = delta * G / Gold;
         for (std::size_t i = 0; i < n; ++i) {
-            t[i] = active[i] ? g[i] + delta * (G / Gold) * t[i] : 0.0;
+            t[i] = p[i] > 0.0 ? g[i] + beta * t[i] : 0.0;
         }
         Gold = G;
         op_.apply(t.data(), r.data());
         double rbar = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
-            if (active[i]) {
+            if (p[i] > 0.0) {
                 rbar += r[i];
             }
         }
@@ -118,53 +111,45 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
         double num = 0.0;
         double den = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
-            if (active[i]) {
+            if (p[i] > 0.0) {
                 num += g[i] * t[i];
                 den += (r[i] - rbar) * t[i];
             }
         }
         const double tau = den > 0.0 ? num / den : 0.0;
-        pOld = p;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (active[i]) {
-                p[i] = std::clamp(p[i] - tau * t[i], 0.0, H);
-            }
-        }
-        // Overlap: points without pressure that the surface penetrates get some.
+        // The step, the clamp p >= 0 and, where the surface penetrates a point without
+        // pressure, some pressure there (Polonsky & Keer's overlap correction).
+        bool clamped = false;
         bool overlap = false;
+        double sum = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
-            if (p[i] == 0.0 && g[i] < 0.0) {
-                p[i] = std::min(H, -tau * g[i]);
-                overlap = overlap || p[i] > 0.0;
+            const double old = p[i];
+            if (old > 0.0) {
+                const double v = old - tau * t[i];
+                clamped = clamped || v < 0.0;
+                p[i] = std::max(0.0, v);
+            } else if (g[i] < 0.0 && tau > 0.0) {
+                p[i] = -tau * g[i];
+                overlap = true;
             }
+            sum += p[i];
         }
         delta = overlap ? 0.0 : 1.0;
-        // The load: scale the points below H so that the sum is W (the plastic ones hold H).
-        double sumFree = 0.0;
-        double sumHeld = 0.0;
-        for (double v : p) {
-            (v >= H ? sumHeld : sumFree) += v;
-        }
-        if (sumFree > 0.0 && W > sumHeld) {
-            const double k = (W - sumHeld) / sumFree;
-            for (double& v : p) {
-                if (v < H) {
-                    v = std::min(H, v * k);
-                }
-            }
-        } else if (sumFree + sumHeld > 0.0) {
-            const double k = W / (sumFree + sumHeld);
-            for (double& v : p) {
-                v *= k;
-            }
-        }
-        double change = 0.0;
+        // The load: scale to the sum W.
+        const double k = sum > 0.0 ? W / sum : 1.0;
+        uCurrent = !clamped && !overlap;
         for (std::size_t i = 0; i < n; ++i) {
-            change += std::abs(p[i] - pOld[i]);
+            p[i] *= k;
+            if (uCurrent) {
+                u[i] = k * (u[i] - tau * r[i]);
+            }
         }
-        out.residual = std::max(change / W, gapResidual);
+        ++sinceExact;
+        // Converged: the separation vanishes on the contact set (to the tolerance), no point
+        // was clamped and none penetrated: the complementarity conditions hold.
         out.iterations = it;
-        if (out.residual <= options_.tolerance && !overlap) {
+        out.residual = gapResidual;
+        if (gapResidual <= options_.tolerance && !overlap && !clamped) {
             out.converged = true;
             break;
         }

@@ -39,8 +39,10 @@ struct ContactSolution {
     /// so that d(mean separation) is the rigid approach.
     double meanSeparation = 0.0;
     std::size_t iterations = 0;
-    /// max(sum |p - p_previous| / sum p of the last iteration (Polonsky & Keer's criterion),
-    /// rms separation on the elastic contact set / rms height): 0 for the exact solution.
+    /// Elastic solve: the rms separation on the contact set over the rms height, at an
+    /// iterate that clamped no point and found no penetration (then the complementarity
+    /// conditions hold to it): 0 for the exact solution. With the cap: the relative change of
+    /// the pressure over the last step, sum |p - p_previous| / sum p.
     double residual = 0.0;
     bool converged = false;
 };

@@ -1,0 +1,139 @@
+#include "roughContact/models/BoundaryElement.hpp"
+
+#include "roughContact/Error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <sstream>
+
+namespace roughContact {
+
+BoundaryElementModel::BoundaryElementModel(const ArealSurface& surface, double Eprime,
+                                           BoundaryElementOptions options)
+    : surface_(surface.detrended()), Eprime_(requirePositive("reduced modulus E'", Eprime)), options_(options)
+{
+    if (surface_.rms() == 0.0) {
+        throw ParameterError("surface " + surface_.source(), "has zero roughness: nothing to solve");
+    }
+    const std::size_t n = surface_.nx() * surface_.ny();
+    const double bytes =
+        HalfSpaceOperator::bytesFor(surface_.nx(), surface_.ny(), options_.periodic) + 10.0 * 8.0 * double(n);
+    if (bytes > options_.memoryLimit) {
+        std::ostringstream os;
+        os.precision(3);
+        os << surface_.nx() << " x " << surface_.ny() << " points"
+           << (options_.periodic ? "" : " (padded to twice each way)") << " would need about " << bytes / 1e9
+           << " GB, more than the limit of " << options_.memoryLimit / 1e9
+           << " GB; resample the map coarser or cut a part of it";
+        throw ParameterError("boundary-element grid", os.str());
+    }
+    op_ = std::make_unique<HalfSpaceOperator>(surface_.nx(), surface_.ny(), surface_.dx(), surface_.dy(),
+                                              Eprime_, options_.periodic);
+    PolonskyKeerOptions po;
+    po.tolerance = options_.tolerance;
+    po.maxIterations = options_.maxIterations;
+    po.hardness = options_.hardness;
+    solver_ = std::make_unique<PolonskyKeer>(*op_, surface_.heights(), po);
+}
+
+BoundaryElementPoint BoundaryElementModel::solve(double load, std::vector<double>* pressure,
+                                                 const std::vector<double>* warmStart) const
+{
+    BoundaryElementPoint out;
+    out.load = checkLoad(load);
+    if (load == 0.0) {
+        return out;
+    }
+    const double P = load * Eprime_;
+    if (options_.hardness && P >= *options_.hardness) {
+        // Every point flows: complete contact, nothing constricts the flow.
+        out.areaFraction = 1.0;
+        out.plasticFraction = 1.0;
+        out.conductancePerConductivity = std::numeric_limits<double>::infinity();
+        return out;
+    }
+    ContactSolution s = solver_->solve(P, warmStart);
+    if (!s.converged) {
+        std::ostringstream os;
+        os << "the contact solve at F/(A_n E') = " << load << " did not converge in " << s.iterations
+           << " iterations (residual " << s.residual << ", tolerance " << options_.tolerance << ")";
+        throw ParameterError("boundaryElement", os.str());
+    }
+    out.areaFraction = s.areaFraction;
+    out.plasticFraction = s.plasticFraction;
+    out.meanSeparation = s.meanSeparation;
+    out.iterations = s.iterations;
+    out.residual = s.residual;
+    std::vector<bool> contact(s.pressure.size());
+    for (std::size_t i = 0; i < contact.size(); ++i) {
+        contact[i] = s.pressure[i] > 0.0;
+    }
+    const SpotConductance c = spotConductance(*op_, contact, 1e-10, options_.maxIterations);
+    if (!c.converged) {
+        std::ostringstream os;
+        os << "the conductance solve at F/(A_n E') = " << load << " did not converge in " << c.iterations
+           << " iterations (residual " << c.residual << ")";
+        throw ParameterError("boundaryElement", os.str());
+    }
+    out.conductancePerConductivity = c.perConductivity;
+    out.conductanceIterations = c.iterations;
+    out.conductanceResidual = c.residual;
+    if (pressure != nullptr) {
+        *pressure = std::move(s.pressure);
+    }
+    return out;
+}
+
+double BoundaryElementModel::areaFraction(double load) const
+{
+    return solve(load).areaFraction;
+}
+
+std::vector<BoundaryElementPoint> BoundaryElementModel::curve(
+    const std::vector<double>& loads,
+    const std::function<void(std::size_t, std::size_t, const BoundaryElementPoint&)>& progress) const
+{
+    for (double l : loads) {
+        checkLoad(l);
+    }
+    std::vector<std::size_t> order(loads.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return loads[a] < loads[b]; });
+    std::vector<BoundaryElementPoint> out(loads.size());
+    std::vector<double> previous;
+    std::size_t done = 0;
+    for (std::size_t k : order) {
+        std::vector<double> pressure;
+        out[k] = solve(loads[k], &pressure, previous.empty() ? nullptr : &previous);
+        if (!pressure.empty()) {
+            previous = std::move(pressure);
+        }
+        ++done;
+        if (progress) {
+            progress(done, loads.size(), out[k]);
+        }
+    }
+    return out;
+}
+
+ArealSurface compositeSurface(const ArealSurface& a, const ArealSurface& b)
+{
+    if (a.nx() != b.nx() || a.ny() != b.ny() || std::abs(a.dx() - b.dx()) > 1e-12 * a.dx() ||
+        std::abs(a.dy() - b.dy()) > 1e-12 * a.dy()) {
+        std::ostringstream os;
+        os << "the two surfaces must share one grid for their composite: " << a.nx() << " x " << a.ny()
+           << " at " << a.dx() << " x " << a.dy() << " m and " << b.nx() << " x " << b.ny() << " at "
+           << b.dx() << " x " << b.dy() << " m";
+        throw InputError(b.source(), 0, os.str());
+    }
+    std::vector<double> z(a.heights().size());
+    for (std::size_t i = 0; i < z.size(); ++i) {
+        z[i] = a.heights()[i] + b.heights()[i];
+    }
+    return ArealSurface(std::move(z), a.nx(), a.ny(), a.dx(), a.dy(), a.source() + " + " + b.source());
+}
+
+} // namespace roughContact

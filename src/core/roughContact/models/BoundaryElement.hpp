@@ -1,0 +1,81 @@
+// The exact reference: the boundary-element contact of an areal surface (bem/PolonskyKeer) as
+// a contact model, with the exact contact conductance of its contact set.
+#pragma once
+
+#include "roughContact/bem/HalfSpaceOperator.hpp"
+#include "roughContact/bem/PolonskyKeer.hpp"
+#include "roughContact/models/ContactModel.hpp"
+#include "roughContact/surface/ArealSurface.hpp"
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace roughContact {
+
+struct BoundaryElementOptions {
+    /// Solve the surface as one period of a periodic surface (synthesized surfaces are);
+    /// otherwise (measured maps) without wrap-around: zero-padded, the surface a patch of an
+    /// unbounded half-space loaded only on the patch.
+    bool periodic = false;
+    /// Perfectly plastic cap p <= H [Pa]; none when unset.
+    std::optional<double> hardness;
+    double tolerance = 1e-8;
+    std::size_t maxIterations = 20000;
+    /// The most memory [bytes] the solver may take (checked before allocating).
+    double memoryLimit = 8e9;
+};
+
+/// One load point of a boundary-element curve.
+struct BoundaryElementPoint {
+    double load = 0.0;                       ///< F/(A_n E')
+    double areaFraction = 0.0;               ///< A_r/A_n
+    double plasticFraction = 0.0;            ///< fraction of A_n at p = H
+    double meanSeparation = 0.0;             ///< [m] (PolonskyKeer.hpp: ContactSolution)
+    double conductancePerConductivity = 0.0; ///< h_c/k_s [1/m]: +inf at complete contact
+    std::size_t iterations = 0;              ///< contact solve
+    double residual = 0.0;                   ///< contact solve
+    std::size_t conductanceIterations = 0;
+    double conductanceResidual = 0.0;
+};
+
+class BoundaryElementModel final : public ContactModel {
+public:
+    /// surface: the composite surface (compositeSurface() of two rough ones), detrended here;
+    /// Eprime: E' of the pair.
+    BoundaryElementModel(const ArealSurface& surface, double Eprime, BoundaryElementOptions options = {});
+
+    std::string name() const override { return "boundaryElement"; }
+    /// A_r/A_n at F/(A_n E'); ParameterError when the solve does not converge.
+    double areaFraction(double load) const override;
+    /// Everything at one load; warmStart: a previous solution's pressure field.
+    BoundaryElementPoint solve(double load, std::vector<double>* pressure = nullptr,
+                               const std::vector<double>* warmStart = nullptr) const;
+    /// A curve: loads solved in increasing order, each warm-started from the one below;
+    /// returned in the order given. progress (optional) is called after each point.
+    std::vector<BoundaryElementPoint>
+    curve(const std::vector<double>& loads,
+          const std::function<void(std::size_t done, std::size_t total, const BoundaryElementPoint&)>&
+              progress = {}) const;
+
+    const ArealSurface& surface() const noexcept { return surface_; }
+    double reducedModulus() const noexcept { return Eprime_; }
+    const BoundaryElementOptions& options() const noexcept { return options_; }
+
+private:
+    ArealSurface surface_;
+    double Eprime_;
+    BoundaryElementOptions options_;
+    std::unique_ptr<HalfSpaceOperator> op_;
+    std::unique_ptr<PolonskyKeer> solver_;
+};
+
+/// The composite of two rough surfaces on the same grid, each given as its heights towards the
+/// other: the gap between them is that of their sum against a flat (Johnson 1985 §13.1), so
+/// h = h1 + h2. InputError when the grids differ.
+ArealSurface compositeSurface(const ArealSurface& a, const ArealSurface& b);
+
+} // namespace roughContact
