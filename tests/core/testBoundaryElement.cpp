@@ -182,6 +182,8 @@ TEST(PolonskyKeer, HertzContactRadiusAndCentralPressure)
     for (double v : s.pressure) {
         p0 = std::max(p0, v);
     }
+    std::printf("Hertz, %zu x %zu cells, a = 40 cells: a / a_Hertz = %.5f, p0 / p0_Hertz = %.5f, %zu iterations\n", n,
+                n, a / aTarget, p0 / (3 * F / (2 * pi * aTarget * aTarget)), s.iterations);
     // 2 %: the bound, met at 40 cells a radius (the cells' staircase edge).
     EXPECT_NEAR(a / aTarget, 1.0, 0.02);
     EXPECT_NEAR(p0 / (3 * F / (2 * pi * aTarget * aTarget)), 1.0, 0.02);
@@ -237,6 +239,8 @@ TEST(SpotConductance, HolmsConductanceOfOneSpot)
     const double a = std::sqrt(double(cells) * dx * dx / pi);
     const SpotConductance c = spotConductance(K, contact);
     ASSERT_TRUE(c.converged) << c.residual;
+    std::printf("Holm, a spot of %zu cells: h_c A_n / (2 a k_s) = %.5f, %zu CG iterations\n", cells,
+                c.perConductivity * L * L / (2 * a), c.iterations);
     EXPECT_NEAR(c.perConductivity * L * L / (2 * a), 1.0, 0.02);
 }
 
