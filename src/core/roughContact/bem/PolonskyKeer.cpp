@@ -306,7 +306,8 @@ ContactSolution PolonskyKeer::solveCapped(double P, const std::vector<double>* w
 }
 
 SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<bool>& contact,
-                                double tolerance, std::size_t maxIterations)
+                                double tolerance, std::size_t maxIterations,
+                                const std::vector<double>* initial, std::vector<double>* solution)
 {
     const std::size_t n = op.size();
     if (contact.size() != n) {
@@ -329,13 +330,23 @@ SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<b
     std::vector<double> res(n, 0.0);
     std::vector<double> d(n, 0.0);
     std::vector<double> Kd(n);
+    const bool warm = initial != nullptr && initial->size() == n;
+    if (warm) {
+        for (std::size_t i = 0; i < n; ++i) {
+            x[i] = contact[i] ? (*initial)[i] : 0.0;
+        }
+        op.apply(x.data(), Kd.data());
+    }
+    double rr = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
-        res[i] = contact[i] ? 1.0 : 0.0;
+        res[i] = contact[i] ? 1.0 - (warm ? Kd[i] : 0.0) : 0.0;
+        rr += res[i] * res[i];
     }
     d = res;
-    double rr = double(nc);
     const double norm = std::sqrt(double(nc));
-    for (std::size_t it = 1; it <= maxIterations; ++it) {
+    out.residual = std::sqrt(rr) / norm;
+    out.converged = out.residual <= tolerance;
+    for (std::size_t it = 1; it <= maxIterations && !out.converged; ++it) {
         op.apply(d.data(), Kd.data());
         double dKd = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
@@ -370,6 +381,9 @@ SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<b
     }
     mean /= double(n);
     out.perConductivity = mean / op.reducedModulus();
+    if (solution != nullptr) {
+        *solution = std::move(x);
+    }
     return out;
 }
 

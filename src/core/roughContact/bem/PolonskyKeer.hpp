@@ -86,7 +86,11 @@ struct SpotConductance {
     double residual = 0.0; ///< ||K x - 1|| / ||1|| on the contact set
     bool converged = false;
 };
+/// initial: a first guess of x (e.g. the solution at a neighbouring load; its values off the
+/// contact set are ignored); solution: when given, receives x.
 SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<bool>& contact,
-                                double tolerance = 1e-10, std::size_t maxIterations = 20000);
+                                double tolerance = 1e-10, std::size_t maxIterations = 20000,
+                                const std::vector<double>* initial = nullptr,
+                                std::vector<double>* solution = nullptr);
 
 } // namespace roughContact

@@ -39,7 +39,9 @@ BoundaryElementModel::BoundaryElementModel(const ArealSurface& surface, double E
 }
 
 BoundaryElementPoint BoundaryElementModel::solve(double load, std::vector<double>* pressure,
-                                                 const std::vector<double>* warmStart) const
+                                                 const std::vector<double>* warmStart,
+                                                 std::vector<double>* flux,
+                                                 const std::vector<double>* warmFlux) const
 {
     BoundaryElementPoint out;
     out.load = checkLoad(load);
@@ -70,7 +72,7 @@ BoundaryElementPoint BoundaryElementModel::solve(double load, std::vector<double
     for (std::size_t i = 0; i < contact.size(); ++i) {
         contact[i] = s.pressure[i] > 0.0;
     }
-    const SpotConductance c = spotConductance(*op_, contact, 1e-10, options_.maxIterations);
+    const SpotConductance c = spotConductance(*op_, contact, 1e-10, options_.maxIterations, warmFlux, flux);
     if (!c.converged) {
         std::ostringstream os;
         os << "the conductance solve at F/(A_n E') = " << load << " did not converge in " << c.iterations
@@ -104,12 +106,18 @@ std::vector<BoundaryElementPoint> BoundaryElementModel::curve(
                      [&](std::size_t a, std::size_t b) { return loads[a] < loads[b]; });
     std::vector<BoundaryElementPoint> out(loads.size());
     std::vector<double> previous;
+    std::vector<double> previousFlux;
     std::size_t done = 0;
     for (std::size_t k : order) {
         std::vector<double> pressure;
-        out[k] = solve(loads[k], &pressure, previous.empty() ? nullptr : &previous);
+        std::vector<double> flux;
+        out[k] = solve(loads[k], &pressure, previous.empty() ? nullptr : &previous, &flux,
+                       previousFlux.empty() ? nullptr : &previousFlux);
         if (!pressure.empty()) {
             previous = std::move(pressure);
+        }
+        if (!flux.empty()) {
+            previousFlux = std::move(flux);
         }
         ++done;
         if (progress) {

@@ -52,8 +52,12 @@ public:
     /// A_r/A_n at F/(A_n E'); ParameterError when the solve does not converge.
     double areaFraction(double load) const override;
     /// Everything at one load; warmStart: a previous solution's pressure field.
+    /// pressure/flux (optional) receive the pressure field and the conductance solve's field,
+    /// warmStart/warmFlux (optional) are first guesses of them (a neighbouring load's).
     BoundaryElementPoint solve(double load, std::vector<double>* pressure = nullptr,
-                               const std::vector<double>* warmStart = nullptr) const;
+                               const std::vector<double>* warmStart = nullptr,
+                               std::vector<double>* flux = nullptr,
+                               const std::vector<double>* warmFlux = nullptr) const;
     /// A curve: loads solved in increasing order, each warm-started from the one below;
     /// returned in the order given. progress (optional) is called after each point.
     std::vector<BoundaryElementPoint>
