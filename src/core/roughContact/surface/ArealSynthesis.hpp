@@ -11,15 +11,20 @@
 //           = 2 integral_f^inf C2(q) q dq / sqrt(q^2 - f^2),                      (1)
 // the Abel transform of C2, and the inverse Abel transform gives
 //     C2(q) = -(1/pi) integral_q^inf C1'(k) dk / sqrt(k^2 - q^2).                  (2)
-// Source: Jacobs, Junge, Pastewka, "Quantitative characterization of surface topography using
-// spectral analysis", Surf. Topogr.: Metrol. Prop. 5 (2017) 013001, §2 (the 1-D PSD of a line
-// scan of an isotropic surface is the integral of the 2-D PSD over q_y; their Fourier convention
-// puts a factor 1/(2 pi) in front of that integral because their C1 and C2 carry one factor 2 pi
-// per dimension fewer; with the per-dimension normalisation above the factor is 1). The inverse
-// (2) is the standard Abel inversion (Bracewell, The Fourier Transform and its Applications,
-// ch. 13, the Abel transform pair). (1) and (2) only hold for a C2 that is zero beyond some q
-// if C1 is continued by its jump: a C1 that ends at f_c with value C1(f_c) contributes
-// C1(f_c) / (pi sqrt(f_c^2 - q^2)) to (2), an integrable pile-up of 2-D power just inside f_c.
+// Sources. (1) is the projection-slice theorem for an isotropic field (the autocorrelation of a
+// line scan is the areal one on the line, so its Fourier transform is the areal spectrum
+// integrated across); (2) is the Abel inversion of (1). Normalisation checked against Jacobs,
+// Junge, Pastewka, "Quantitative characterization of surface topography using spectral
+// analysis", Surf. Topogr.: Metrol. Prop. 5 (2017) 013001, Eqs. (1) and (4), as quoted in the
+// docstring of self_affine_prefactor in PyCo's/SurfaceTopography's Topography/Generation.py
+// (the paper itself was not at hand): h_rms^2 = (1/(2 pi)) integral_0^inf q C^iso(q) dq and
+// h_rms^2 = (1/pi) integral_0^inf C^1D(q) dq with q = 2 pi f in rad/m. Their C^1D(q) and
+// C^iso(q) are then numerically our C1(f) and C2(f), and (1) in their variables reads
+// C^1D(q_x) = (1/(2 pi)) integral C^iso(sqrt(q_x^2 + q_y^2)) dq_y; integrated over q_x it turns
+// one of their two normalisations into the other, so (1) and theirs agree. tests/core/testArealSynthesis.cpp
+// checks (2) against (1) numerically and against the closed form of a power law. (1) and (2) hold for a C2
+// that is zero beyond some q only if C1 is continued by its jump: a C1 that ends at f_c with value C1(f_c)
+// contributes C1(f_c) / (pi sqrt(f_c^2 - q^2)) to (2), an integrable pile-up of 2-D power just inside f_c.
 // Also used: the power outside a radius r, swapping the integrals of (2),
 //     T(r) = integral over |q| > r of C2 d^2q = -2 integral_r^inf C1'(k) sqrt(k^2 - r^2) dk.  (3)
 //
@@ -31,11 +36,14 @@
 // C1 between the levels is interpolated linearly in f (the levels are one bin apart, so this is
 // the plainest continuous spectrum through them, and (2) and (3) have closed forms for it),
 // continued flat by half a bin below the first level and above the last, and zero outside.
-// An isotropic C2 >= 0 needs C1 non-increasing wherever (2) is to stay >= 0; a measured
-// spectrum (a periodogram: each level scatters by 100 %) is not, so the levels are first made
-// non-increasing by pooling adjacent violators (PAVA, each pooled run of levels takes its mean
-// density), which keeps the variance of every pooled run and so the total variance exactly.
-// A power law is non-increasing already and passes unchanged.
+// A non-increasing C1 makes every term of (2) >= 0, so C2 >= 0 (sufficient, not necessary: a
+// ring of 2-D power gives a C1 that rises towards it). A measured spectrum (a periodogram: each
+// level scatters by 100 %) would make (2) negative just below each level that stands above its
+// neighbours, so the levels are first made non-increasing by pooling adjacent violators (PAVA:
+// each pooled run of levels takes its mean density), which keeps the variance of every pooled
+// run and so the total variance exactly, but moves power within a run (the stand-in's lowest
+// three octaves change by +267 %, +185 % and -43 %, its slope^2 by -1.4 %). A power law is
+// non-increasing already and passes unchanged.
 #pragma once
 
 #include <cstddef>
