@@ -363,3 +363,29 @@ TEST(ArealSynthesis, SeedsAndRefusals)
     EXPECT_NO_THROW(synthesizeIsotropic(s, 8, 1));
     EXPECT_NO_THROW(isotropicGridPower(s, 4096));
 }
+
+// The band on the grid: nothing at the mean, nothing below half a bin under the lowest level or
+// beyond half a bin over the highest (the cells whose annulus |k| +- 1/2 reaches into the band
+// [k_1 - 1/2, K + 1/2] hold power, no other), power at the lowest and highest level.
+TEST(ArealSynthesis, GridBand)
+{
+    const double L = 1e-3;
+    const Spectrum s = Spectrum::powerLaw(1e-9 * std::pow(1.0 / L, 0.8), 0.8, 5.0 / L, 20.0 / L, L);
+    const std::size_t n = 64;
+    const std::vector<double> P = isotropicGridPower(s, n);
+    const std::size_t nc = n / 2 + 1;
+    for (std::size_t iy = 0; iy < n; ++iy) {
+        const double ky = iy <= n / 2 ? double(iy) : double(iy) - double(n);
+        for (std::size_t ix = 0; ix < nc; ++ix) {
+            const double rho = std::hypot(double(ix), ky);
+            const double p = P[iy * nc + ix];
+            EXPECT_GE(p, 0.0);
+            if (rho + 0.5 <= 4.5 || rho - 0.5 >= 20.5) {
+                EXPECT_EQ(p, 0.0) << "k = (" << ix << ", " << ky << ")";
+            }
+            if (rho == 5.0 || rho == 20.0) {
+                EXPECT_GT(p, 0.0) << "k = (" << ix << ", " << ky << ")";
+            }
+        }
+    }
+}

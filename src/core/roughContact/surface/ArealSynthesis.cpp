@@ -240,7 +240,7 @@ ArealSurface synthesizeIsotropic(const Spectrum& lineScan, std::size_t n, std::u
                                  std::string source)
 {
     requireGridSize(n); // before anything is allocated
-    const std::vector<double> power = isotropicGridPower(lineScan, n);
+    std::vector<double> power = isotropicGridPower(lineScan, n);
     const std::size_t nc = n / 2 + 1;
     std::vector<std::complex<double>> A(n * nc);
     std::mt19937_64 gen(seed);
@@ -248,6 +248,7 @@ ArealSurface synthesizeIsotropic(const Spectrum& lineScan, std::size_t n, std::u
         const double phase = 2.0 * pi * uniform(gen);
         A[i] = std::polar(std::sqrt(power[i]), phase);
     }
+    std::vector<double>().swap(power); // its memory back before the heights are allocated
     // Hermitian symmetry in the columns k_x = 0 and n/2, which are their own mirror images:
     // A(k_x, -k_y) = conj(A(k_x, k_y)); the four self-conjugate coefficients real.
     for (std::size_t ix : {std::size_t(0), n / 2}) {
