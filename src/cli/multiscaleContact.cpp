@@ -114,15 +114,18 @@ Spectrum surfaceOf(const Options& o)
         throw ParameterError("--stride", "subsamples a --profile; there is no profile here");
     }
     if (o.profiles.empty() && o.areals.empty() && o.dx) {
-        throw ParameterError("--dx", "is the spacing of a one-column --profile or an --areal matrix; there is "
-                                     "neither here");
+        throw ParameterError("--dx",
+                             "is the spacing of a one-column --profile or an --areal matrix; there is "
+                             "neither here");
     }
     if (o.areals.empty()) {
         if (o.dy) {
-            throw ParameterError("--dy", "is the y spacing of an --areal matrix; there is no areal surface here");
+            throw ParameterError("--dy",
+                                 "is the y spacing of an --areal matrix; there is no areal surface here");
         }
         if (o.direction) {
-            throw ParameterError("--direction", "chooses the line scans of an --areal surface; there is none here");
+            throw ParameterError("--direction",
+                                 "chooses the line scans of an --areal surface; there is none here");
         }
         if (o.fillInvalid) {
             throw ParameterError("--fill-invalid", "is for an --areal X3P file; there is none here");
@@ -324,10 +327,11 @@ int main(int argc, char** argv)
         ->expected(1, 2)
         ->check(CLI::ExistingFile);
     surface
-        ->add_option("--areal", o.areals,
-                     "measured areal surface (height map): an X3P file (.x3p, ISO 25178-72), or a text matrix "
-                     "of heights (rows along y, columns along x) with --dx (and --dy, --units); plane removed, "
-                     "its line scans (--direction) averaged into one spectrum. Twice for two rough surfaces")
+        ->add_option(
+            "--areal", o.areals,
+            "measured areal surface (height map): an X3P file (.x3p, ISO 25178-72), or a text matrix "
+            "of heights (rows along y, columns along x) with --dx (and --dy, --units); plane removed, "
+            "its line scans (--direction) averaged into one spectrum. Twice for two rough surfaces")
         ->expected(1, 2)
         ->check(CLI::ExistingFile);
     surface
@@ -350,7 +354,8 @@ int main(int argc, char** argv)
     app.add_option("--units", o.units,
                    "units of profile and --areal matrix files: m (default), um or nm; a Dektak export's "
                    "own header (um) is used when this is not given");
-    app.add_option("--dx", o.dx, "sample spacing of one-column profiles and of --areal matrices (along x), in --units");
+    app.add_option("--dx", o.dx,
+                   "sample spacing of one-column profiles and of --areal matrices (along x), in --units");
     app.add_option("--dy", o.dy, "spacing along y of an --areal matrix, in --units (default --dx)");
     app.add_option("--direction", o.direction,
                    "line scans of an --areal surface: x (rows, default), y (columns) or both");

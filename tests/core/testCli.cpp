@@ -5,10 +5,10 @@
 #include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/io/X3pReader.hpp"
-#include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/material/Materials.hpp"
 #include "roughContact/models/ModelFactory.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
+#include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 
@@ -93,10 +93,9 @@ TEST(Cli, HelpDocumentsEveryOptionAndModel)
 {
     const CommandResult r = run("--help");
     EXPECT_EQ(r.status, 0);
-    for (const char* opt :
-         {"--profile", "--units", "--spectrum", "--length", "--power-law", "--fractal", "--model", "--E",
-          "--nu", "--Eprime", "--Sy", "--loads", "--load-range", "--levels", "--stride", "--areal", "--dy",
-          "--direction", "--fill-invalid"}) {
+    for (const char* opt : {"--profile", "--units", "--spectrum", "--length", "--power-law", "--fractal",
+                            "--model", "--E", "--nu", "--Eprime", "--Sy", "--loads", "--load-range",
+                            "--levels", "--stride", "--areal", "--dy", "--direction", "--fill-invalid"}) {
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
     }
     for (const std::string& m : modelNames()) {
@@ -256,7 +255,8 @@ TEST(Cli, ArealSurfaceIsTheLibrarys)
     std::ostringstream spacing;
     spacing.precision(17);
     spacing << " --units nm --dx " << map.dx() * 1e9 << " --dy " << map.dy() * 1e9;
-    const CommandResult a = run("--areal '" + x3p + "' --direction both --model hertz" + steel + " --loads 1e-3");
+    const CommandResult a =
+        run("--areal '" + x3p + "' --direction both --model hertz" + steel + " --loads 1e-3");
     const CommandResult b = run("--areal '" + matrix.string() + "'" + spacing.str() +
                                 " --direction both --model hertz" + steel + " --loads 1e-3");
     ASSERT_EQ(a.status, 0) << a.err;
@@ -266,11 +266,14 @@ TEST(Cli, ArealSurfaceIsTheLibrarys)
 
     expectError("--areal '" + x3p + "' --dx 1e-6 --model hertz" + steel + " --loads 1e-3", {"dx", "X3P"});
     expectError("--areal '" + matrix.string() + "' --model hertz" + steel + " --loads 1e-3", {"dx"});
-    expectError("--areal '" + matrix.string() + "' --dx 1 --fill-invalid --model hertz" + steel + " --loads 1e-3",
+    expectError("--areal '" + matrix.string() + "' --dx 1 --fill-invalid --model hertz" + steel +
+                    " --loads 1e-3",
                 {"fillInvalid"});
-    expectError("--areal '" + x3p + "' --direction z --model hertz" + steel + " --loads 1e-3", {"--direction", "'z'"});
+    expectError("--areal '" + x3p + "' --direction z --model hertz" + steel + " --loads 1e-3",
+                {"--direction", "'z'"});
     expectError("--areal '" + x3p + "' --stride 2 --model hertz" + steel + " --loads 1e-3", {"--stride"});
-    expectError("--profile '" + standin + "' --direction y --model hertz" + steel + " --loads 1e-3", {"--direction"});
+    expectError("--profile '" + standin + "' --direction y --model hertz" + steel + " --loads 1e-3",
+                {"--direction"});
     expectError("--profile '" + standin + "' --dy 1 --model hertz" + steel + " --loads 1e-3", {"--dy"});
     expectError("--profile '" + standin + "' --fill-invalid --model hertz" + steel + " --loads 1e-3",
                 {"--fill-invalid"});

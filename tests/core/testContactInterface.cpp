@@ -6,8 +6,8 @@
 #include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/io/X3pReader.hpp"
-#include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/models/ModelFactory.hpp"
+#include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 
 #include <gtest/gtest.h>

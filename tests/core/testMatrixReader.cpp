@@ -24,7 +24,8 @@ class MatrixReaderTest : public roughContactTest::TempDirTest {};
 /// A height that differs at every point and prints with 17 digits: z(ix, iy).
 double height(std::size_t ix, std::size_t iy)
 {
-    return 1e-7 * std::sin(0.37 * static_cast<double>(ix) + 1.1 * static_cast<double>(iy)) + 1e-9 * static_cast<double>(ix);
+    return 1e-7 * std::sin(0.37 * static_cast<double>(ix) + 1.1 * static_cast<double>(iy)) +
+           1e-9 * static_cast<double>(ix);
 }
 
 /// nx columns by ny rows of height(), each row on a line, separated by sep.
@@ -123,7 +124,7 @@ TEST_F(MatrixReaderTest, spacingRequiredAndPositive)
 TEST_F(MatrixReaderTest, raggedRowNamesItsLine)
 {
     std::string text = "# comment\n" + matrix(8, 8); // data rows on lines 2..9
-    text += "1 2 3 4 5 6 7\n";                      // line 10: one short
+    text += "1 2 3 4 5 6 7\n";                       // line 10: one short
     const std::string path = write("ragged.txt", text);
     const std::string m = inputError([&] { readMatrix(path, spacing(1e-6)); }, path, 10);
     EXPECT_NE(m.find("7 columns where line 2 has 8"), std::string::npos) << m;
@@ -154,8 +155,8 @@ TEST_F(MatrixReaderTest, nanAndInfinityNameTheirLine)
 TEST_F(MatrixReaderTest, fewerThanEightByEightPoints)
 {
     for (const auto& size : {std::pair<int, int>{7, 8}, {8, 7}, {0, 0}}) {
-        const std::string path = write("small.txt", matrix(static_cast<std::size_t>(size.first),
-                                                           static_cast<std::size_t>(size.second)));
+        const std::string path = write(
+            "small.txt", matrix(static_cast<std::size_t>(size.first), static_cast<std::size_t>(size.second)));
         const std::string m = inputError([&] { readMatrix(path, spacing(1e-6)); }, path, 0);
         EXPECT_NE(m.find("at least 8 x 8"), std::string::npos) << m;
     }

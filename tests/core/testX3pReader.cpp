@@ -40,10 +40,10 @@ struct X3pFile {
     std::string axisTypeX = "I";
     std::string zIncrement; ///< "" leaves the element out
     std::string zOffset;
-    std::vector<double> raw;       ///< NaN for an invalid point (D, F or inline)
-    bool inlineData = false;       ///< Record3/DataList instead of bin/data.bin
-    std::string md5;               ///< "" : the right one
-    std::string mask;              ///< bin/valid.bin; "" : none
+    std::vector<double> raw; ///< NaN for an invalid point (D, F or inline)
+    bool inlineData = false; ///< Record3/DataList instead of bin/data.bin
+    std::string md5;         ///< "" : the right one
+    std::string mask;        ///< bin/valid.bin; "" : none
     std::string sizeZ = "1";
 };
 
@@ -157,8 +157,8 @@ std::string without(const std::string& xml, const std::string& element)
 class X3pReaderTest : public roughContactTest::TempDirTest {
 protected:
     /// A zip archive at name holding the given entries (stored uncompressed when store).
-    std::string zipFile(const std::string& name, const std::vector<std::pair<std::string, std::string>>& entries,
-                        bool store = false)
+    std::string zipFile(const std::string& name,
+                        const std::vector<std::pair<std::string, std::string>>& entries, bool store = false)
     {
         const std::string path = (dir_ / name).string();
         int error = 0;
@@ -176,9 +176,11 @@ protected:
         return path;
     }
     /// The X3P file f (main.xml as given when xml is not empty).
-    std::string x3p(const std::string& name, const X3pFile& f, const std::string& xml = "", bool store = false)
+    std::string x3p(const std::string& name, const X3pFile& f, const std::string& xml = "",
+                    bool store = false)
     {
-        std::vector<std::pair<std::string, std::string>> entries{{"main.xml", xml.empty() ? mainXml(f) : xml}};
+        std::vector<std::pair<std::string, std::string>> entries{
+            {"main.xml", xml.empty() ? mainXml(f) : xml}};
         if (!f.inlineData) {
             entries.emplace_back("bin/data.bin", dataBin(f));
         }
@@ -240,7 +242,8 @@ TEST_F(X3pReaderTest, eachDataTypeBinaryScaledByIncrementAndOffset)
             for (std::size_t ix = 0; ix < 8; ++ix) {
                 // x fastest: point iy * nx + ix. The raw values are integers below 2^11, exact in
                 // every type, so the only rounding is that of offset + increment * raw.
-                EXPECT_EQ(s.at(ix, iy), 1e-6 + 2e-9 * rawValue(iy * 8 + ix)) << type << " " << ix << " " << iy;
+                EXPECT_EQ(s.at(ix, iy), 1e-6 + 2e-9 * rawValue(iy * 8 + ix))
+                    << type << " " << ix << " " << iy;
             }
         }
     }
@@ -369,7 +372,8 @@ TEST_F(X3pReaderTest, unsupportedAxesAndLayouts)
     small.raw.resize(70);
     const std::string s = x3p("small.x3p", small);
     EXPECT_TRUE(has(inputError([&] { readX3p(s); }, s), "at least 8 x 8"));
-    const std::string broken = x3p("xml.x3p", sample('D'), "<?xml version=\"1.0\"?>\n<p:ISO5436_2>\n<Record1>\n");
+    const std::string broken =
+        x3p("xml.x3p", sample('D'), "<?xml version=\"1.0\"?>\n<p:ISO5436_2>\n<Record1>\n");
     EXPECT_TRUE(has(inputError([&] { readX3p(broken); }, broken), "main.xml line"));
 }
 

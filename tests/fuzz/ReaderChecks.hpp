@@ -193,13 +193,13 @@ inline std::string checkTableInput(const std::string& input)
 /// spacings and lengths, finite heights.
 inline std::string checkArealSurface(const roughContact::ArealSurface& a)
 {
-    if (a.nx() < roughContact::ArealSurface::minimumSize || a.ny() < roughContact::ArealSurface::minimumSize
-        || a.heights().size() != a.nx() * a.ny()) {
-        return "areal surface of " + std::to_string(a.nx()) + " x " + std::to_string(a.ny()) + " points and " +
-               std::to_string(a.heights().size()) + " heights";
+    if (a.nx() < roughContact::ArealSurface::minimumSize ||
+        a.ny() < roughContact::ArealSurface::minimumSize || a.heights().size() != a.nx() * a.ny()) {
+        return "areal surface of " + std::to_string(a.nx()) + " x " + std::to_string(a.ny()) +
+               " points and " + std::to_string(a.heights().size()) + " heights";
     }
-    if (!finite(a.dx()) || !(a.dx() > 0.0) || !finite(a.dy()) || !(a.dy() > 0.0) || !finite(a.lengthX())
-        || !finite(a.lengthY())) {
+    if (!finite(a.dx()) || !(a.dx() > 0.0) || !finite(a.dy()) || !(a.dy() > 0.0) || !finite(a.lengthX()) ||
+        !finite(a.lengthY())) {
         return "areal surface with a bad spacing or length";
     }
     for (double z : a.heights()) {
@@ -214,8 +214,9 @@ inline std::string checkMatrixInput(const std::string& input)
 {
     roughContact::MatrixReadOptions options;
     const char u = input.size() > 0 ? input[0] : '-';
-    options.units = u == 'u' ? roughContact::LengthUnit::um : u == 'n' ? roughContact::LengthUnit::nm
-                                                                       : roughContact::LengthUnit::m;
+    options.units = u == 'u'   ? roughContact::LengthUnit::um
+                    : u == 'n' ? roughContact::LengthUnit::nm
+                               : roughContact::LengthUnit::m;
     options.dx = digitChoice(input.size() > 1 ? input[1] : '-');
     options.dy = digitChoice(input.size() > 2 ? input[2] : '-');
     const std::string content = input.size() > 3 ? input.substr(3) : std::string();

@@ -34,8 +34,9 @@ Spectrum SurfaceSpec::spectrum() const
             throw ParameterError("stride", "subsamples a profile; an areal surface is used whole");
         }
         if (length) {
-            throw ParameterError("length", "has no meaning for an areal surface, whose scan lengths are nx dx and "
-                                           "ny dy; it is for a spectrum, power law or fractal");
+            throw ParameterError("length",
+                                 "has no meaning for an areal surface, whose scan lengths are nx dx and "
+                                 "ny dy; it is for a spectrum, power law or fractal");
         }
         return lineScanSpectrum(readAreal(file, arealOptions).detrended(), direction);
     }

@@ -26,8 +26,9 @@ bool isX3pPath(const std::string& path)
 ArealSurface readAreal(const std::string& path, const ArealReadOptions& options)
 {
     if (isX3pPath(path)) {
-        const char* const own = "an X3P file carries its own spacings, in metres (Record1/Axes); this option is "
-                                "for a text matrix of heights";
+        const char* const own =
+            "an X3P file carries its own spacings, in metres (Record1/Axes); this option is "
+            "for a text matrix of heights";
         if (options.dx) {
             throw ParameterError("dx", own);
         }

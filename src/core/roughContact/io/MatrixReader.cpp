@@ -27,7 +27,8 @@ public:
         if (heights.size() + r.values.size() > limits::maximumGridPoints) {
             std::ostringstream os;
             os << "more than " << limits::maximumGridPoints
-               << " points (4096 x 4096, the cap of an areal surface); resample the map coarser or cut a part of it";
+               << " points (4096 x 4096, the cap of an areal surface); resample the map coarser or cut a "
+                  "part of it";
             throw InputError(path_, r.line, os.str());
         }
         for (std::size_t c = 0; c < r.values.size(); ++c) {
@@ -68,7 +69,8 @@ ArealSurface readMatrix(std::istream& in, const std::string& path, const MatrixR
     const double scale = metresPer(options.units);
     // The spacings in metres within the accepted lengths before any N dx is formed.
     const double dx = limits::requireLength("dx", requirePositive("dx", *options.dx) * scale);
-    const double dy = options.dy ? limits::requireLength("dy", requirePositive("dy", *options.dy) * scale) : dx;
+    const double dy =
+        options.dy ? limits::requireLength("dy", requirePositive("dy", *options.dy) * scale) : dx;
 
     detail::TableReadOptions tableOptions;
     tableOptions.maxColumns = limits::maximumGridPoints / ArealSurface::minimumSize;
@@ -86,8 +88,8 @@ ArealSurface readMatrix(std::istream& in, const std::string& path, const MatrixR
             }
         }
         throw InputError(path, table.headerLine,
-                         "non-numeric field '" + detail::printable(bad)
-                             + "': a matrix file holds heights only (use # for comments)");
+                         "non-numeric field '" + detail::printable(bad) +
+                             "': a matrix file holds heights only (use # for comments)");
     }
     if (rows.rows < ArealSurface::minimumSize || rows.columns < ArealSurface::minimumSize) {
         std::ostringstream os;

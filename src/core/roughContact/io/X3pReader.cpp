@@ -42,8 +42,8 @@ std::string readEntry(zip_t* zip, const std::string& entry, std::uint64_t maxByt
     const zip_int64_t index = zip_name_locate(zip, entry.c_str(), 0);
     if (index < 0) {
         throw InputError(name, 0,
-                         "the archive has no " + detail::printable(entry, 80)
-                             + (linkedBy.empty() ? std::string() : " (named by " + linkedBy + ")"));
+                         "the archive has no " + detail::printable(entry, 80) +
+                             (linkedBy.empty() ? std::string() : " (named by " + linkedBy + ")"));
     }
     zip_stat_t st;
     zip_stat_init(&st);
@@ -59,8 +59,8 @@ std::string readEntry(zip_t* zip, const std::string& entry, std::uint64_t maxByt
     std::unique_ptr<zip_file_t, ZipFileClose> file(zip_fopen_index(zip, static_cast<zip_uint64_t>(index), 0));
     if (!file) {
         throw InputError(name, 0,
-                         "corrupt archive: cannot open " + detail::printable(entry, 80) + ": "
-                             + zip_strerror(zip));
+                         "corrupt archive: cannot open " + detail::printable(entry, 80) + ": " +
+                             zip_strerror(zip));
     }
     std::string data(static_cast<std::size_t>(st.size), '\0');
     std::size_t done = 0;
@@ -68,8 +68,8 @@ std::string readEntry(zip_t* zip, const std::string& entry, std::uint64_t maxByt
         const zip_int64_t n = zip_fread(file.get(), &data[done], data.size() - done);
         if (n < 0) {
             throw InputError(name, 0,
-                             "corrupt or truncated archive: reading " + detail::printable(entry, 80)
-                                 + " failed: " + zip_file_strerror(file.get()));
+                             "corrupt or truncated archive: reading " + detail::printable(entry, 80) +
+                                 " failed: " + zip_file_strerror(file.get()));
         }
         if (n == 0) {
             break;
@@ -86,7 +86,8 @@ std::string readEntry(zip_t* zip, const std::string& entry, std::uint64_t maxByt
     char extra = 0;
     if (zip_fread(file.get(), &extra, 1) < 0) {
         throw InputError(name, 0,
-                         "corrupt archive: " + detail::printable(entry, 80) + ": " + zip_file_strerror(file.get()));
+                         "corrupt archive: " + detail::printable(entry, 80) + ": " +
+                             zip_file_strerror(file.get()));
     }
     return data;
 }
@@ -122,7 +123,8 @@ class Xml {
 public:
     explicit Xml(const std::string& name) : name_(name) {}
 
-    pugi::xml_node child(const pugi::xml_node& parent, const std::string& parentPath, const char* element) const
+    pugi::xml_node child(const pugi::xml_node& parent, const std::string& parentPath,
+                         const char* element) const
     {
         const pugi::xml_node node = parent.child(element);
         if (!node) {
@@ -146,13 +148,14 @@ public:
         double v = 0.0;
         if (!detail::parseNumber(t, v) || !std::isfinite(v)) {
             throw InputError(name_, 0,
-                             "main.xml: " + join(parentPath, element) + " is '" + detail::printable(t)
-                                 + "', not a finite number");
+                             "main.xml: " + join(parentPath, element) + " is '" + detail::printable(t) +
+                                 "', not a finite number");
         }
         return v;
     }
     /// parent/element as a count (decimal digits only).
-    std::uint64_t count(const pugi::xml_node& parent, const std::string& parentPath, const char* element) const
+    std::uint64_t count(const pugi::xml_node& parent, const std::string& parentPath,
+                        const char* element) const
     {
         const std::string t = text(parent, parentPath, element);
         std::uint64_t v = 0;
@@ -163,8 +166,8 @@ public:
         }
         if (!ok) {
             throw InputError(name_, 0,
-                             "main.xml: " + join(parentPath, element) + " is '" + detail::printable(t)
-                                 + "', not a count of points");
+                             "main.xml: " + join(parentPath, element) + " is '" + detail::printable(t) +
+                                 "', not a count of points");
         }
         return v;
     }
@@ -309,7 +312,8 @@ ArealSurface readX3pBytes(const std::string& bytes, const std::string& name, con
         zip_source_free(source);
         const std::string why = zip_error_strerror(&error);
         zip_error_fini(&error);
-        throw InputError(name, 0, "not an X3P file: not a readable zip archive (" + why + "); corrupt or truncated?");
+        throw InputError(name, 0,
+                         "not an X3P file: not a readable zip archive (" + why + "); corrupt or truncated?");
     }
     zip_error_fini(&error);
 
@@ -323,19 +327,20 @@ ArealSurface readX3pBytes(const std::string& bytes, const std::string& name, con
             line += xmlText[static_cast<std::size_t>(i)] == '\n';
         }
         throw InputError(name, 0,
-                         "main.xml line " + std::to_string(line) + ": not well-formed XML (" + parsed.description()
-                             + ")");
+                         "main.xml line " + std::to_string(line) + ": not well-formed XML (" +
+                             parsed.description() + ")");
     }
     const Xml xml(name);
     const pugi::xml_node root = doc.document_element();
     const std::string rootName = root.name();
     const std::string expectedRoot = "ISO5436_2";
-    if (rootName.size() < expectedRoot.size()
-        || rootName.compare(rootName.size() - expectedRoot.size(), expectedRoot.size(), expectedRoot) != 0
-        || (rootName.size() > expectedRoot.size() && rootName[rootName.size() - expectedRoot.size() - 1] != ':')) {
+    if (rootName.size() < expectedRoot.size() ||
+        rootName.compare(rootName.size() - expectedRoot.size(), expectedRoot.size(), expectedRoot) != 0 ||
+        (rootName.size() > expectedRoot.size() &&
+         rootName[rootName.size() - expectedRoot.size() - 1] != ':')) {
         throw InputError(name, 0,
-                         "main.xml: the root element is '" + detail::printable(rootName)
-                             + "', not ISO5436_2 (an ISO 5436-2 / ISO 25178-72 X3P file)");
+                         "main.xml: the root element is '" + detail::printable(rootName) +
+                             "', not ISO5436_2 (an ISO 5436-2 / ISO 25178-72 X3P file)");
     }
 
     // Record1: the axes.
@@ -348,12 +353,13 @@ ArealSurface readX3pBytes(const std::string& bytes, const std::string& name, con
         const std::string type = xml.text(axis, path, "AxisType");
         if (type == "A") {
             throw InputError(name, 0,
-                             "main.xml: " + path + "/AxisType is A (absolute: a list of positions); only "
+                             "main.xml: " + path +
+                                 "/AxisType is A (absolute: a list of positions); only "
                                  "incremental axes (I) on a uniform grid are supported for x and y");
         }
         if (type != "I") {
-            throw InputError(name, 0,
-                             "main.xml: " + path + "/AxisType is '" + detail::printable(type) + "', not I or A");
+            throw InputError(
+                name, 0, "main.xml: " + path + "/AxisType is '" + detail::printable(type) + "', not I or A");
         }
         spacing[a] = xml.number(axis, path, "Increment");
         if (!(spacing[a] > 0.0)) {
@@ -366,8 +372,8 @@ ArealSurface readX3pBytes(const std::string& bytes, const std::string& name, con
     const std::string typeText = xml.text(cz, "Record1/Axes/CZ", "DataType");
     if (typeText != "D" && typeText != "F" && typeText != "I" && typeText != "L") {
         throw InputError(name, 0,
-                         "main.xml: Record1/Axes/CZ/DataType is '" + detail::printable(typeText)
-                             + "'; D (double), F (float), I (int16) or L (int32) are supported");
+                         "main.xml: Record1/Axes/CZ/DataType is '" + detail::printable(typeText) +
+                             "'; D (double), F (float), I (int16) or L (int32) are supported");
     }
     const char type = typeText[0];
     const double one = 1.0;
@@ -383,15 +389,16 @@ ArealSurface readX3pBytes(const std::string& bytes, const std::string& name, con
     const std::uint64_t nz = xml.count(dimension, "Record3/MatrixDimension", "SizeZ");
     if (nz != 1) {
         throw InputError(name, 0,
-                         "main.xml: Record3/MatrixDimension/SizeZ is " + std::to_string(nz)
-                             + "; one layer (1) is supported");
+                         "main.xml: Record3/MatrixDimension/SizeZ is " + std::to_string(nz) +
+                             "; one layer (1) is supported");
     }
-    if (nx < ArealSurface::minimumSize || ny < ArealSurface::minimumSize || nx > limits::maximumGridPoints
-        || ny > limits::maximumGridPoints / nx) {
+    if (nx < ArealSurface::minimumSize || ny < ArealSurface::minimumSize || nx > limits::maximumGridPoints ||
+        ny > limits::maximumGridPoints / nx) {
         std::ostringstream os;
-        os << "main.xml: Record3/MatrixDimension is " << nx << " x " << ny << " points; an areal surface needs at least "
-           << ArealSurface::minimumSize << " x " << ArealSurface::minimumSize << " and at most "
-           << limits::maximumGridPoints << " points (4096 x 4096)";
+        os << "main.xml: Record3/MatrixDimension is " << nx << " x " << ny
+           << " points; an areal surface needs at least " << ArealSurface::minimumSize << " x "
+           << ArealSurface::minimumSize << " and at most " << limits::maximumGridPoints
+           << " points (4096 x 4096)";
         throw InputError(name, 0, os.str());
     }
     const std::size_t n = static_cast<std::size_t>(nx * ny);
@@ -404,15 +411,16 @@ ArealSurface readX3pBytes(const std::string& bytes, const std::string& name, con
         const std::string dataName = xml.text(link, "Record3/DataLink", "PointDataLink");
         const std::string expectedMd5 = xml.text(link, "Record3/DataLink", "MD5ChecksumPointData");
         const std::uint64_t expectedBytes = n * bytesOf(type);
-        const std::string data = readEntry(zip.get(), dataName, expectedBytes, name, "Record3/DataLink/PointDataLink");
+        const std::string data =
+            readEntry(zip.get(), dataName, expectedBytes, name, "Record3/DataLink/PointDataLink");
         if (data.size() != expectedBytes) {
             std::ostringstream os;
             os << detail::printable(dataName, 80) << " has " << data.size() << " bytes; " << nx << " x " << ny
                << " points (Record3/MatrixDimension) of type " << type << " need " << expectedBytes;
             throw InputError(name, 0, os.str());
         }
-        const auto checkMd5 = [&](const std::string& content, const std::string& file, const std::string& expected,
-                                  const char* element) {
+        const auto checkMd5 = [&](const std::string& content, const std::string& file,
+                                  const std::string& expected, const char* element) {
             const std::string actual = md5Hex(content);
             std::string upper = expected;
             for (char& c : upper) {
@@ -420,8 +428,9 @@ ArealSurface readX3pBytes(const std::string& bytes, const std::string& name, con
             }
             if (upper != actual) {
                 throw InputError(name, 0,
-                                 "checksum mismatch: the MD5 of " + detail::printable(file, 80) + " is " + actual
-                                     + " but " + element + " says '" + detail::printable(expected) + "'");
+                                 "checksum mismatch: the MD5 of " + detail::printable(file, 80) + " is " +
+                                     actual + " but " + element + " says '" + detail::printable(expected) +
+                                     "'");
             }
         };
         checkMd5(data, dataName, expectedMd5, "Record3/DataLink/MD5ChecksumPointData");
@@ -431,7 +440,8 @@ ArealSurface readX3pBytes(const std::string& bytes, const std::string& name, con
         if (const pugi::xml_node mask = link.child("ValidPointsLink")) {
             const std::string maskName = trimmed(mask.child_value());
             const std::uint64_t maskBytes = (n + 7) / 8;
-            const std::string bits = readEntry(zip.get(), maskName, maskBytes, name, "Record3/DataLink/ValidPointsLink");
+            const std::string bits =
+                readEntry(zip.get(), maskName, maskBytes, name, "Record3/DataLink/ValidPointsLink");
             if (bits.size() != maskBytes) {
                 std::ostringstream os;
                 os << detail::printable(maskName, 80) << " has " << bits.size() << " bytes; a mask of " << n
@@ -450,13 +460,15 @@ ArealSurface readX3pBytes(const std::string& bytes, const std::string& name, con
         }
     } else if (list) {
         std::size_t count = 0;
-        for (pugi::xml_node datum = list.child("Datum"); datum && count <= n; datum = datum.next_sibling("Datum")) {
+        for (pugi::xml_node datum = list.child("Datum"); datum && count <= n;
+             datum = datum.next_sibling("Datum")) {
             ++count;
         }
         if (count != n) {
             std::ostringstream os;
-            os << "main.xml: Record3/DataList has " << (count > n ? "more than " : "") << (count > n ? n : count)
-               << " Datum elements; " << nx << " x " << ny << " points (Record3/MatrixDimension) need " << n;
+            os << "main.xml: Record3/DataList has " << (count > n ? "more than " : "")
+               << (count > n ? n : count) << " Datum elements; " << nx << " x " << ny
+               << " points (Record3/MatrixDimension) need " << n;
             throw InputError(name, 0, os.str());
         }
         std::size_t i = 0;
@@ -477,7 +489,8 @@ ArealSurface readX3pBytes(const std::string& bytes, const std::string& name, con
             }
         }
     } else {
-        throw InputError(name, 0, "main.xml has neither Record3/DataLink nor Record3/DataList (the point data)");
+        throw InputError(name, 0,
+                         "main.xml has neither Record3/DataLink nor Record3/DataList (the point data)");
     }
 
     // Heights [m] = offset + increment * value, checked before any trap can see them.

@@ -34,6 +34,7 @@ ArealSurface readX3p(const std::string& path, const X3pReadOptions& options = {}
 
 /// The same from the bytes of an X3P file held in memory; name is the file name that errors and
 /// the surface's source give.
-ArealSurface readX3pBytes(const std::string& bytes, const std::string& name, const X3pReadOptions& options = {});
+ArealSurface readX3pBytes(const std::string& bytes, const std::string& name,
+                          const X3pReadOptions& options = {});
 
 } // namespace roughContact
