@@ -11,6 +11,7 @@
 #include <pugixml.hpp>
 #include <zip.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -62,9 +63,14 @@ std::string readEntry(zip_t* zip, const std::string& entry, std::uint64_t maxByt
                          "corrupt archive: cannot open " + detail::printable(entry, 80) + ": " +
                              zip_strerror(zip));
     }
-    std::string data(static_cast<std::size_t>(st.size), '\0');
+    // Read in pieces, so that memory grows with what the archive really holds, not with the size
+    // its header claims (a lying header in a tiny file must not allocate a gigabyte).
+    const auto size = static_cast<std::size_t>(st.size);
+    std::string data;
     std::size_t done = 0;
-    while (done < data.size()) {
+    constexpr std::size_t piece = std::size_t(1) << 20;
+    while (done < size) {
+        data.resize(done + std::min(piece, size - done));
         const zip_int64_t n = zip_fread(file.get(), &data[done], data.size() - done);
         if (n < 0) {
             throw InputError(name, 0,
@@ -76,10 +82,11 @@ std::string readEntry(zip_t* zip, const std::string& entry, std::uint64_t maxByt
         }
         done += static_cast<std::size_t>(n);
     }
-    if (done != data.size()) {
+    data.resize(done);
+    if (done != size) {
         std::ostringstream os;
         os << "truncated archive: " << detail::printable(entry, 80) << " ends after " << done << " of its "
-           << data.size() << " bytes";
+           << size << " bytes";
         throw InputError(name, 0, os.str());
     }
     // The CRC of a stored entry is checked once its end has been read: ask for one more byte.
