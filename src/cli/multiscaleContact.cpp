@@ -2,12 +2,14 @@
 // The interface is fixed (issue 2): scripts rely on --profile/--spectrum, --model, the
 // material options, --loads/--load-range, --levels and the CSV columns load and area.
 #include "roughContact/Error.hpp"
+#include "roughContact/io/ArealReader.hpp"
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/io/SpectrumReader.hpp"
 #include "roughContact/io/Units.hpp"
 #include "roughContact/material/Materials.hpp"
 #include "roughContact/models/ModelFactory.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
+#include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/FractalFit.hpp"
 #include "roughContact/surface/Profile.hpp"
 #include "roughContact/surface/SpectralMoments.hpp"
@@ -29,11 +31,15 @@ namespace {
 
 struct Options {
     std::vector<std::string> profiles;
+    std::vector<std::string> areals;
     std::vector<std::string> spectra;
     std::vector<double> powerLaw; // b_m, m, fmin, fmax
     std::vector<double> fractal;  // D, G, fmin, fmax
     std::optional<std::string> units;
     std::optional<double> dx;
+    std::optional<double> dy;
+    std::optional<std::string> direction;
+    bool fillInvalid = false;
     std::optional<double> length;
     std::size_t stride = 1;
     std::string model;
@@ -107,8 +113,47 @@ Spectrum surfaceOf(const Options& o)
     if (o.profiles.empty() && o.stride != 1) {
         throw ParameterError("--stride", "subsamples a --profile; there is no profile here");
     }
-    if (o.profiles.empty() && o.dx) {
-        throw ParameterError("--dx", "is the spacing of a one-column --profile; there is no profile here");
+    if (o.profiles.empty() && o.areals.empty() && o.dx) {
+        throw ParameterError("--dx",
+                             "is the spacing of a one-column --profile or an --areal matrix; there is "
+                             "neither here");
+    }
+    if (o.areals.empty()) {
+        if (o.dy) {
+            throw ParameterError("--dy",
+                                 "is the y spacing of an --areal matrix; there is no areal surface here");
+        }
+        if (o.direction) {
+            throw ParameterError("--direction",
+                                 "chooses the line scans of an --areal surface; there is none here");
+        }
+        if (o.fillInvalid) {
+            throw ParameterError("--fill-invalid", "is for an --areal X3P file; there is none here");
+        }
+    }
+    if (!o.areals.empty()) {
+        if (o.stride != 1) {
+            throw ParameterError("--stride", "subsamples a --profile; an --areal surface is used whole");
+        }
+        if (o.length) {
+            throw ParameterError("--length", "is set by the areal surface itself (nx dx, ny dy); it is for "
+                                             "--spectrum, --power-law and --fractal");
+        }
+        // The same surface as the boundary condition's `type areal` (SurfaceSpec::Kind::areal).
+        ArealReadOptions ro;
+        if (o.units) {
+            ro.units = parseLengthUnit(*o.units);
+        }
+        ro.dx = o.dx;
+        ro.dy = o.dy;
+        ro.fillInvalid = o.fillInvalid;
+        const ScanDirection direction = parseScanDirection(o.direction.value_or("x"), "--direction");
+        std::optional<Spectrum> total;
+        for (const std::string& path : o.areals) {
+            const Spectrum s = lineScanSpectrum(readAreal(path, ro).detrended(), direction);
+            total = total ? Spectrum::combine(*total, s) : s;
+        }
+        return *total;
     }
     if (!o.profiles.empty() && o.length) {
         throw ParameterError("--length", "is set by the profile itself (N dx); it is for --spectrum, "
@@ -282,6 +327,14 @@ int main(int argc, char** argv)
         ->expected(1, 2)
         ->check(CLI::ExistingFile);
     surface
+        ->add_option(
+            "--areal", o.areals,
+            "measured areal surface (height map): an X3P file (.x3p, ISO 25178-72), or a text matrix "
+            "of heights (rows along y, columns along x) with --dx (and --dy, --units); plane removed, "
+            "its line scans (--direction) averaged into one spectrum. Twice for two rough surfaces")
+        ->expected(1, 2)
+        ->check(CLI::ExistingFile);
+    surface
         ->add_option("--spectrum", o.spectra,
                      "spectrum table: columns 'frequency [1/m]  amplitude [m]'; twice for two surfaces")
         ->expected(1, 2)
@@ -299,9 +352,16 @@ int main(int argc, char** argv)
     surface->require_option(1);
 
     app.add_option("--units", o.units,
-                   "units of profile files: m (default), um or nm; a Dektak export's "
+                   "units of profile and --areal matrix files: m (default), um or nm; a Dektak export's "
                    "own header (um) is used when this is not given");
-    app.add_option("--dx", o.dx, "sample spacing of one-column profiles, in --units");
+    app.add_option("--dx", o.dx,
+                   "sample spacing of one-column profiles and of --areal matrices (along x), in --units");
+    app.add_option("--dy", o.dy, "spacing along y of an --areal matrix, in --units (default --dx)");
+    app.add_option("--direction", o.direction,
+                   "line scans of an --areal surface: x (rows, default), y (columns) or both");
+    app.add_flag("--fill-invalid", o.fillInvalid,
+                 "fill the invalid points of an --areal X3P file with the mean of their valid neighbours "
+                 "(default: they are an error)");
     app.add_option("--length", o.length,
                    "scan length L [m] for --spectrum/--power-law/--fractal "
                    "(default 1/lowest frequency); A_n = L^2");

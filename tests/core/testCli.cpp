@@ -2,10 +2,13 @@
 // library's, and its error paths (stderr, non-zero exit, nothing on stdout).
 #include "RunCommand.hpp"
 
+#include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/io/ProfileReader.hpp"
+#include "roughContact/io/X3pReader.hpp"
 #include "roughContact/material/Materials.hpp"
 #include "roughContact/models/ModelFactory.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
+#include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 
@@ -90,9 +93,9 @@ TEST(Cli, HelpDocumentsEveryOptionAndModel)
 {
     const CommandResult r = run("--help");
     EXPECT_EQ(r.status, 0);
-    for (const char* opt :
-         {"--profile", "--units", "--spectrum", "--length", "--power-law", "--fractal", "--model", "--E",
-          "--nu", "--Eprime", "--Sy", "--loads", "--load-range", "--levels", "--stride"}) {
+    for (const char* opt : {"--profile", "--units", "--spectrum", "--length", "--power-law", "--fractal",
+                            "--model", "--E", "--nu", "--Eprime", "--Sy", "--loads", "--load-range",
+                            "--levels", "--stride", "--areal", "--dy", "--direction", "--fill-invalid"}) {
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
     }
     for (const std::string& m : modelNames()) {
@@ -205,6 +208,75 @@ TEST(Cli, SurfaceDescriptions)
     // Both describe the same 200 levels to 17 digits; the CLI prints 10 digits.
     EXPECT_NEAR(areaA, areaB, 1e-9 * areaA);
     EXPECT_GT(areaA, 0.0);
+}
+
+TEST(Cli, ArealSurfaceIsTheLibrarys)
+{
+    // --areal on the real X3P map: the CLI's curve is the core's (SurfaceSpec::Kind::areal, as
+    // the boundary condition builds it, and lineScanSpectrum of the detrended map read by
+    // readX3p) for each direction, to the 10 digits printed.
+    const std::string x3p = std::string(ROUGHCONTACT_SOURCE_DIR) + "/data/x3p-2.x3p";
+    const ContactMaterials mat = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
+    const ArealSurface map = readX3p(x3p);
+    for (const std::string direction : {"x", "y", "both"}) {
+        SCOPED_TRACE(direction);
+        SurfaceSpec spec;
+        spec.kind = SurfaceSpec::Kind::areal;
+        spec.file = x3p;
+        spec.direction = parseScanDirection(direction);
+        const Spectrum s = spec.spectrum();
+        const Spectrum direct = lineScanSpectrum(map.detrended(), parseScanDirection(direction));
+        ASSERT_EQ(s.amplitudes(), direct.amplitudes());
+        const auto model = makeContactModel("jacksonGreen", s, mat);
+        const std::string flag = direction == "x" ? "" : " --direction " + direction;
+        const CommandResult r = run("--areal '" + x3p + "'" + flag + " --model jacksonGreen" + steel +
+                                    " --load-range 1e-5:1e-2:4");
+        ASSERT_EQ(r.status, 0) << r.err;
+        const Csv csv = parseCsv(r.out);
+        ASSERT_EQ(csv.rows.size(), 4U);
+        for (const auto& row : csv.rows) {
+            const double load = std::stod(row.at(0));
+            const double area = std::stod(row.at(1));
+            EXPECT_GT(area, 0.0);
+            EXPECT_NEAR(area, model->areaFraction(load), 1e-9 * area);
+        }
+    }
+    // The same heights as a text matrix in nanometres (--dx, --dy, --units) give the same curve.
+    TempDir dir;
+    std::ostringstream text;
+    text.precision(17);
+    for (std::size_t iy = 0; iy < map.ny(); ++iy) {
+        for (std::size_t ix = 0; ix < map.nx(); ++ix) {
+            text << (ix ? " " : "") << map.at(ix, iy) * 1e9;
+        }
+        text << "\n";
+    }
+    const auto matrix = dir.write("map.txt", text.str());
+    std::ostringstream spacing;
+    spacing.precision(17);
+    spacing << " --units nm --dx " << map.dx() * 1e9 << " --dy " << map.dy() * 1e9;
+    const CommandResult a =
+        run("--areal '" + x3p + "' --direction both --model hertz" + steel + " --loads 1e-3");
+    const CommandResult b = run("--areal '" + matrix.string() + "'" + spacing.str() +
+                                " --direction both --model hertz" + steel + " --loads 1e-3");
+    ASSERT_EQ(a.status, 0) << a.err;
+    ASSERT_EQ(b.status, 0) << b.err;
+    const double areaA = std::stod(parseCsv(a.out).rows.at(0).at(1));
+    EXPECT_NEAR(areaA, std::stod(parseCsv(b.out).rows.at(0).at(1)), 1e-8 * areaA);
+
+    expectError("--areal '" + x3p + "' --dx 1e-6 --model hertz" + steel + " --loads 1e-3", {"dx", "X3P"});
+    expectError("--areal '" + matrix.string() + "' --model hertz" + steel + " --loads 1e-3", {"dx"});
+    expectError("--areal '" + matrix.string() + "' --dx 1 --fill-invalid --model hertz" + steel +
+                    " --loads 1e-3",
+                {"fillInvalid"});
+    expectError("--areal '" + x3p + "' --direction z --model hertz" + steel + " --loads 1e-3",
+                {"--direction", "'z'"});
+    expectError("--areal '" + x3p + "' --stride 2 --model hertz" + steel + " --loads 1e-3", {"--stride"});
+    expectError("--profile '" + standin + "' --direction y --model hertz" + steel + " --loads 1e-3",
+                {"--direction"});
+    expectError("--profile '" + standin + "' --dy 1 --model hertz" + steel + " --loads 1e-3", {"--dy"});
+    expectError("--profile '" + standin + "' --fill-invalid --model hertz" + steel + " --loads 1e-3",
+                {"--fill-invalid"});
 }
 
 TEST(Cli, ErrorPaths)

@@ -5,7 +5,9 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/io/ProfileReader.hpp"
+#include "roughContact/io/X3pReader.hpp"
 #include "roughContact/models/ModelFactory.hpp"
+#include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 
 #include <gtest/gtest.h>
@@ -233,5 +235,29 @@ TEST(ContactInterface, ALengthForAProfileIsRefused)
     // Was silently ignored (the boundary condition refuses it too, naming the entry).
     InterfaceSpec spec = steelOnCopper();
     spec.surfaces[0].length = 1e-3;
+    EXPECT_THROW(ContactInterface{spec}, ParameterError);
+}
+
+TEST(ContactInterface, ArealSurface)
+{
+    // type areal: the averaged line-scan spectrum of the detrended map, in the chosen direction;
+    // a stride, a length or an option of the other format is refused.
+    InterfaceSpec spec = steelOnCopper();
+    SurfaceSpec& s = spec.surfaces[0];
+    s.kind = SurfaceSpec::Kind::areal;
+    s.file = std::string(ROUGHCONTACT_SOURCE_DIR) + "/data/x3p-2.x3p";
+    s.direction = ScanDirection::y;
+    const ContactInterface c(spec);
+    const ArealSurface map = readX3p(s.file);
+    EXPECT_EQ(c.surface().amplitudes(), lineScanSpectrum(map.detrended(), ScanDirection::y).amplitudes());
+    EXPECT_EQ(c.surface().size(), 325U); // 650 samples a column: levels 1..325
+    EXPECT_GT(c.areaFraction(1e6), 0.0);
+    s.stride = 2;
+    EXPECT_THROW(ContactInterface{spec}, ParameterError);
+    s.stride = 1;
+    s.length = 1e-3;
+    EXPECT_THROW(ContactInterface{spec}, ParameterError);
+    s.length.reset();
+    s.arealOptions.dx = 1e-6;
     EXPECT_THROW(ContactInterface{spec}, ParameterError);
 }

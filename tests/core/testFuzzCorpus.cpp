@@ -62,3 +62,34 @@ TEST(FuzzCorpus, tableReader)
 {
     replay("tableReader", roughContactFuzz::checkTableInput, 3);
 }
+
+TEST(FuzzCorpus, matrixReader)
+{
+    replay("matrixReader", roughContactFuzz::checkMatrixInput, 4);
+}
+
+TEST(FuzzCorpus, x3pReader)
+{
+    replay("x3pReader", roughContactFuzz::checkX3pInput, 5);
+}
+
+TEST(FuzzCorpus, x3pSeedsReadPastTheChecksums)
+{
+    // The valid seeds (tests/fuzz/makeX3pSeeds.py) must read, so that the fuzzer starts from
+    // files that reach the data; the NaN seed must fail on its one invalid point only.
+    const fs::path dir = fs::path(ROUGHCONTACT_SOURCE_DIR) / "tests/fuzz/corpus/x3pReader";
+    for (const char* name : {"d-binary.x3p", "i-mask-fill.x3p", "l-binary.x3p", "inline-fill.x3p"}) {
+        const std::string input = content(dir / name);
+        roughContact::X3pReadOptions options;
+        options.fillInvalid = input[0] == 'f';
+        const roughContact::ArealSurface s = roughContact::readX3pBytes(input.substr(1), "seed", options);
+        EXPECT_EQ(s.nx(), 8U) << name;
+        EXPECT_EQ(s.dy(), 2e-6) << name;
+    }
+    try {
+        roughContact::readX3pBytes(content(dir / "f-nan.x3p").substr(1), "seed");
+        ADD_FAILURE() << "f-nan.x3p read";
+    } catch (const roughContact::InputError& e) {
+        EXPECT_NE(e.message().find("1 of 64 points are invalid"), std::string::npos) << e.what();
+    }
+}

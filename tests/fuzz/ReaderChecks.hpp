@@ -8,13 +8,19 @@
 //              spacing option ('0'-'9': spacingChoices[digit]; anything else: unset);
 //  - spectrum: byte 1 the length option ('0'-'9': lengthChoices[digit]; anything else: unset);
 //  - table:    byte 1 the options: maxColumns = 1 + byte % 4, and the section marker
-//              "Scan Data" when byte & 4.
+//              "Scan Data" when byte & 4;
+//  - matrix:   byte 1 the units ('u' um, 'n' nm; anything else: m), byte 2 the dx option and
+//              byte 3 the dy option ('0'-'9': choice(digit); anything else: unset);
+//  - x3p:      byte 1 the fillInvalid option ('f': set); the rest is the X3P (zip) file.
 #pragma once
 
 #include "roughContact/Error.hpp"
+#include "roughContact/io/MatrixReader.hpp"
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/io/SpectrumReader.hpp"
 #include "roughContact/io/TableReader.hpp"
+#include "roughContact/io/X3pReader.hpp"
+#include "roughContact/surface/ArealSurface.hpp"
 
 #include <cmath>
 #include <cstddef>
@@ -181,6 +187,58 @@ inline std::string checkTableInput(const std::string& input)
             }
             return "";
         });
+}
+
+/// "" when an areal surface is sound: at least 8 x 8 points, as many heights, finite positive
+/// spacings and lengths, finite heights.
+inline std::string checkArealSurface(const roughContact::ArealSurface& a)
+{
+    if (a.nx() < roughContact::ArealSurface::minimumSize ||
+        a.ny() < roughContact::ArealSurface::minimumSize || a.heights().size() != a.nx() * a.ny()) {
+        return "areal surface of " + std::to_string(a.nx()) + " x " + std::to_string(a.ny()) +
+               " points and " + std::to_string(a.heights().size()) + " heights";
+    }
+    if (!finite(a.dx()) || !(a.dx() > 0.0) || !finite(a.dy()) || !(a.dy() > 0.0) || !finite(a.lengthX()) ||
+        !finite(a.lengthY())) {
+        return "areal surface with a bad spacing or length";
+    }
+    for (double z : a.heights()) {
+        if (!finite(z)) {
+            return "areal surface with a non-finite height";
+        }
+    }
+    return "";
+}
+
+inline std::string checkMatrixInput(const std::string& input)
+{
+    roughContact::MatrixReadOptions options;
+    const char u = input.size() > 0 ? input[0] : '-';
+    options.units = u == 'u'   ? roughContact::LengthUnit::um
+                    : u == 'n' ? roughContact::LengthUnit::nm
+                               : roughContact::LengthUnit::m;
+    options.dx = digitChoice(input.size() > 1 ? input[1] : '-');
+    options.dy = digitChoice(input.size() > 2 ? input[2] : '-');
+    const std::string content = input.size() > 3 ? input.substr(3) : std::string();
+    return checkReader(
+        content, [&](std::istream& in) { return roughContact::readMatrix(in, inputName, options); },
+        checkArealSurface);
+}
+
+inline std::string checkX3pInput(const std::string& input)
+{
+    roughContact::X3pReadOptions options;
+    options.fillInvalid = !input.empty() && input[0] == 'f';
+    const std::string content = input.size() > 1 ? input.substr(1) : std::string();
+    try {
+        return checkArealSurface(roughContact::readX3pBytes(content, inputName, options));
+    } catch (const roughContact::InputError& e) {
+        return checkMessage(e);
+    } catch (const roughContact::ParameterError& e) {
+        return checkMessage(e);
+    } catch (const std::exception& e) {
+        return std::string("unexpected exception: ") + e.what();
+    }
 }
 
 } // namespace roughContactFuzz

@@ -5,6 +5,7 @@
 #include "PtrList.H"
 
 #include "roughContact/io/Units.hpp"
+#include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/surface/SurfaceChecksum.hpp"
 
@@ -60,6 +61,53 @@ roughContact::SurfaceSpec readSurface
         }
         s.stride = stride;
     }
+    else if (type == "areal")
+    {
+        // A height map: an X3P file, or a text matrix with dx (and dy, units).
+        s.kind = roughContact::SurfaceSpec::Kind::areal;
+        fileName f = d.get<fileName>("file");
+        f.expand();
+        if (!f.isAbsolute())
+        {
+            f = casePath/f;
+        }
+        s.file = f;
+        for (const char* profileOnly : {"spacing", "stride"})
+        {
+            if (d.found(profileOnly))
+            {
+                FatalIOErrorInFunction(d)
+                    << "entry '" << profileOnly << "' is for a surface of type"
+                    << " profile; an areal surface takes dx (and dy) for a"
+                    << " text matrix, and an X3P file carries its own spacings"
+                    << exit(FatalIOError);
+            }
+        }
+        word units;
+        if (d.readIfPresent("units", units))
+        {
+            s.arealOptions.units = roughContact::parseLengthUnit(units);
+        }
+        scalar spacing;
+        if (d.readIfPresent("dx", spacing))
+        {
+            s.arealOptions.dx = spacing;
+        }
+        if (d.readIfPresent("dy", spacing))
+        {
+            s.arealOptions.dy = spacing;
+        }
+        s.arealOptions.fillInvalid = d.getOrDefault<bool>("fillInvalid", false);
+        const word direction = d.getOrDefault<word>("direction", "x");
+        if (direction != "x" && direction != "y" && direction != "both")
+        {
+            FatalIOErrorInFunction(d)
+                << "entry 'direction' is '" << direction << "': the line"
+                << " scans of an areal surface are x (rows), y (columns) or"
+                << " both" << exit(FatalIOError);
+        }
+        s.direction = roughContact::parseScanDirection(direction);
+    }
     else if (type == "powerLaw" || type == "fractal")
     {
         s.kind =
@@ -79,7 +127,7 @@ roughContact::SurfaceSpec readSurface
     {
         FatalIOErrorInFunction(d)
             << "unknown surface type '" << type
-            << "' (profile, spectrum, powerLaw or fractal)"
+            << "' (profile, areal, spectrum, powerLaw or fractal)"
             << exit(FatalIOError);
     }
     if (d.found("length"))
@@ -92,6 +140,14 @@ roughContact::SurfaceSpec readSurface
                 << " times their spacing. 'length' is the scan length of a"
                 << " spectrum, powerLaw or fractal surface; remove it"
                 << exit(FatalIOError);
+        }
+        if (s.kind == roughContact::SurfaceSpec::Kind::areal)
+        {
+            FatalIOErrorInFunction(d)
+                << "entry 'length' has no meaning for a surface of type"
+                << " areal: its scan lengths are nx dx and ny dy. 'length'"
+                << " is the scan length of a spectrum, powerLaw or fractal"
+                << " surface; remove it" << exit(FatalIOError);
         }
         const scalar L = d.get<scalar>("length");
         if (!(L > 0) || !std::isfinite(L))

@@ -29,6 +29,17 @@ Spectrum SurfaceSpec::spectrum() const
         }
         return Spectrum::fromProfile(readProfile(file, profileOptions).subsampled(stride));
     }
+    case Kind::areal: {
+        if (stride != 1) {
+            throw ParameterError("stride", "subsamples a profile; an areal surface is used whole");
+        }
+        if (length) {
+            throw ParameterError("length",
+                                 "has no meaning for an areal surface, whose scan lengths are nx dx and "
+                                 "ny dy; it is for a spectrum, power law or fractal");
+        }
+        return lineScanSpectrum(readAreal(file, arealOptions).detrended(), direction);
+    }
     case Kind::spectrum:
         return readSpectrum(file, length);
     case Kind::powerLaw:

@@ -5,9 +5,11 @@
 #pragma once
 
 #include "roughContact/Error.hpp"
+#include "roughContact/io/ArealReader.hpp"
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/material/Materials.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
+#include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/thermal/ContactTable.hpp"
 
@@ -21,10 +23,14 @@ namespace roughContact {
 
 /// One rough surface as a user describes it.
 struct SurfaceSpec {
-    enum class Kind { profile, spectrum, powerLaw, fractal };
+    enum class Kind { profile, spectrum, powerLaw, fractal, areal };
     Kind kind = Kind::profile;
-    std::string file;                  ///< profile or spectrum file
+    std::string file;                  ///< profile, spectrum or areal (X3P or matrix) file
     ProfileReadOptions profileOptions; ///< units, spacing of one-column profiles
+    ArealReadOptions arealOptions;     ///< areal: units, dx, dy of a matrix; fillInvalid of an X3P
+    /// areal: the line scans whose averaged spectrum stands for the surface (lineScanSpectrum
+    /// of the detrended height map): rows (x), columns (y) or both.
+    ScanDirection direction = ScanDirection::x;
     std::size_t stride = 1;            ///< use every stride-th profile sample
     std::optional<double> length;      ///< scan length [m] of a spectrum or power law
     /// powerLaw: b_m [m], m, fmin, fmax [1/m]; fractal: D, G [m], fmin, fmax [1/m].
