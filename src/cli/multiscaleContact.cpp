@@ -7,9 +7,11 @@
 #include "roughContact/io/SpectrumReader.hpp"
 #include "roughContact/io/Units.hpp"
 #include "roughContact/material/Materials.hpp"
+#include "roughContact/models/BoundaryElement.hpp"
 #include "roughContact/models/ModelFactory.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
+#include "roughContact/surface/ArealSynthesis.hpp"
 #include "roughContact/surface/FractalFit.hpp"
 #include "roughContact/surface/Profile.hpp"
 #include "roughContact/surface/SpectralMoments.hpp"
@@ -18,6 +20,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <optional>
@@ -40,6 +43,10 @@ struct Options {
     std::optional<double> dy;
     std::optional<std::string> direction;
     bool fillInvalid = false;
+    std::string synthesize; // "N[,SEED]"
+    bool periodic = false;
+    std::optional<double> hardness;
+    bool hardnessFromYield = false;
     std::optional<double> length;
     std::size_t stride = 1;
     std::string model;
@@ -240,8 +247,111 @@ void printInfo(const Spectrum& s, std::ostream& os)
     }
 }
 
+// The areal surface of --model boundaryElement: the --areal map (the composite of two), or one
+// synthesized from the 1-D description (--synthesize N[,SEED]); and whether it is periodic.
+std::pair<ArealSurface, bool> arealSurfaceOf(const Options& o)
+{
+    if (!o.areals.empty()) {
+        if (!o.synthesize.empty()) {
+            throw ParameterError("--synthesize", "makes an areal surface from a profile or spectrum; --areal is one");
+        }
+        if (o.direction) {
+            throw ParameterError("--direction", "chooses line scans for the line-scan models; boundaryElement "
+                                                "uses the whole map");
+        }
+        ArealReadOptions ro;
+        if (o.units) {
+            ro.units = parseLengthUnit(*o.units);
+        }
+        ro.dx = o.dx;
+        ro.dy = o.dy;
+        ro.fillInvalid = o.fillInvalid;
+        std::optional<ArealSurface> total;
+        for (const std::string& path : o.areals) {
+            const ArealSurface one = readAreal(path, ro).detrended();
+            total = total ? compositeSurface(*total, one) : one;
+        }
+        return {*total, o.periodic};
+    }
+    if (o.synthesize.empty()) {
+        throw ParameterError("--model boundaryElement",
+                             "needs an areal surface: --areal FILE, or --synthesize N[,SEED] with a profile or "
+                             "spectrum");
+    }
+    const std::vector<double> ns = splitNumbers(o.synthesize, ',', "--synthesize");
+    if (ns.size() > 2 || ns[0] != std::floor(ns[0]) || ns[0] < 0 || (ns.size() == 2 && (ns[1] != std::floor(ns[1]) || ns[1] < 0))) {
+        throw ParameterError("--synthesize", "expects N[,SEED]: a whole grid size and a whole seed >= 0");
+    }
+    const Spectrum lineScan = surfaceOf(o);
+    const auto n = static_cast<std::size_t>(std::min(ns[0], 1e9));
+    const auto seed = ns.size() == 2 ? static_cast<std::uint64_t>(ns[1]) : std::uint64_t(1);
+    // A synthesized surface is periodic: it is solved so (the option is for measured maps).
+    return {synthesizeIsotropic(lineScan, n, seed, "synthesized from " + lineScan.source()), true};
+}
+
+// --model boundaryElement: the curve, one progress line on stderr per load once the run takes
+// longer than 2 s, then the whole CSV.
+int runBoundaryElement(const Options& o)
+{
+    if (o.levels) {
+        throw ParameterError("--levels", "the per-level trace exists for the multi-scale models only");
+    }
+    const auto [surface, periodic] = arealSurfaceOf(o);
+    const ContactMaterials materials = materialsOf(o);
+    BoundaryElementOptions bo;
+    bo.periodic = periodic;
+    if (o.hardness && o.hardnessFromYield) {
+        throw ParameterError("--hardness", "give a hardness or --hardness-from-yield, not both");
+    }
+    if (o.hardness) {
+        bo.hardness = requirePositive("--hardness", *o.hardness);
+    } else if (o.hardnessFromYield) {
+        bo.hardness = 2.84 * materials.yieldStrength("boundaryElement --hardness-from-yield"); // H = 2.84 S_y
+    }
+    const std::vector<double> loads = loadsOf(o);
+    const BoundaryElementModel model(surface, materials.reducedModulus(), bo);
+    const auto start = std::chrono::steady_clock::now();
+    const auto seconds = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    const std::vector<BoundaryElementPoint> points =
+        model.curve(loads, [&](std::size_t done, std::size_t total, const BoundaryElementPoint& p) {
+            if (seconds() > 2.0) {
+                std::cerr << "multiscaleContact: boundaryElement " << surface.nx() << " x " << surface.ny()
+                          << (periodic ? " (periodic)" : " (non-periodic)") << ": load " << done << " of " << total
+                          << ", F/(A_n E') = " << p.load << ": A_r/A_n = " << p.areaFraction << ", "
+                          << p.iterations << " iterations, residual " << p.residual << "; " << seconds()
+                          << " s\n";
+            }
+        });
+    std::ostringstream out;
+    out.precision(10);
+    out << "load,area,pressure,separation,h_per_k,iterations,residual\n";
+    for (const BoundaryElementPoint& p : points) {
+        out << p.load << ',' << p.areaFraction << ',';
+        if (p.areaFraction > 0.0) {
+            out << p.load / p.areaFraction;
+        }
+        out << ',' << p.meanSeparation << ',' << p.conductancePerConductivity << ',' << p.iterations << ','
+            << p.residual << '\n';
+    }
+    std::cout << out.str();
+    return 0;
+}
+
 int run(const Options& o)
 {
+    if (o.model == "boundaryElement") {
+        return runBoundaryElement(o);
+    }
+    for (const auto& [given, what] : {std::pair<bool, const char*>{!o.synthesize.empty(), "--synthesize"},
+                                      {o.periodic, "--periodic"},
+                                      {o.hardness.has_value(), "--hardness"},
+                                      {o.hardnessFromYield, "--hardness-from-yield"}}) {
+        if (given) {
+            throw ParameterError(what, "is for --model boundaryElement");
+        }
+    }
     const Spectrum spectrum = surfaceOf(o);
     if (o.info) {
         printInfo(spectrum, std::cerr);
@@ -290,15 +400,15 @@ int run(const Options& o)
         throw ParameterError("--conductance",
                              "the constriction conductance exists for the multi-scale models only");
     }
-    out << "load,area,pressure" << (o.conductance ? ",h_per_k" : "") << '\n';
+    out << "load,area,pressure" << (o.conductance ? ",separation,h_per_k" : "") << '\n';
     for (double load : loads) {
         const double a = model->areaFraction(load);
         out << load << ',' << a << ',';
         if (a > 0.0) {
             out << load / a; // F/(A_r E'), seed Eq. 34
         }
-        if (o.conductance) {
-            out << ',' << constrictionConductancePerConductivity(*ms, load); // inf at complete contact
+        if (o.conductance) { // no mean separation in the multi-scale model: empty
+            out << ",," << constrictionConductancePerConductivity(*ms, load); // inf at complete contact
         }
         out << '\n';
     }
@@ -369,11 +479,23 @@ int main(int argc, char** argv)
                    "use every K-th profile sample (sampling interval K dx; seed Fig. 8)")
         ->check(CLI::Range(std::size_t(1), std::size_t(1000000000)));
 
+    std::vector<std::string> allModels = modelNames();
+    allModels.push_back("boundaryElement");
     app.add_option("--model", o.model,
                    "hertz | jgh | jghConsistent | jacksonGreen | truncation (multi-scale, seed §2) | "
-                   "greenwoodWilliamson | greenwoodWilliamsonJG | majumdarBhushan")
+                   "greenwoodWilliamson | greenwoodWilliamsonJG | majumdarBhushan | boundaryElement (the exact "
+                   "reference: boundary elements on an --areal or --synthesize'd surface)")
         ->required()
-        ->check(CLI::IsMember(modelNames()));
+        ->check(CLI::IsMember(allModels));
+    app.add_option("--synthesize", o.synthesize,
+                   "N[,SEED]: boundaryElement on an N x N isotropic Gaussian surface synthesized from the "
+                   "--profile/--spectrum/--power-law/--fractal (periodic; SEED default 1)");
+    app.add_flag("--periodic", o.periodic,
+                 "boundaryElement: solve an --areal map as one period of a periodic surface (default: "
+                 "non-periodic, zero-padded)");
+    app.add_option("--hardness", o.hardness, "boundaryElement: perfectly plastic cap p <= H [Pa]");
+    app.add_flag("--hardness-from-yield", o.hardnessFromYield,
+                 "boundaryElement: the cap H = 2.84 S_y (--Sy of the yielding material)");
 
     auto* E = app.add_option("--E", o.E, "Young's modulus [Pa]; E1,E2 for two solids")
                   ->delimiter(',')

@@ -6,9 +6,11 @@
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/io/X3pReader.hpp"
 #include "roughContact/material/Materials.hpp"
+#include "roughContact/models/BoundaryElement.hpp"
 #include "roughContact/models/ModelFactory.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
+#include "roughContact/surface/ArealSynthesis.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 
@@ -170,10 +172,12 @@ TEST(Cli, ConductanceColumnIsTheLibrarys)
     const ContactMaterials mat = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
     const MultiscaleModel m(s, mat.reducedModulus(), makeAsperityModel("jacksonGreen", mat));
     ASSERT_EQ(csv.rows.size(), 3U);
+    const int sep = column(csv, "separation");
     for (const auto& row : csv.rows) {
         const double load = std::stod(row.at(0));
         const double expected = constrictionConductancePerConductivity(m, load);
         EXPECT_NEAR(std::stod(row.at(hi)), expected, 1e-9 * expected);
+        EXPECT_EQ(row.at(sep), ""); // the multi-scale model defines no mean separation
     }
     expectError("--profile '" + standin + "' --model greenwoodWilliamson" + steel +
                     " --loads 1e-4 --conductance",
@@ -345,4 +349,47 @@ TEST(Cli, BadInputFoundByAHostileUser)
     expectError(p + " --model jacksonGreen --E 2e11 --nu 0.3 --Sy 1e65 --loads 1e-4", {"S_y/E"});
     // Help is not an error.
     EXPECT_EQ(run("--help").status, 0);
+}
+
+TEST(Cli, BoundaryElementIsTheLibrarys)
+{
+    // --model boundaryElement on a surface synthesized from the stand-in: the CLI's columns are
+    // the library's BoundaryElementModel on synthesizeIsotropic of the same spectrum and seed.
+    const CommandResult r = run("--profile '" + standin + "' --synthesize 64,7 --model boundaryElement" + steel +
+                                " --loads 1e-4,1e-3");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Csv csv = parseCsv(r.out);
+    ASSERT_EQ(csv.rows.size(), 2U);
+    const Spectrum s = Spectrum::fromProfile(readProfile(standin));
+    const ContactMaterials mat = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
+    BoundaryElementOptions o;
+    o.periodic = true;
+    const BoundaryElementModel m(synthesizeIsotropic(s, 64, 7), mat.reducedModulus(), o);
+    for (const auto& row : csv.rows) {
+        const BoundaryElementPoint p = m.solve(std::stod(row.at(0)));
+        // Cold solves here, warm starts in the CLI's curve: the same solution to the solver's
+        // tolerance (1e-8), printed to 10 digits; the contact set may differ by a cell.
+        EXPECT_NEAR(std::stod(row.at(column(csv, "area"))), p.areaFraction, 2.0 / (64 * 64));
+        const double h = std::stod(row.at(column(csv, "h_per_k")));
+        EXPECT_NEAR(h, p.conductancePerConductivity, 1e-3 * p.conductancePerConductivity);
+        EXPECT_NEAR(std::stod(row.at(column(csv, "separation"))), p.meanSeparation, 1e-3 * p.meanSeparation);
+        EXPECT_GT(std::stod(row.at(column(csv, "iterations"))), 0.0);
+        EXPECT_LE(std::stod(row.at(column(csv, "residual"))), 1e-8);
+    }
+    // A hardness cap below the pressure: complete contact, h infinite.
+    const CommandResult full = run("--profile '" + standin + "' --synthesize 32 --model boundaryElement" + steel +
+                                   " --hardness 1e6 --loads 1e-3");
+    ASSERT_EQ(full.status, 0) << full.err;
+    EXPECT_EQ(parseCsv(full.out).rows.at(0).at(1), "1");
+    EXPECT_EQ(parseCsv(full.out).rows.at(0).at(4), "inf");
+    // Its errors.
+    const std::string p = "--profile '" + standin + "'";
+    expectError(p + " --model boundaryElement" + steel + " --loads 1e-4", {"--areal", "--synthesize"});
+    expectError(p + " --synthesize 64 --model hertz" + steel + " --loads 1e-4", {"--synthesize", "boundaryElement"});
+    expectError(p + " --model hertz --periodic" + steel + " --loads 1e-4", {"--periodic"});
+    expectError(p + " --synthesize 63 --model boundaryElement" + steel + " --loads 1e-4", {"n"});
+    expectError(p + " --synthesize 64,x --model boundaryElement" + steel + " --loads 1e-4", {"--synthesize"});
+    expectError(p + " --synthesize 64 --model boundaryElement --Eprime 2e11 --hardness-from-yield --loads 1e-4",
+                {"S_y"});
+    expectError(p + " --synthesize 64 --model boundaryElement" + steel + " --loads 1e-4 --levels", {"--levels"});
 }
