@@ -115,6 +115,19 @@ std::vector<double> loadsOf(const Options& o)
     return out;
 }
 
+// How to read the --areal files: the same as the boundary condition's `type areal`.
+ArealReadOptions arealReadOptions(const Options& o)
+{
+    ArealReadOptions ro;
+    if (o.units) {
+        ro.units = parseLengthUnit(*o.units);
+    }
+    ro.dx = o.dx;
+    ro.dy = o.dy;
+    ro.fillInvalid = o.fillInvalid;
+    return ro;
+}
+
 Spectrum surfaceOf(const Options& o)
 {
     if (o.profiles.empty() && o.stride != 1) {
@@ -147,13 +160,7 @@ Spectrum surfaceOf(const Options& o)
                                              "--spectrum, --power-law and --fractal");
         }
         // The same surface as the boundary condition's `type areal` (SurfaceSpec::Kind::areal).
-        ArealReadOptions ro;
-        if (o.units) {
-            ro.units = parseLengthUnit(*o.units);
-        }
-        ro.dx = o.dx;
-        ro.dy = o.dy;
-        ro.fillInvalid = o.fillInvalid;
+        const ArealReadOptions ro = arealReadOptions(o);
         const ScanDirection direction = parseScanDirection(o.direction.value_or("x"), "--direction");
         std::optional<Spectrum> total;
         for (const std::string& path : o.areals) {
@@ -259,13 +266,7 @@ std::pair<ArealSurface, bool> arealSurfaceOf(const Options& o)
             throw ParameterError("--direction", "chooses line scans for the line-scan models; boundaryElement "
                                                 "uses the whole map");
         }
-        ArealReadOptions ro;
-        if (o.units) {
-            ro.units = parseLengthUnit(*o.units);
-        }
-        ro.dx = o.dx;
-        ro.dy = o.dy;
-        ro.fillInvalid = o.fillInvalid;
+        const ArealReadOptions ro = arealReadOptions(o);
         std::optional<ArealSurface> total;
         for (const std::string& path : o.areals) {
             const ArealSurface one = readAreal(path, ro).detrended();

@@ -22,7 +22,10 @@
 #include "roughContact/io/X3pReader.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 
+#include <cfenv>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
@@ -230,15 +233,28 @@ inline std::string checkX3pInput(const std::string& input)
     roughContact::X3pReadOptions options;
     options.fillInvalid = !input.empty() && input[0] == 'f';
     const std::string content = input.size() > 1 ? input.substr(1) : std::string();
-    try {
-        return checkArealSurface(roughContact::readX3pBytes(content, inputName, options));
-    } catch (const roughContact::InputError& e) {
-        return checkMessage(e);
-    } catch (const roughContact::ParameterError& e) {
-        return checkMessage(e);
-    } catch (const std::exception& e) {
-        return std::string("unexpected exception: ") + e.what();
-    }
+    return checkReader(
+        content, [&](std::istream&) { return roughContact::readX3pBytes(content, inputName, options); },
+        [](const roughContact::ArealSurface& s) { return checkArealSurface(s); });
 }
 
 } // namespace roughContactFuzz
+
+/// The two entry points of a libFuzzer target that runs CHECK (one of the check*Input functions
+/// above) on each input, with floating-point traps on as OpenFOAM runs the readers (overflow,
+/// invalid operations and division by zero are a crash here too); any bug aborts, naming NAME.
+#define ROUGHCONTACT_FUZZ_TARGET(NAME, CHECK)                                                              \
+    extern "C" int LLVMFuzzerInitialize(int*, char***)                                                     \
+    {                                                                                                      \
+        feenableexcept(FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW);                                            \
+        return 0;                                                                                          \
+    }                                                                                                      \
+    extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)                      \
+    {                                                                                                      \
+        const std::string bug = (CHECK)(std::string(reinterpret_cast<const char*>(data), size));           \
+        if (!bug.empty()) {                                                                                \
+            std::fprintf(stderr, "%s: %s\n", NAME, bug.c_str());                                           \
+            std::abort();                                                                                  \
+        }                                                                                                  \
+        return 0;                                                                                          \
+    }
