@@ -20,8 +20,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -47,6 +49,7 @@ struct Options {
     bool periodic = false;
     std::optional<double> hardness;
     bool hardnessFromYield = false;
+    std::string pressureMap; // boundaryElement: the pressure field of the highest load, to this file
     std::optional<double> length;
     std::size_t stride = 1;
     std::string model;
@@ -315,6 +318,12 @@ int runBoundaryElement(const Options& o)
     const auto seconds = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
+    if (!o.pressureMap.empty()) {
+        std::ofstream probe(o.pressureMap, std::ios::app);
+        if (!probe) {
+            throw ParameterError("--pressure-map", "cannot write '" + o.pressureMap + "'");
+        }
+    }
     const std::vector<BoundaryElementPoint> points =
         model.curve(loads, [&](std::size_t done, std::size_t total, const BoundaryElementPoint& p) {
             if (seconds() > 2.0) {
@@ -336,6 +345,27 @@ int runBoundaryElement(const Options& o)
         out << ',' << p.meanSeparation << ',' << p.conductancePerConductivity << ',' << p.iterations << ','
             << p.residual << '\n';
     }
+    if (!o.pressureMap.empty()) {
+        // The highest load's field again (one more solve, warm-started from nothing): written as
+        // a text matrix the areal reader reads back (rows along x, one per line, along y).
+        const double top = *std::max_element(loads.begin(), loads.end());
+        std::vector<double> pressure;
+        model.solve(top, &pressure);
+        std::ofstream map(o.pressureMap);
+        map << "# contact pressure [Pa] of multiscaleContact --model boundaryElement at F/(A_n E') = " << top
+            << "; " << surface.nx() << " x " << surface.ny() << " points at dx = " << surface.dx()
+            << " m, dy = " << surface.dy() << " m; rows along x, one per line, following each other along y\n";
+        map.precision(8);
+        for (std::size_t iy = 0; iy < surface.ny(); ++iy) {
+            for (std::size_t ix = 0; ix < surface.nx(); ++ix) {
+                map << (ix > 0 ? " " : "") << (pressure.empty() ? 0.0 : pressure[iy * surface.nx() + ix]);
+            }
+            map << '\n';
+        }
+        if (!map) {
+            throw ParameterError("--pressure-map", "writing '" + o.pressureMap + "' failed");
+        }
+    }
     std::cout << out.str();
     return 0;
 }
@@ -348,7 +378,8 @@ int run(const Options& o)
     for (const auto& [given, what] : {std::pair<bool, const char*>{!o.synthesize.empty(), "--synthesize"},
                                       {o.periodic, "--periodic"},
                                       {o.hardness.has_value(), "--hardness"},
-                                      {o.hardnessFromYield, "--hardness-from-yield"}}) {
+                                      {o.hardnessFromYield, "--hardness-from-yield"},
+                                      {!o.pressureMap.empty(), "--pressure-map"}}) {
         if (given) {
             throw ParameterError(what, "is for --model boundaryElement");
         }
@@ -495,6 +526,9 @@ int main(int argc, char** argv)
                  "boundaryElement: solve an --areal map as one period of a periodic surface (default: "
                  "non-periodic, zero-padded)");
     app.add_option("--hardness", o.hardness, "boundaryElement: perfectly plastic cap p <= H [Pa]");
+    app.add_option("--pressure-map", o.pressureMap,
+                   "boundaryElement: write the contact pressure [Pa] at the highest load to this file, as a "
+                   "text matrix (rows along x, one per line)");
     app.add_flag("--hardness-from-yield", o.hardnessFromYield,
                  "boundaryElement: the cap H = 2.84 S_y (--Sy of the yielding material)");
 

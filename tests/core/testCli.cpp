@@ -3,6 +3,7 @@
 #include "RunCommand.hpp"
 
 #include "roughContact/interface/ContactInterface.hpp"
+#include "roughContact/io/ArealReader.hpp"
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/io/X3pReader.hpp"
 #include "roughContact/material/Materials.hpp"
@@ -353,6 +354,7 @@ TEST(Cli, BadInputFoundByAHostileUser)
 
 TEST(Cli, BoundaryElementIsTheLibrarys)
 {
+    const std::string p0 = "--profile '" + standin + "'";
     // --model boundaryElement on a surface synthesized from the stand-in: the CLI's columns are
     // the library's BoundaryElementModel on synthesizeIsotropic of the same spectrum and seed.
     const CommandResult r = run("--profile '" + standin + "' --synthesize 64,7 --model boundaryElement" + steel +
@@ -375,6 +377,27 @@ TEST(Cli, BoundaryElementIsTheLibrarys)
         EXPECT_NEAR(std::stod(row.at(column(csv, "separation"))), p.meanSeparation, 1e-3 * p.meanSeparation);
         EXPECT_GT(std::stod(row.at(column(csv, "iterations"))), 0.0);
         EXPECT_LE(std::stod(row.at(column(csv, "residual"))), 1e-8);
+    }
+    // --pressure-map: the field at the highest load, a matrix the areal reader reads back,
+    // whose mean is the nominal pressure F/A_n = load E' (to the solver's load balance, 1e-9).
+    {
+        TempDir dir;
+        const std::string map = (dir.path() / "p.txt").string();
+        const CommandResult pm = run("--profile '" + standin + "' --synthesize 32,7 --model boundaryElement" +
+                                     steel + " --loads 1e-4,1e-3 --pressure-map '" + map + "'");
+        ASSERT_EQ(pm.status, 0) << pm.err;
+        ArealReadOptions ro; // read as a height map in nm (so that GPa stay within its +-1 km)
+        ro.dx = 1.0; // 1 nm
+        ro.units = LengthUnit::nm;
+        const ArealSurface field = readAreal(map, ro);
+        ASSERT_EQ(field.nx(), 32U);
+        double mean = 0.0;
+        for (double v : field.heights()) {
+            EXPECT_GE(v, 0.0);
+            mean += 1e9 * v / double(field.heights().size());
+        }
+        EXPECT_NEAR(mean, 1e-3 * mat.reducedModulus(), 1e-6 * 1e-3 * mat.reducedModulus());
+        expectError(p0 + " --model hertz" + steel + " --loads 1e-4 --pressure-map '" + map + "'", {"--pressure-map"});
     }
     // A hardness cap below the pressure: complete contact, h infinite.
     const CommandResult full = run("--profile '" + standin + "' --synthesize 32 --model boundaryElement" + steel +
