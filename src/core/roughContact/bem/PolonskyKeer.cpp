@@ -95,7 +95,9 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
             }
         }
         const double gapResidual = std::sqrt(G / double(na)) / hScale_;
-        const double beta = delta * G / Gold;
+        // Gold is 0 after an iteration whose gap vanished exactly on the contact set (one
+        // point in contact): restart the conjugate direction then instead of dividing by it.
+        const double beta = delta > 0.0 && Gold > 0.0 ? delta * G / Gold : 0.0;
         for (std::size_t i = 0; i < n; ++i) {
             t[i] = p[i] > 0.0 ? g[i] + beta * t[i] : 0.0;
         }
