@@ -97,6 +97,105 @@ TEST(HalfSpaceOperator, PeriodicMultiplierIsExactForOneWave)
     }
 }
 
+TEST(HalfSpaceOperator, StiffnessInvertsThePeriodicCompliance)
+{
+    // S K u = u for every field of zero mean (S is E'|q|/2, K 2/(E'|q|)): to round-off. The
+    // mean, which K maps to 0, S maps to the stiffness of the longest wavelength. S's diagonal
+    // is its response at the loaded cell to a unit value there.
+    const std::size_t n = 32;
+    const double L = 1e-4;
+    const HalfSpaceOperator K(n, n, L / n, L / n, Ep, true);
+    std::vector<double> u = randomSurface(n, 3);
+    std::vector<double> p(n * n);
+    std::vector<double> back(n * n);
+    K.apply(u.data(), p.data());
+    K.applyStiffness(p.data(), back.data());
+    for (std::size_t i = 0; i < u.size(); ++i) {
+        EXPECT_NEAR(back[i], u[i], 1e-12) << i;
+    }
+    std::vector<double> one(n * n, 1.0);
+    K.applyStiffness(one.data(), back.data());
+    EXPECT_NEAR(back[7] / (Ep * pi / L), 1.0, 1e-12);
+    std::vector<double> impulse(n * n, 0.0);
+    impulse[5 * n + 9] = 1.0;
+    K.applyStiffness(impulse.data(), back.data());
+    EXPECT_NEAR(back[5 * n + 9] / K.stiffnessDiagonal(), 1.0, 1e-12);
+    // The padded (non-periodic) operator's S is symmetric positive definite: u.S u > 0.
+    const HalfSpaceOperator Kp(n, n, L / n, L / n, Ep, false);
+    Kp.applyStiffness(u.data(), back.data());
+    double uSu = 0.0;
+    double uSuSwapped = 0.0;
+    std::vector<double> v = randomSurface(n, 4);
+    std::vector<double> Sv(n * n);
+    Kp.applyStiffness(v.data(), Sv.data());
+    for (std::size_t i = 0; i < u.size(); ++i) {
+        uSu += u[i] * back[i];
+        uSuSwapped += u[i] * Sv[i] - v[i] * back[i];
+    }
+    EXPECT_GT(uSu, 0.0);
+    EXPECT_NEAR(uSuSwapped / uSu, 0.0, 1e-12);
+}
+
+TEST(PolonskyKeer, PreconditioningChangesTheIterationsNotTheSolution)
+{
+    // The preconditioned and the plain solver reach the same contact (periodic and padded) to
+    // what their tolerance allows: a separation of 1e-8 of the rms height left on the contact
+    // set moves a cell's pressure by about the cell's stiffness (S's diagonal) times it, so
+    // the two may differ by twice that. The preconditioned solve takes fewer iterations at
+    // the larger load, and so does the preconditioned conductance solve at both, which agrees
+    // to 1e-9 (its residual is 1e-10).
+    const std::size_t n = 64;
+    const double L = 1e-4;
+    std::vector<double> h = randomSurface(n, 21);
+    for (double& v : h) {
+        v *= 1e-7;
+    }
+    for (bool periodic : {true, false}) {
+        const HalfSpaceOperator K(n, n, L / n, L / n, Ep, periodic);
+        PolonskyKeerOptions plainOptions;
+        plainOptions.precondition = false;
+        const PolonskyKeer plain(K, h, plainOptions);
+        const PolonskyKeer preconditioned(K, h);
+        const double bound = 2.0 * K.stiffnessDiagonal() * 1e-8 * 1e-7;
+        for (double load : {1e-4, 2e-3}) {
+            const double P = load * Ep;
+            const ContactSolution a = plain.solve(P);
+            const ContactSolution b = preconditioned.solve(P);
+            ASSERT_TRUE(a.converged && b.converged) << periodic << " " << load;
+            double worst = 0.0;
+            std::size_t differentSets = 0;
+            std::vector<bool> contact(n * n);
+            for (std::size_t i = 0; i < n * n; ++i) {
+                worst = std::max(worst, std::abs(a.pressure[i] - b.pressure[i]));
+                differentSets += (a.pressure[i] > 0.0) != (b.pressure[i] > 0.0);
+                contact[i] = b.pressure[i] > 0.0;
+            }
+            std::printf("%s, F/(A_n E') = %g: A_r/A_n %.4f, iterations %zu plain, %zu preconditioned, "
+                        "largest pressure difference %.2e P (bound %.2e P)\n",
+                        periodic ? "periodic" : "padded", load, b.areaFraction, a.iterations, b.iterations,
+                        worst / P, bound / P);
+            EXPECT_LT(worst, bound);
+            EXPECT_EQ(differentSets, 0u);
+            EXPECT_NEAR(b.meanSeparation / a.meanSeparation, 1.0, 1e-8);
+            if (load > 1e-3) {
+                EXPECT_LT(b.iterations, a.iterations);
+            }
+            const SpotConductance ca = spotConductance(K, contact, 1e-10, 20000, nullptr, nullptr, false);
+            const SpotConductance cb = spotConductance(K, contact);
+            ASSERT_TRUE(ca.converged && cb.converged);
+            EXPECT_NEAR(cb.perConductivity / ca.perConductivity, 1.0, 1e-9);
+            EXPECT_LT(cb.iterations, ca.iterations);
+            // The model's tolerance: the conductance to 1e-9 of a solve to 1e-12.
+            const SpotConductance loose = spotConductance(K, contact, conductanceTolerance);
+            const SpotConductance tight = spotConductance(K, contact, 1e-12);
+            std::printf("  conductance: %zu iterations to %g, %zu to 1e-12, relative difference %.1e\n",
+                        loose.iterations, conductanceTolerance, tight.iterations,
+                        loose.perConductivity / tight.perConductivity - 1.0);
+            EXPECT_NEAR(loose.perConductivity / tight.perConductivity, 1.0, 1e-9);
+        }
+    }
+}
+
 TEST(PolonskyKeer, WestergaardPartialAndCompleteContact)
 {
     // A sinusoidal ridge z = D cos(2 pi x / lambda) on an elastic half-space (Westergaard 1939;

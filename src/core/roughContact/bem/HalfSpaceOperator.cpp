@@ -68,7 +68,7 @@ double HalfSpaceOperator::loveRectangle(double x, double y, double a, double b, 
 double HalfSpaceOperator::bytesFor(std::size_t nx, std::size_t ny, bool periodic)
 {
     const double m = (periodic ? 1.0 : 4.0) * double(nx) * double(ny);
-    return m * (8.0 + 16.0 * 0.5 + 8.0 * 0.5); // real buffer, half-complex buffer, kernel
+    return m * (8.0 + 16.0 * 0.5 + 2.0 * 8.0 * 0.5); // real buffer, half-complex buffer, K and S
 }
 
 HalfSpaceOperator::HalfSpaceOperator(std::size_t nx, std::size_t ny, double dx, double dy, double Eprime,
@@ -97,6 +97,7 @@ HalfSpaceOperator::HalfSpaceOperator(std::size_t nx, std::size_t ny, double dx, 
                 largest_ = std::max(largest_, kernel_[ky * hx + kx] * double(mx_ * my_));
             }
         }
+        makeStiffness();
         return;
     }
     // Non-periodic: Love's influence of one cell at every offset (i dx, j dy), |i| < nx,
@@ -118,35 +119,83 @@ HalfSpaceOperator::HalfSpaceOperator(std::size_t nx, std::size_t ny, double dx, 
         kernel_[i] = fft_->spectral.get()[i][0] / double(mx_ * my_);
         largest_ = std::max(largest_, std::abs(fft_->spectral.get()[i][0]));
     }
+    makeStiffness();
+}
+
+void HalfSpaceOperator::makeStiffness()
+{
+    // E'|q|/2 on the FFT grid (periodic: the exact inverse of K on the modes q != 0; padded: the
+    // stiffness of the periodic half-space of twice the size, an approximate inverse). The mean
+    // mode, which K sets to 0, gets the stiffness of the longest wavelength of the grid.
+    const std::size_t hx = mx_ / 2 + 1;
+    const double Lx = dx_ * double(mx_);
+    const double Ly = dy_ * double(my_);
+    stiffness_.assign(my_ * hx, 0.0);
+    stiffnessDiagonal_ = 0.0;
+    for (std::size_t ky = 0; ky < my_; ++ky) {
+        const double fy = double(ky <= my_ / 2 ? ky : my_ - ky) / Ly;
+        for (std::size_t kx = 0; kx < hx; ++kx) {
+            const double fx = double(kx) / Lx;
+            double q = 2.0 * pi * std::sqrt(fx * fx + fy * fy);
+            if (q == 0.0) {
+                q = 2.0 * pi / std::max(Lx, Ly);
+            }
+            const double s = 0.5 * Eprime_ * q / double(mx_ * my_);
+            stiffness_[ky * hx + kx] = s;
+            // The half-complex layout holds the columns kx = 1 .. (mx - 1)/2 for their
+            // mirror images too.
+            const bool mirrored = kx > 0 && 2 * kx != mx_;
+            stiffnessDiagonal_ += mirrored ? 2.0 * s : s;
+        }
+    }
 }
 
 HalfSpaceOperator::~HalfSpaceOperator() = default;
 
-void HalfSpaceOperator::apply(const double* p, double* u) const
+void HalfSpaceOperator::convolve(const std::vector<double>& multiplier, const double* in, double* out) const
 {
+    fftw_complex* c = fft_->spectral.get();
     double* r = fft_->real.get();
-    if (periodic_) {
-        std::copy(p, p + size(), r);
+    // Periodic: transform the caller's arrays directly when their alignment matches the
+    // planned buffers' (FFTW's new-array execute), sparing two copies of the grid.
+    const int aligned = fftw_alignment_of(r);
+    if (periodic_ && fftw_alignment_of(const_cast<double*>(in)) == aligned) {
+        fftw_execute_dft_r2c(fft_->forward, const_cast<double*>(in), c);
+    } else if (periodic_) {
+        std::copy(in, in + size(), r);
+        fftw_execute(fft_->forward);
     } else {
         std::fill(r, r + mx_ * my_, 0.0);
         for (std::size_t iy = 0; iy < ny_; ++iy) {
-            std::copy(p + iy * nx_, p + (iy + 1) * nx_, r + iy * mx_);
+            std::copy(in + iy * nx_, in + (iy + 1) * nx_, r + iy * mx_);
         }
+        fftw_execute(fft_->forward);
     }
-    fftw_execute(fft_->forward);
-    fftw_complex* c = fft_->spectral.get();
-    for (std::size_t i = 0; i < kernel_.size(); ++i) {
-        c[i][0] *= kernel_[i];
-        c[i][1] *= kernel_[i];
+    for (std::size_t i = 0; i < multiplier.size(); ++i) {
+        c[i][0] *= multiplier[i];
+        c[i][1] *= multiplier[i];
     }
-    fftw_execute(fft_->backward);
-    if (periodic_) {
-        std::copy(r, r + size(), u);
+    if (periodic_ && fftw_alignment_of(out) == aligned) {
+        fftw_execute_dft_c2r(fft_->backward, c, out); // c2r overwrites c: scratch
+    } else if (periodic_) {
+        fftw_execute(fft_->backward);
+        std::copy(r, r + size(), out);
     } else {
+        fftw_execute(fft_->backward);
         for (std::size_t iy = 0; iy < ny_; ++iy) {
-            std::copy(r + iy * mx_, r + iy * mx_ + nx_, u + iy * nx_);
+            std::copy(r + iy * mx_, r + iy * mx_ + nx_, out + iy * nx_);
         }
     }
+}
+
+void HalfSpaceOperator::apply(const double* p, double* u) const
+{
+    convolve(kernel_, p, u);
+}
+
+void HalfSpaceOperator::applyStiffness(const double* u, double* p) const
+{
+    convolve(stiffness_, u, p);
 }
 
 std::vector<double> HalfSpaceOperator::apply(const std::vector<double>& p) const

@@ -32,6 +32,14 @@ public:
     /// u = K p; p and u hold nx * ny values (they may be the same array).
     void apply(const double* p, double* u) const;
     std::vector<double> apply(const std::vector<double>& p) const;
+    /// p = S u with the multiplier E'|q|/2 (the same FFTs), the preconditioner of the solvers
+    /// (the FFT-based preconditioner of Vollebregt, J. Comput. Phys. 257 (2014) 333):
+    /// periodic, the exact inverse of K on every mode but the mean (which K maps to 0 and S
+    /// gives the stiffness of the longest wavelength); non-periodic, the periodic stiffness of
+    /// the padded grid, an approximate inverse. Symmetric positive definite.
+    void applyStiffness(const double* u, double* p) const;
+    /// The diagonal of S [Pa/m] (equal at every cell): the stiffness of one cell.
+    double stiffnessDiagonal() const noexcept { return stiffnessDiagonal_; }
 
     std::size_t nx() const noexcept { return nx_; }
     std::size_t ny() const noexcept { return ny_; }
@@ -51,6 +59,8 @@ public:
 
 private:
     struct Fft;
+    void makeStiffness();
+    void convolve(const std::vector<double>& multiplier, const double* in, double* out) const;
     std::size_t nx_;
     std::size_t ny_;
     double dx_;
@@ -60,6 +70,8 @@ private:
     std::size_t mx_; ///< FFT grid: nx (periodic) or 2 nx
     std::size_t my_;
     std::vector<double> kernel_; ///< the real, symmetric kernel's transform, my x (mx/2 + 1)
+    std::vector<double> stiffness_; ///< S's multiplier, the same layout
+    double stiffnessDiagonal_ = 0.0;
     std::unique_ptr<Fft> fft_;
     double largest_ = 0.0;
 };

@@ -61,6 +61,11 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
     std::vector<double> g(n); // separation: u - h less its mean on the contact set
     std::vector<double> t(n, 0.0);
     std::vector<double> r(n);
+    std::vector<double> z(options_.precondition ? n : 0); // the preconditioned gap
+    // The overlap correction turns a penetration into a pressure: with the plain gap as the
+    // direction tau is a stiffness [Pa/m]; preconditioned, tau is a number and the stiffness
+    // is S's diagonal, the stiffness of one cell.
+    const double overlapStiffness = options_.precondition ? op_.stiffnessDiagonal() : 1.0;
     double delta = 0.0;
     double Gold = 1.0;
     ContactSolution out;
@@ -95,11 +100,32 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
             }
         }
         const double gapResidual = std::sqrt(G / double(na)) / hScale_;
+        if (options_.precondition) {
+            // The preconditioned gap z = P S P g, P the projection onto the fields on the
+            // contact set with zero sum (the load stays W), S the stiffness (HalfSpaceOperator).
+            for (std::size_t i = 0; i < n; ++i) {
+                z[i] = p[i] > 0.0 ? g[i] : 0.0;
+            }
+            op_.applyStiffness(z.data(), z.data());
+            double zbar = 0.0;
+            for (std::size_t i = 0; i < n; ++i) {
+                if (p[i] > 0.0) {
+                    zbar += z[i];
+                }
+            }
+            zbar /= double(na);
+            G = 0.0;
+            for (std::size_t i = 0; i < n; ++i) {
+                z[i] = p[i] > 0.0 ? z[i] - zbar : 0.0;
+                G += z[i] * g[i];
+            }
+        }
+        const std::vector<double>& direction = options_.precondition ? z : g;
         // Gold is 0 after an iteration whose gap vanished exactly on the contact set (one
         // point in contact): restart the conjugate direction then instead of dividing by it.
         const double beta = delta > 0.0 && Gold > 0.0 ? delta * G / Gold : 0.0;
         for (std::size_t i = 0; i < n; ++i) {
-            t[i] = p[i] > 0.0 ? g[i] + beta * t[i] : 0.0;
+            t[i] = p[i] > 0.0 ? direction[i] + beta * t[i] : 0.0;
         }
         Gold = G;
         op_.apply(t.data(), r.data());
@@ -131,7 +157,7 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
                 clamped = clamped || v < 0.0;
                 p[i] = std::max(0.0, v);
             } else if (g[i] < 0.0 && tau > 0.0) {
-                p[i] = -tau * g[i];
+                p[i] = -tau * overlapStiffness * g[i];
                 overlap = true;
             }
             sum += p[i];
@@ -309,7 +335,8 @@ ContactSolution PolonskyKeer::solveCapped(double P, const std::vector<double>* w
 
 SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<bool>& contact,
                                 double tolerance, std::size_t maxIterations,
-                                const std::vector<double>* initial, std::vector<double>* solution)
+                                const std::vector<double>* initial, std::vector<double>* solution,
+                                bool precondition_)
 {
     const std::size_t n = op.size();
     if (contact.size() != n) {
@@ -327,9 +354,11 @@ SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<b
         return out;
     }
     // Conjugate gradients for K_cc x = 1 (K restricted to the contact set: symmetric positive
-    // definite), x = 0 off the set.
+    // definite), x = 0 off the set, preconditioned with the stiffness restricted to the set
+    // (HalfSpaceOperator::applyStiffness; symmetric positive definite too).
     std::vector<double> x(n, 0.0);
     std::vector<double> res(n, 0.0);
+    std::vector<double> z(n, 0.0);
     std::vector<double> d(n, 0.0);
     std::vector<double> Kd(n);
     const bool warm = initial != nullptr && initial->size() == n;
@@ -344,7 +373,24 @@ SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<b
         res[i] = contact[i] ? 1.0 - (warm ? Kd[i] : 0.0) : 0.0;
         rr += res[i] * res[i];
     }
-    d = res;
+    const auto precondition = [&]() {
+        if (!precondition_) {
+            z = res;
+            return;
+        }
+        op.applyStiffness(res.data(), z.data());
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!contact[i]) {
+                z[i] = 0.0;
+            }
+        }
+    };
+    precondition();
+    double rz = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        rz += res[i] * z[i];
+    }
+    d = z;
     const double norm = std::sqrt(double(nc));
     out.residual = std::sqrt(rr) / norm;
     out.converged = out.residual <= tolerance;
@@ -356,7 +402,7 @@ SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<b
                 dKd += d[i] * Kd[i];
             }
         }
-        const double alpha = rr / dKd;
+        const double alpha = rz / dKd;
         double rrNew = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
             if (contact[i]) {
@@ -371,10 +417,15 @@ SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<b
             out.converged = true;
             break;
         }
-        const double beta = rrNew / rr;
-        rr = rrNew;
+        precondition();
+        double rzNew = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
-            d[i] = contact[i] ? res[i] + beta * d[i] : 0.0;
+            rzNew += res[i] * z[i];
+        }
+        const double beta = rzNew / rz;
+        rz = rzNew;
+        for (std::size_t i = 0; i < n; ++i) {
+            d[i] = contact[i] ? z[i] + beta * d[i] : 0.0;
         }
     }
     double mean = 0.0;

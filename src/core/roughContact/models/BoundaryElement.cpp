@@ -35,6 +35,7 @@ BoundaryElementModel::BoundaryElementModel(const ArealSurface& surface, double E
     po.tolerance = options_.tolerance;
     po.maxIterations = options_.maxIterations;
     po.hardness = options_.hardness;
+    po.precondition = options_.precondition;
     solver_ = std::make_unique<PolonskyKeer>(*op_, surface_.heights(), po);
 }
 
@@ -72,7 +73,8 @@ BoundaryElementPoint BoundaryElementModel::solve(double load, std::vector<double
     for (std::size_t i = 0; i < contact.size(); ++i) {
         contact[i] = s.pressure[i] > 0.0;
     }
-    const SpotConductance c = spotConductance(*op_, contact, 1e-10, options_.maxIterations, warmFlux, flux);
+    const SpotConductance c = spotConductance(*op_, contact, conductanceTolerance, options_.maxIterations,
+                                              warmFlux, flux, options_.precondition);
     if (!c.converged) {
         std::ostringstream os;
         os << "the conductance solve at F/(A_n E') = " << load << " did not converge in " << c.iterations
@@ -107,14 +109,29 @@ std::vector<BoundaryElementPoint> BoundaryElementModel::curve(
     std::vector<BoundaryElementPoint> out(loads.size());
     std::vector<double> previous;
     std::vector<double> previousFlux;
+    double previousLoad = 0.0;
     std::size_t done = 0;
     for (std::size_t k : order) {
         std::vector<double> pressure;
         std::vector<double> flux;
+        // The first guess: the previous pressure moved along the tangent of the curve. The
+        // conductance solve's x (K x = 1 on the contact set) is the pressure increment of a
+        // unit rigid approach on that contact set, so p + c x with c = n (P - P_previous) / sum x
+        // carries the new load (PolonskyKeer rescales and finds the new contact points).
+        if (!previous.empty() && previousFlux.size() == previous.size()) {
+            const double sum = std::accumulate(previousFlux.begin(), previousFlux.end(), 0.0);
+            if (sum > 0.0) {
+                const double c = double(previous.size()) * (loads[k] - previousLoad) * Eprime_ / sum;
+                for (std::size_t i = 0; i < previous.size(); ++i) {
+                    previous[i] += c * previousFlux[i];
+                }
+            }
+        }
         out[k] = solve(loads[k], &pressure, previous.empty() ? nullptr : &previous, &flux,
                        previousFlux.empty() ? nullptr : &previousFlux);
         if (!pressure.empty()) {
             previous = std::move(pressure);
+            previousLoad = loads[k];
         }
         if (!flux.empty()) {
             previousFlux = std::move(flux);

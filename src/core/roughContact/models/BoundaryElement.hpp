@@ -16,6 +16,12 @@
 
 namespace roughContact {
 
+/// The conductance solve's tolerance (relative residual of K x = 1 on the contact set). The
+/// conductance is the mean of x, whose error after conjugate gradients is the error's energy
+/// norm squared: it falls as the square of the residual, so 1e-7 leaves it exact to about
+/// 1e-10 (testBoundaryElement measures it against 1e-12).
+inline constexpr double conductanceTolerance = 1e-7;
+
 struct BoundaryElementOptions {
     /// Solve the surface as one period of a periodic surface (synthesized surfaces are);
     /// otherwise (measured maps) without wrap-around: zero-padded, the surface a patch of an
@@ -25,6 +31,8 @@ struct BoundaryElementOptions {
     std::optional<double> hardness;
     double tolerance = 1e-8;
     std::size_t maxIterations = 20000;
+    /// Precondition the contact and conductance solves (PolonskyKeerOptions::precondition).
+    bool precondition = true;
     /// The most memory [bytes] the solver may take (checked before allocating).
     double memoryLimit = 8e9;
 };
