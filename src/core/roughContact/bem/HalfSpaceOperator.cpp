@@ -131,21 +131,13 @@ void HalfSpaceOperator::makeStiffness()
     const double Lx = dx_ * double(mx_);
     const double Ly = dy_ * double(my_);
     stiffness_.assign(my_ * hx, 0.0);
-    stiffnessDiagonal_ = 0.0;
+    smallestStiffness_ = 0.5 * Eprime_ * 2.0 * pi / std::max(Lx, Ly);
     for (std::size_t ky = 0; ky < my_; ++ky) {
         const double fy = double(ky <= my_ / 2 ? ky : my_ - ky) / Ly;
         for (std::size_t kx = 0; kx < hx; ++kx) {
             const double fx = double(kx) / Lx;
-            double q = 2.0 * pi * std::sqrt(fx * fx + fy * fy);
-            if (q == 0.0) {
-                q = 2.0 * pi / std::max(Lx, Ly);
-            }
-            const double s = 0.5 * Eprime_ * q / double(mx_ * my_);
-            stiffness_[ky * hx + kx] = s;
-            // The half-complex layout holds the columns kx = 1 .. (mx - 1)/2 for their
-            // mirror images too.
-            const bool mirrored = kx > 0 && 2 * kx != mx_;
-            stiffnessDiagonal_ += mirrored ? 2.0 * s : s;
+            const double q = 2.0 * pi * std::sqrt(fx * fx + fy * fy);
+            stiffness_[ky * hx + kx] = std::max(0.5 * Eprime_ * q, smallestStiffness_) / double(mx_ * my_);
         }
     }
 }

@@ -38,8 +38,9 @@ public:
     /// gives the stiffness of the longest wavelength); non-periodic, the periodic stiffness of
     /// the padded grid, an approximate inverse. Symmetric positive definite.
     void applyStiffness(const double* u, double* p) const;
-    /// The diagonal of S [Pa/m] (equal at every cell): the stiffness of one cell.
-    double stiffnessDiagonal() const noexcept { return stiffnessDiagonal_; }
+    /// S's smallest multiplier [Pa/m]: the stiffness of the longest wavelength of the grid
+    /// (the mean mode's).
+    double smallestStiffness() const noexcept { return smallestStiffness_; }
 
     std::size_t nx() const noexcept { return nx_; }
     std::size_t ny() const noexcept { return ny_; }
@@ -71,7 +72,7 @@ private:
     std::size_t my_;
     std::vector<double> kernel_; ///< the real, symmetric kernel's transform, my x (mx/2 + 1)
     std::vector<double> stiffness_; ///< S's multiplier, the same layout
-    double stiffnessDiagonal_ = 0.0;
+    double smallestStiffness_ = 0.0;
     std::unique_ptr<Fft> fft_;
     double largest_ = 0.0;
 };

@@ -61,11 +61,8 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
     std::vector<double> g(n); // separation: u - h less its mean on the contact set
     std::vector<double> t(n, 0.0);
     std::vector<double> r(n);
-    std::vector<double> z(options_.precondition ? n : 0); // the preconditioned gap
-    // The overlap correction turns a penetration into a pressure: with the plain gap as the
-    // direction tau is a stiffness [Pa/m]; preconditioned, tau is a number and the stiffness
-    // is S's diagonal, the stiffness of one cell.
-    const double overlapStiffness = options_.precondition ? op_.stiffnessDiagonal() : 1.0;
+    std::vector<double> z(options_.precondition ? n : 0);    // the preconditioned gap
+    std::vector<double> zOut(options_.precondition ? n : 0); // S of the penetration outside
     double delta = 0.0;
     double Gold = 1.0;
     ContactSolution out;
@@ -120,6 +117,22 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
                 G += z[i] * g[i];
             }
         }
+        // The overlap correction turns a penetration outside the contact set into a pressure
+        // there: with the plain gap as the direction, tau is a stiffness [Pa/m] and the
+        // pressure -tau g (Polonsky & Keer); preconditioned, tau is a number and the pressure
+        // -tau (S g_out), g_out the penetration alone, so that a patch of penetrating points
+        // gets the patch's stiffness, not each point's (which would overshoot the load
+        // many times over), and at least the stiffness of the longest wavelength.
+        bool penetrating = false;
+        if (options_.precondition) {
+            for (std::size_t i = 0; i < n; ++i) {
+                zOut[i] = p[i] <= 0.0 && g[i] < 0.0 ? g[i] : 0.0;
+                penetrating = penetrating || zOut[i] < 0.0;
+            }
+            if (penetrating) {
+                op_.applyStiffness(zOut.data(), zOut.data());
+            }
+        }
         const std::vector<double>& direction = options_.precondition ? z : g;
         // Gold is 0 after an iteration whose gap vanished exactly on the contact set (one
         // point in contact): restart the conjugate direction then instead of dividing by it.
@@ -157,7 +170,8 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
                 clamped = clamped || v < 0.0;
                 p[i] = std::max(0.0, v);
             } else if (g[i] < 0.0 && tau > 0.0) {
-                p[i] = -tau * overlapStiffness * g[i];
+                p[i] = options_.precondition ? tau * std::max(-zOut[i], -g[i] * op_.smallestStiffness())
+                                             : -tau * g[i];
                 overlap = true;
             }
             sum += p[i];
