@@ -1,0 +1,51 @@
+// The two roughness parameters of the thermal contact correlations (Mikic.hpp,
+// CooperMikicYovanovich.hpp, Microhardness.hpp): the rms height sigma and the mean absolute
+// slope m, from a profile, an areal surface or a spectrum, and of two surfaces in contact
+// (docs/correlations.md).
+#pragma once
+
+#include "roughContact/surface/ArealSurface.hpp"
+
+namespace roughContact {
+
+class Profile;
+class Spectrum;
+
+struct SurfaceRoughness {
+    double sigma;             ///< rms height about the mean plane [m]
+    double meanAbsoluteSlope; ///< m = <|dz/dx|> [-]
+};
+
+/// ParameterError naming the entry ("rms roughness sigma", "mean absolute slope m") unless both
+/// are finite and > 0 and sigma >= limits::minimumRoughness (1e-15 m). Every correlation calls
+/// it on its input.
+void checkRoughness(const SurfaceRoughness& r);
+
+/// sigma and m of a line profile, after removing its mean and linear tilt (Profile::detrended,
+/// least squares): sigma = rms of the detrended heights; m = (1/(N-1)) sum_i |z_{i+1} - z_i| / dx,
+/// the forward difference of neighbouring samples (first order in dx; on a sinusoid of
+/// wavelength lambda it underestimates the slope by at most about (pi dx/lambda)^2/2, relative).
+/// The slope depends on the sampling interval dx: a finer stylus sees shorter wavelengths and a
+/// larger m, so m is only defined together with the instrument's resolution.
+SurfaceRoughness profileRoughness(const Profile& profile);
+
+/// sigma and m of an areal surface after removing its least-squares plane
+/// (ArealSurface::detrended): sigma = rms of the detrended heights; m = the mean of |forward
+/// difference|/spacing along x (over every row), along y (over every column), or, for `both`,
+/// the arithmetic mean of the two (most authors quote m of a profile: choose the direction the
+/// stylus would have run). Same difference scheme and resolution dependence as profileRoughness.
+SurfaceRoughness arealRoughness(const ArealSurface& surface, ScanDirection direction);
+
+/// sigma and m of a spectrum: sigma^2 = m0 = sum_i beta_i^2/2 and the rms slope
+/// sqrt(m2), m2 = sum_i (2 pi f_i beta_i)^2/2 (spectralMoments), and m = sqrt(2/pi) sqrt(m2).
+/// The factor sqrt(2/pi) = <|s|>/sqrt(<s^2>) holds for a Gaussian slope s only: this ASSUMES
+/// Gaussian (normally distributed) slopes; for a single sinusoid it is 2 sqrt(2)/pi instead
+/// (0.90 rather than 0.80 of the rms slope). ParameterError when sigma or m is zero.
+SurfaceRoughness spectrumRoughness(const Spectrum& spectrum);
+
+/// The equivalent surface of two rough surfaces in contact: sigma = sqrt(s1^2 + s2^2),
+/// m = sqrt(m1^2 + m2^2) (Yovanovich, J. Thermophys. Heat Transfer 19 (2005) 379-386, the
+/// "effective" roughness and slope of a joint; see docs/correlations.md). Both checked.
+SurfaceRoughness combined(const SurfaceRoughness& a, const SurfaceRoughness& b);
+
+} // namespace roughContact
