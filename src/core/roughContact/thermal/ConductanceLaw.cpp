@@ -1,0 +1,134 @@
+#include "roughContact/thermal/ConductanceLaw.hpp"
+
+#include "roughContact/Error.hpp"
+#include "roughContact/models/MultiscaleModel.hpp"
+#include "roughContact/thermal/ConstrictionConductance.hpp"
+#include "roughContact/thermal/CooperMikicYovanovich.hpp"
+#include "roughContact/thermal/Mikic.hpp"
+
+#include <algorithm>
+
+namespace roughContact {
+
+namespace {
+
+double checkPressure(double P)
+{
+    requireFinite("contact pressure P", P);
+    if (P < 0.0) {
+        throw ParameterError("contact pressure P", "must be >= 0, got " + std::to_string(P));
+    }
+    return P;
+}
+
+class JacksonBhavnaniFerguson final : public ConductanceLaw {
+public:
+    explicit JacksonBhavnaniFerguson(const MultiscaleModel& model) : model_(model) {}
+    std::string name() const override { return "jacksonBhavnaniFerguson"; }
+    double perConductivity(double P) const override
+    {
+        return constrictionConductancePerConductivity(model_, checkPressure(P) / model_.reducedModulus());
+    }
+
+private:
+    const MultiscaleModel& model_;
+};
+
+class MikicLaw final : public ConductanceLaw {
+public:
+    MikicLaw(const SurfaceRoughness& r, double Eprime) : r_(r), Eprime_(Eprime)
+    {
+        mikicConductancePerConductivity(0.0, r_, Eprime_); // checks the inputs once
+    }
+    std::string name() const override { return "mikic"; }
+    double perConductivity(double P) const override { return mikicConductancePerConductivity(P, r_, Eprime_); }
+
+private:
+    SurfaceRoughness r_;
+    double Eprime_;
+};
+
+class CooperMikicYovanovichLaw final : public ConductanceLaw {
+public:
+    CooperMikicYovanovichLaw(const SurfaceRoughness& r, std::optional<double> Hc,
+                             std::optional<VickersCoefficients> vickers)
+        : r_(r), Hc_(Hc), vickers_(vickers)
+    {
+        checkRoughness(r_);
+        if (Hc_) {
+            requirePositive("microhardness H_c", *Hc_);
+        } else {
+            checkVickersCoefficients(*vickers_);
+        }
+    }
+    std::string name() const override { return "cooperMikicYovanovich"; }
+    double perConductivity(double P) const override
+    {
+        return Hc_ ? cooperMikicYovanovichConductancePerConductivity(P, r_, *Hc_)
+                   : cooperMikicYovanovichConductancePerConductivity(P, r_, *vickers_);
+    }
+
+private:
+    SurfaceRoughness r_;
+    std::optional<double> Hc_;
+    std::optional<VickersCoefficients> vickers_;
+};
+
+const SurfaceRoughness& needRoughness(const std::string& law, const ConductanceLawInputs& in)
+{
+    if (!in.roughness) {
+        throw ParameterError(law, "needs the surfaces' rms height sigma and mean absolute slope m");
+    }
+    return *in.roughness;
+}
+
+} // namespace
+
+const std::vector<std::string>& conductanceLawNames()
+{
+    static const std::vector<std::string> names = {"jacksonBhavnaniFerguson", "mikic", "cooperMikicYovanovich"};
+    return names;
+}
+
+const std::string& defaultConductanceLaw()
+{
+    static const std::string name = "jacksonBhavnaniFerguson";
+    return name;
+}
+
+bool isConductanceLaw(const std::string& name)
+{
+    const auto& n = conductanceLawNames();
+    return std::find(n.begin(), n.end(), name) != n.end();
+}
+
+std::unique_ptr<ConductanceLaw> makeConductanceLaw(const std::string& name, const ConductanceLawInputs& in)
+{
+    if (name == "jacksonBhavnaniFerguson") {
+        if (in.multiscale == nullptr) {
+            throw ParameterError(name, "needs a multi-scale contact model (hertz, jgh, jghConsistent, "
+                                       "jacksonGreen or truncation)");
+        }
+        return std::make_unique<JacksonBhavnaniFerguson>(*in.multiscale);
+    }
+    if (name == "mikic") {
+        return std::make_unique<MikicLaw>(needRoughness(name, in), in.Eprime);
+    }
+    if (name == "cooperMikicYovanovich") {
+        if (!in.microhardness && !in.vickers) {
+            throw ParameterError(name, "needs the microhardness H_c, or the Vickers coefficients c1, c2 to "
+                                       "compute it from");
+        }
+        if (in.microhardness && in.vickers) {
+            throw ParameterError(name, "give the microhardness H_c or the Vickers coefficients, not both");
+        }
+        return std::make_unique<CooperMikicYovanovichLaw>(needRoughness(name, in), in.microhardness, in.vickers);
+    }
+    std::string known;
+    for (const auto& n : conductanceLawNames()) {
+        known += (known.empty() ? "" : ", ") + n;
+    }
+    throw ParameterError("conductance law", "unknown law '" + name + "'; known: " + known);
+}
+
+} // namespace roughContact

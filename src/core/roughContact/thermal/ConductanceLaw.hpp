@@ -1,0 +1,63 @@
+// The contact conductance laws a user selects by name: the one list of their names, what each
+// needs, and a factory. Each law turns the nominal pressure P into h_c/k_s [1/m]; the real
+// contact area is the contact model's business (the multi-scale model's in the boundary
+// condition), the conductance the law's. docs/validation/fidelity.md measures every law against
+// the exact (boundary-element) conductance; README.md ("The models") quotes the result.
+//
+//   jacksonBhavnaniFerguson  the multi-scale constriction resistances in series, each level's
+//                            spots in flux tubes (ConstrictionConductance.hpp; Jackson,
+//                            Bhavnani & Ferguson, J. Heat Transfer 130 (2008) 081301). Needs a
+//                            multi-scale model.
+//   mikic                    Mikic's elastic correlation (Mikic.hpp). Needs sigma, m and E'.
+//   cooperMikicYovanovich    the Cooper-Mikic-Yovanovich plastic correlation
+//                            (CooperMikicYovanovich.hpp). Needs sigma, m and the microhardness
+//                            H_c, given or from Vickers coefficients (Microhardness.hpp).
+//   persson                  Persson's theory's conductance (models/Persson.hpp: Barber's
+//                            relation with Persson's mean separation). Needs the spectrum and E'.
+#pragma once
+
+#include "roughContact/surface/Roughness.hpp"
+#include "roughContact/thermal/Microhardness.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace roughContact {
+
+class MultiscaleModel;
+class Spectrum;
+
+class ConductanceLaw {
+public:
+    virtual ~ConductanceLaw() = default;
+    /// The name users select it by (conductanceLawNames()).
+    virtual std::string name() const = 0;
+    /// h_c/k_s [1/m] at the nominal pressure P [Pa] (finite, >= 0; 0 gives 0). +infinity where
+    /// the law says the surfaces are in complete contact (nothing constricts the flow).
+    virtual double perConductivity(double P) const = 0;
+};
+
+/// What the laws are built from; each law takes what it needs and refuses (ParameterError
+/// naming the entry) to be built without it.
+struct ConductanceLawInputs {
+    const MultiscaleModel* multiscale = nullptr; ///< jacksonBhavnaniFerguson
+    const Spectrum* spectrum = nullptr;           ///< persson: the line-scan spectrum
+    std::optional<SurfaceRoughness> roughness;    ///< mikic, cooperMikicYovanovich: combined
+    double Eprime = 0.0;                          ///< E' [Pa]: mikic, persson
+    std::optional<double> microhardness;          ///< H_c [Pa]: cooperMikicYovanovich
+    std::optional<VickersCoefficients> vickers;   ///< or H_c from these
+};
+
+/// Every law's name, in the order the documentation lists them.
+const std::vector<std::string>& conductanceLawNames();
+/// The law the boundary condition and the CLI use unless told otherwise (README.md says why).
+const std::string& defaultConductanceLaw();
+/// True for a name in conductanceLawNames().
+bool isConductanceLaw(const std::string& name);
+/// The law `name` built from `inputs`. ParameterError for an unknown name (listing the known
+/// ones) or a missing input.
+std::unique_ptr<ConductanceLaw> makeConductanceLaw(const std::string& name, const ConductanceLawInputs& inputs);
+
+} // namespace roughContact
