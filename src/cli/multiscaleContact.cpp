@@ -14,8 +14,10 @@
 #include "roughContact/surface/ArealSynthesis.hpp"
 #include "roughContact/surface/FractalFit.hpp"
 #include "roughContact/surface/Profile.hpp"
+#include "roughContact/surface/Roughness.hpp"
 #include "roughContact/surface/SpectralMoments.hpp"
 #include "roughContact/surface/Spectrum.hpp"
+#include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 
 #include <CLI/CLI.hpp>
@@ -64,6 +66,8 @@ struct Options {
     std::string fitRange;
     bool levels = false;
     bool conductance = false;
+    std::string conductanceLaw; // --conductance-law NAME (implies --conductance)
+    std::string vickers;        // "C1,C2"
     bool info = false;
 };
 
@@ -204,6 +208,37 @@ Spectrum surfaceOf(const Options& o)
     }
     const auto& p = o.fractal;
     return Spectrum::fractal(p[0], p[1], p[2], p[3], o.length.value_or(0.0));
+}
+
+// sigma and the mean absolute slope of the surfaces, for the correlations (the same surfaces
+// surfaceOf reads; two combined): a profile's and a map's from their heights, a spectrum's from
+// its moments (Roughness.hpp).
+SurfaceRoughness roughnessOf(const Options& o)
+{
+    std::optional<SurfaceRoughness> total;
+    const auto add = [&](const SurfaceRoughness& r) { total = total ? combined(*total, r) : r; };
+    if (!o.areals.empty()) {
+        const ScanDirection direction = parseScanDirection(o.direction.value_or("x"), "--direction");
+        for (const std::string& path : o.areals) {
+            add(arealRoughness(readAreal(path, arealReadOptions(o)), direction));
+        }
+    } else if (!o.profiles.empty()) {
+        ProfileReadOptions ro;
+        if (o.units) {
+            ro.units = parseLengthUnit(*o.units);
+        }
+        ro.spacing = o.dx;
+        for (const std::string& path : o.profiles) {
+            add(profileRoughness(readProfile(path, ro).subsampled(o.stride)));
+        }
+    } else if (!o.spectra.empty()) {
+        for (const std::string& path : o.spectra) {
+            add(spectrumRoughness(readSpectrum(path, o.length)));
+        }
+    } else {
+        add(spectrumRoughness(surfaceOf(o)));
+    }
+    return *total;
 }
 
 ContactMaterials materialsOf(const Options& o)
@@ -375,14 +410,21 @@ int run(const Options& o)
     if (o.model == "boundaryElement") {
         return runBoundaryElement(o);
     }
+    const bool cmy = o.conductanceLaw == "cooperMikicYovanovich";
     for (const auto& [given, what] : {std::pair<bool, const char*>{!o.synthesize.empty(), "--synthesize"},
                                       {o.periodic, "--periodic"},
-                                      {o.hardness.has_value(), "--hardness"},
-                                      {o.hardnessFromYield, "--hardness-from-yield"},
+                                      {o.hardness.has_value() && !cmy, "--hardness"},
+                                      {o.hardnessFromYield && !cmy, "--hardness-from-yield"},
                                       {!o.pressureMap.empty(), "--pressure-map"}}) {
         if (given) {
-            throw ParameterError(what, "is for --model boundaryElement");
+            throw ParameterError(what, std::string("is for --model boundaryElement") +
+                                           (std::string(what).rfind("--hardness", 0) == 0
+                                                ? " and --conductance-law cooperMikicYovanovich"
+                                                : ""));
         }
+    }
+    if (!o.vickers.empty() && !cmy) {
+        throw ParameterError("--vickers", "is for --conductance-law cooperMikicYovanovich");
     }
     const Spectrum spectrum = surfaceOf(o);
     if (o.info) {
@@ -428,19 +470,52 @@ int run(const Options& o)
         return 0;
     }
     const auto* ms = dynamic_cast<const MultiscaleModel*>(model.get());
-    if (o.conductance && ms == nullptr) {
-        throw ParameterError("--conductance",
-                             "the constriction conductance exists for the multi-scale models only");
+    const bool conductance = o.conductance || !o.conductanceLaw.empty();
+    std::unique_ptr<ConductanceLaw> law;
+    if (conductance) {
+        const std::string name = o.conductanceLaw.empty() ? defaultConductanceLaw() : o.conductanceLaw;
+        ConductanceLawInputs in;
+        in.multiscale = ms;
+        in.spectrum = &spectrum;
+        in.Eprime = materials.reducedModulus();
+        if (name == "mikic" || name == "cooperMikicYovanovich") {
+            in.roughness = roughnessOf(o);
+        }
+        if (o.hardness && o.hardnessFromYield) {
+            throw ParameterError("--hardness", "give a hardness or --hardness-from-yield, not both");
+        }
+        if (o.hardness) {
+            in.microhardness = requirePositive("--hardness", *o.hardness);
+        } else if (o.hardnessFromYield) {
+            in.microhardness = 2.84 * materials.yieldStrength("--hardness-from-yield"); // H = 2.84 S_y
+        }
+        if (!o.vickers.empty()) {
+            const std::vector<double> c = splitNumbers(o.vickers, ',', "--vickers");
+            if (c.size() != 2) {
+                throw ParameterError("--vickers", "expects C1,C2: c1 [Pa] and c2 of H_v = c1 (d_v/1 um)^c2");
+            }
+            in.vickers = VickersCoefficients{c[0], c[1]};
+        }
+        if (name == "cooperMikicYovanovich" && !in.microhardness && !in.vickers) {
+            throw ParameterError("--conductance-law cooperMikicYovanovich",
+                                 "needs the microhardness: --hardness H_C [Pa], --hardness-from-yield "
+                                 "(2.84 S_y) or --vickers C1,C2");
+        }
+        if (name == "jacksonBhavnaniFerguson" && ms == nullptr) {
+            throw ParameterError("--conductance", "the law jacksonBhavnaniFerguson (the default) needs a "
+                                                  "multi-scale model; choose another --conductance-law");
+        }
+        law = makeConductanceLaw(name, in);
     }
-    out << "load,area,pressure" << (o.conductance ? ",separation,h_per_k" : "") << '\n';
+    out << "load,area,pressure" << (conductance ? ",separation,h_per_k" : "") << '\n';
     for (double load : loads) {
         const double a = model->areaFraction(load);
         out << load << ',' << a << ',';
         if (a > 0.0) {
             out << load / a; // F/(A_r E'), seed Eq. 34
         }
-        if (o.conductance) { // no mean separation in the multi-scale model: empty
-            out << ",," << constrictionConductancePerConductivity(*ms, load); // inf at complete contact
+        if (conductance) { // no mean separation in these models: empty
+            out << ",," << law->perConductivity(load * materials.reducedModulus()); // inf at complete contact
         }
         out << '\n';
     }
@@ -555,7 +630,19 @@ int main(int argc, char** argv)
     app.add_flag(
         "--conductance", o.conductance,
         "add the column h_per_k: contact conductance over k_s = 2 k1 k2/(k1 + k2), in 1/m, from the "
-        "multi-scale constriction resistances in series (inf at complete contact); multi-scale models");
+        "--conductance-law (default: the multi-scale constriction resistances in series, inf at complete "
+        "contact)");
+    std::string lawNames;
+    for (const std::string& n : conductanceLawNames()) {
+        lawNames += (lawNames.empty() ? "" : ", ") + n;
+    }
+    app.add_option("--conductance-law", o.conductanceLaw,
+                   "the law of the h_per_k column (implies --conductance): " + lawNames + " (default " +
+                       defaultConductanceLaw() + "). cooperMikicYovanovich needs the microhardness: "
+                       "--hardness H_C, --hardness-from-yield (2.84 S_y) or --vickers C1,C2");
+    app.add_option("--vickers", o.vickers,
+                   "cooperMikicYovanovich: Vickers coefficients C1 [Pa], C2 of H_v = c1 (d_v/1 um)^c2, the "
+                   "microhardness from Song & Yovanovich's correlation");
     app.add_flag("--info", o.info, "print the surface's parameters (McCool, fractal fit) to stderr");
 
     try {

@@ -13,6 +13,8 @@
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
 #include "roughContact/surface/Spectrum.hpp"
+#include "roughContact/surface/Roughness.hpp"
+#include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 
 #include <gtest/gtest.h>
@@ -98,11 +100,15 @@ TEST(Cli, HelpDocumentsEveryOptionAndModel)
     EXPECT_EQ(r.status, 0);
     for (const char* opt : {"--profile", "--units", "--spectrum", "--length", "--power-law", "--fractal",
                             "--model", "--E", "--nu", "--Eprime", "--Sy", "--loads", "--load-range",
-                            "--levels", "--stride", "--areal", "--dy", "--direction", "--fill-invalid"}) {
+                            "--levels", "--stride", "--areal", "--dy", "--direction", "--fill-invalid",
+                            "--conductance-law", "--vickers", "--hardness-from-yield"}) {
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
     }
     for (const std::string& m : modelNames()) {
         EXPECT_NE(r.out.find(m), std::string::npos) << m;
+    }
+    for (const std::string& law : conductanceLawNames()) {
+        EXPECT_NE(r.out.find(law), std::string::npos) << law;
     }
 }
 
@@ -183,6 +189,51 @@ TEST(Cli, ConductanceColumnIsTheLibrarys)
     expectError("--profile '" + standin + "' --model greenwoodWilliamson" + steel +
                     " --loads 1e-4 --conductance",
                 {"--conductance"});
+}
+
+TEST(Cli, ConductanceLawColumnIsTheLibrarys)
+{
+    // --conductance-law NAME: the h_per_k column is the library's law, built from the same
+    // surface (its sigma and m from the profile's heights), for every law, to 10 digits.
+    const Profile profile = readProfile(standin);
+    const Spectrum s = Spectrum::fromProfile(profile);
+    const ContactMaterials mat = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
+    const MultiscaleModel m(s, mat.reducedModulus(), makeAsperityModel("jacksonGreen", mat));
+    ConductanceLawInputs in;
+    in.multiscale = &m;
+    in.spectrum = &s;
+    in.roughness = profileRoughness(profile);
+    in.Eprime = mat.reducedModulus();
+    in.microhardness = 2.84 * 0.2e9;
+    for (const std::string& name : conductanceLawNames()) {
+        const std::string extra = name == "cooperMikicYovanovich" ? " --hardness-from-yield" : "";
+        const CommandResult r = run("--profile '" + standin + "' --model jacksonGreen" + steel +
+                                    " --loads 1e-6,1e-4,1e-3 --conductance-law " + name + extra);
+        ASSERT_EQ(r.status, 0) << name << ": " << r.err;
+        const Csv csv = parseCsv(r.out);
+        const int hi = column(csv, "h_per_k");
+        const auto law = makeConductanceLaw(name, in);
+        ASSERT_EQ(csv.rows.size(), 3U);
+        for (const auto& row : csv.rows) {
+            const double load = std::stod(row.at(0));
+            const double expected = law->perConductivity(load * mat.reducedModulus());
+            EXPECT_NEAR(std::stod(row.at(hi)), expected, 1e-9 * expected) << name << " at " << load;
+        }
+    }
+    // The correlations work with any area model; the default law needs a multi-scale one.
+    const CommandResult gw = run("--profile '" + standin + "' --model greenwoodWilliamson" + steel +
+                                 " --loads 1e-4 --conductance-law mikic");
+    EXPECT_EQ(gw.status, 0) << gw.err;
+    expectError("--profile '" + standin + "' --model jacksonGreen" + steel +
+                    " --loads 1e-4 --conductance-law cooperMikicYovanovich",
+                {"--hardness", "--vickers"});
+    expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --loads 1e-4 --conductance-law holm",
+                {"holm", "mikic"});
+    expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --loads 1e-4 --hardness 1e9",
+                {"--hardness", "cooperMikicYovanovich"});
+    expectError("--profile '" + standin + "' --model jacksonGreen" + steel +
+                    " --loads 1e-4 --conductance-law cooperMikicYovanovich --vickers 5e9",
+                {"--vickers", "C1,C2"});
 }
 
 TEST(Cli, SurfaceDescriptions)
