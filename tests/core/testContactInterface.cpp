@@ -8,7 +8,10 @@
 #include "roughContact/io/X3pReader.hpp"
 #include "roughContact/models/ModelFactory.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
+#include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
+#include "roughContact/thermal/CooperMikicYovanovich.hpp"
+#include "roughContact/thermal/Mikic.hpp"
 
 #include <gtest/gtest.h>
 
@@ -58,6 +61,44 @@ TEST(ContactInterface, EqualsTheHandBuiltModel)
     // steel's S_y.
     EXPECT_LT(ci.table().completeContactPressure(), 1e9);
     EXPECT_NE(ci.summary().find("jacksonGreen"), std::string::npos);
+}
+
+TEST(ContactInterface, ConductanceLawByName)
+{
+    // `conductance NAME` of the boundary condition: the table's h column is the named law at
+    // the table's pressures (interpolated between them to 0.5 %, as for the default law), the
+    // area still the multi-scale model's; the summary names both.
+    const ContactMaterials mat = ContactMaterials::pair(steel, copper);
+    const SurfaceRoughness r = profileRoughness(readProfile(standin));
+    const ContactInterface byDefault(steelOnCopper());
+    EXPECT_EQ(byDefault.conductanceLaw(), defaultConductanceLaw());
+    for (const std::string law : {"mikic", "cooperMikicYovanovich"}) {
+        SCOPED_TRACE(law);
+        InterfaceSpec spec = steelOnCopper();
+        spec.conductanceLaw = law;
+        spec.microhardness = 1.5e9;
+        const ContactInterface ci(spec);
+        EXPECT_EQ(ci.conductanceLaw(), law);
+        EXPECT_NE(ci.summary().find("conductance from the law " + law), std::string::npos) << ci.summary();
+        EXPECT_NE(ci.summary().find("area from the model jacksonGreen"), std::string::npos);
+        for (double P : {1e5, 1e6, 1e7}) {
+            const double h = law == std::string("mikic")
+                                 ? mikicConductancePerConductivity(P, r, mat.reducedModulus())
+                                 : cooperMikicYovanovichConductancePerConductivity(P, r, 1.5e9);
+            EXPECT_NEAR(ci.conductancePerConductivity(P), h, 0.005 * h) << P;
+            EXPECT_EQ(ci.areaFraction(P), byDefault.areaFraction(P)) << P;
+        }
+    }
+    InterfaceSpec bad = steelOnCopper();
+    bad.conductanceLaw = "holm";
+    try {
+        ContactInterface ci(bad);
+        ADD_FAILURE() << "an unknown law was accepted";
+    } catch (const ParameterError& e) {
+        EXPECT_NE(std::string(e.what()).find("mikic"), std::string::npos) << e.what();
+    }
+    bad.conductanceLaw = "cooperMikicYovanovich"; // no microhardness
+    EXPECT_THROW(ContactInterface ci(bad), ParameterError);
 }
 
 TEST(ContactInterface, TwoSurfacesCombine)

@@ -233,6 +233,30 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
         spec.side1 = readMaterial(dict.subDict("side1"));
         spec.side2 = readMaterial(dict.subDict("side2"));
         spec.model = dict.get<word>("model");
+        // The conductance law (roughContact::conductanceLawNames()); the
+        // core's default when absent.
+        word law;
+        if (dict.readIfPresent("conductance", law))
+        {
+            spec.conductanceLaw = law;
+        }
+        scalar Hc;
+        if (dict.readIfPresent("microhardness", Hc))
+        {
+            spec.microhardness = Hc;
+        }
+        if (dict.found("vickers"))
+        {
+            const List<scalar> c(dict.lookup("vickers"));
+            if (c.size() != 2)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "entry vickers: expected (c1 c2), c1 [Pa] and c2 of"
+                    << " H_v = c1 (d_v/1 um)^c2; got " << c.size()
+                    << " values" << exit(FatalIOError);
+            }
+            spec.vickers = roughContact::VickersCoefficients{c[0], c[1]};
+        }
         scalar p;
         if (dict.readIfPresent("minPressure", p))
         {

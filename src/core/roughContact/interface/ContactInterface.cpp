@@ -3,6 +3,7 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/io/SpectrumReader.hpp"
 #include "roughContact/models/ModelFactory.hpp"
+#include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 
 #include <limits>
@@ -54,6 +55,18 @@ Spectrum SurfaceSpec::spectrum() const
     throw ParameterError("surface", "unknown kind");
 }
 
+SurfaceRoughness SurfaceSpec::roughness() const
+{
+    switch (kind) {
+    case Kind::profile:
+        return profileRoughness(readProfile(file, profileOptions).subsampled(std::max<std::size_t>(stride, 1)));
+    case Kind::areal:
+        return arealRoughness(readAreal(file, arealOptions), direction);
+    default:
+        return spectrumRoughness(spectrum());
+    }
+}
+
 namespace {
 
 Spectrum equivalentSurface(const std::vector<SurfaceSpec>& surfaces)
@@ -84,8 +97,26 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec)
     }
     const double Ep = materials_.reducedModulus();
     model_ = std::make_unique<MultiscaleModel>(surface_, Ep, makeAsperityModel(spec.model, materials_));
+    conductanceLaw_ = spec.conductanceLaw.empty() ? defaultConductanceLaw() : spec.conductanceLaw;
+    if (!isConductanceLaw(conductanceLaw_)) {
+        makeConductanceLaw(conductanceLaw_, {}); // the error that lists the laws
+    }
+    ConductanceLawInputs in;
+    in.multiscale = model_.get();
+    in.spectrum = &surface_;
+    in.Eprime = Ep;
+    in.microhardness = spec.microhardness;
+    in.vickers = spec.vickers;
+    if (conductanceLaw_ == "mikic" || conductanceLaw_ == "cooperMikicYovanovich") {
+        std::optional<SurfaceRoughness> r;
+        for (const SurfaceSpec& s : spec.surfaces) {
+            r = r ? combined(*r, s.roughness()) : s.roughness();
+        }
+        in.roughness = r;
+    }
+    const std::unique_ptr<ConductanceLaw> law = makeConductanceLaw(conductanceLaw_, in);
     table_ = std::make_unique<ContactTable>(*model_, spec.minPressure.value_or(1e-9 * Ep),
-                                            spec.maxPressure.value_or(Ep), spec.pointsPerDecade);
+                                            spec.maxPressure.value_or(Ep), spec.pointsPerDecade, law.get());
 }
 
 FaceContact ContactInterface::face(double P, double k1, double k2) const
@@ -127,7 +158,8 @@ std::string ContactInterface::summary() const
     std::ostringstream os;
     const auto& p = table_->pressures();
     os << "surface " << surface_.source() << ": " << surface_.size() << " levels, L = " << surface_.length()
-       << " m; E' = " << reducedModulus() << " Pa; model " << model_->name() << "; table " << p.size()
+       << " m; E' = " << reducedModulus() << " Pa; area from the model " << model_->name()
+       << ", conductance from the law " << conductanceLaw_ << "; table " << p.size()
        << " points from " << p.front() << " to " << p.back() << " Pa (h_c/k_s "
        << table_->conductancesPerConductivity().front() << " to "
        << table_->conductancesPerConductivity().back() << " 1/m); complete contact at "

@@ -10,8 +10,10 @@
 #include "roughContact/material/Materials.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
+#include "roughContact/surface/Roughness.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/thermal/ContactTable.hpp"
+#include "roughContact/thermal/Microhardness.hpp"
 
 #include <cstddef>
 #include <memory>
@@ -38,6 +40,9 @@ struct SurfaceSpec {
 
     /// The surface's spectrum (reads the file; InputError/ParameterError on bad input).
     Spectrum spectrum() const;
+    /// Its rms height and mean absolute slope (Roughness.hpp): a profile's and an areal map's
+    /// (along `direction`) from their heights, a spectrum's from its moments.
+    SurfaceRoughness roughness() const;
 };
 
 /// The interface between two solids.
@@ -50,6 +55,11 @@ struct InterfaceSpec {
     Material side2;
     /// A multi-scale asperity model: hertz, jgh, jghConsistent, jacksonGreen or truncation.
     std::string model = "jacksonGreen";
+    /// The conductance law (ConductanceLaw.hpp); empty: defaultConductanceLaw().
+    std::string conductanceLaw;
+    /// cooperMikicYovanovich: the microhardness H_c [Pa], or the Vickers coefficients.
+    std::optional<double> microhardness;
+    std::optional<VickersCoefficients> vickers;
     /// Table range [Pa]; unset: 1e-9 E' to E' (complete contact ends it earlier).
     std::optional<double> minPressure;
     std::optional<double> maxPressure;
@@ -116,6 +126,8 @@ public:
     double completeContactPressure() const noexcept { return table_->completeContactPressure(); }
 
     const ContactTable& table() const noexcept { return *table_; }
+    /// The conductance law of the table's h column.
+    const std::string& conductanceLaw() const noexcept { return conductanceLaw_; }
     const MultiscaleModel& model() const noexcept { return *model_; }
     const Spectrum& surface() const noexcept { return surface_; }
     double reducedModulus() const noexcept { return materials_.reducedModulus(); }
@@ -127,6 +139,7 @@ private:
     ContactMaterials materials_;
     std::unique_ptr<MultiscaleModel> model_;
     std::unique_ptr<ContactTable> table_;
+    std::string conductanceLaw_;
 };
 
 } // namespace roughContact

@@ -2,6 +2,7 @@
 
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
+#include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 
 #include <algorithm>
@@ -52,7 +53,7 @@ double completeContactLoad(const MultiscaleModel& model)
 } // namespace
 
 ContactTable::ContactTable(const MultiscaleModel& model, double minPressure, double maxPressure,
-                           std::size_t pointsPerDecade)
+                           std::size_t pointsPerDecade, const ConductanceLaw* law)
     : Eprime_(model.reducedModulus())
 {
     limits::requireInRange("minimum pressure", minPressure, limits::minimumLoad * Eprime_,
@@ -79,7 +80,8 @@ ContactTable::ContactTable(const MultiscaleModel& model, double minPressure, dou
     const auto solve = [&](double P) {
         const std::vector<LevelState> trace = model.trace(P / Eprime_);
         const double area = trace.empty() ? 0.0 : trace.back().area / model.nominalArea();
-        const double h = constrictionConductancePerConductivity(trace, model.nominalArea());
+        const double h = law != nullptr ? law->perConductivity(P)
+                                        : constrictionConductancePerConductivity(trace, model.nominalArea());
         if (!(area > 0.0 && h > 0.0 && std::isfinite(h))) {
             std::ostringstream os;
             os << "the model gives A_r/A_n = " << area << " and h_c/k_s = " << h << " at " << P

@@ -10,6 +10,8 @@
 
 namespace roughContact {
 
+class ConductanceLaw;
+
 /// Pressures P = F/A_n [Pa] log spaced from minPressure to the end of the table (maxPressure,
 /// or the last point below complete contact, whichever is lower), pointsPerDecade per decade.
 /// At each point the direct solve gives A_r/A_n (MultiscaleModel::areaFraction at P/E') and
@@ -25,8 +27,10 @@ namespace roughContact {
 ///                                  constriction left).
 class ContactTable {
 public:
+    /// law: the conductance law of the h column (ConductanceLaw.hpp); none: the multi-scale
+    /// constriction sum (jacksonBhavnaniFerguson) of `model`. Used only while building.
     ContactTable(const MultiscaleModel& model, double minPressure, double maxPressure,
-                 std::size_t pointsPerDecade = 40);
+                 std::size_t pointsPerDecade = 40, const ConductanceLaw* law = nullptr);
 
     /// A_r/A_n at the nominal pressure P [Pa].
     double areaFraction(double P) const;
