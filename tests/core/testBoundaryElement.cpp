@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -536,6 +537,36 @@ TEST(BoundaryElementModel, CurveTakesLargeLoadSteps)
         EXPECT_NEAR(curve[k].conductancePerConductivity / cold.conductancePerConductivity, 1.0, 1e-6)
             << loads[k];
         EXPECT_LE(curve[k].iterations, plainCurve[k].iterations) << loads[k];
+    }
+}
+
+TEST(PolonskyKeer, AWarmStartOnOnePointFindsTheWholeContact)
+{
+    // All the load on the highest point as the first iterate: the gap then vanishes on the
+    // contact set (one point), the conjugate direction is empty and the step length 0. The
+    // overlap correction must still put pressure where the surface penetrates; it once did not,
+    // and the solve "converged" on one point at any load. Both solvers, periodic.
+    const std::size_t n = 64;
+    const double L = 1e-4;
+    std::vector<double> h = randomSurface(n, 5);
+    for (double& v : h) {
+        v *= 1e-7;
+    }
+    const HalfSpaceOperator K(n, n, L / n, L / n, Ep, true);
+    const std::size_t top = static_cast<std::size_t>(std::max_element(h.begin(), h.end()) - h.begin());
+    for (bool precondition : {true, false}) {
+        PolonskyKeerOptions o;
+        o.precondition = precondition;
+        const PolonskyKeer solver(K, h, o);
+        const double P = 1e-3 * Ep;
+        std::vector<double> onePoint(n * n, 0.0);
+        onePoint[top] = P * double(n * n);
+        const ContactSolution cold = solver.solve(P);
+        const ContactSolution warm = solver.solve(P, &onePoint);
+        ASSERT_TRUE(cold.converged && warm.converged) << precondition;
+        EXPECT_GT(cold.areaFraction, 10.0 / double(n * n)) << precondition; // many points, not one
+        EXPECT_NEAR(warm.areaFraction, cold.areaFraction, 2.0 / double(n * n)) << precondition;
+        EXPECT_NEAR(warm.meanSeparation / cold.meanSeparation, 1.0, 1e-6) << precondition;
     }
 }
 
