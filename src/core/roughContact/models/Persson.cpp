@@ -207,6 +207,11 @@ PerssonModel::PerssonModel(const Spectrum& lineScan, double Eprime, PerssonOptio
         os << "the Gauss-Legendre points per frequency bin must be within [2, 32], got " << options_.pointsPerBin;
         throw ParameterError("pointsPerBin", os.str());
     }
+    if (!(options_.workBudget >= 1e5 && options_.workBudget <= 1e12)) {
+        std::ostringstream os;
+        os << "the construction's work budget must be within [1e5, 1e12], got " << options_.workBudget;
+        throw ParameterError("workBudget", os.str());
+    }
     limits::requireRoughness(lineScan);
     const IsotropicSpectrum iso(lineScan);
     const double fLow = iso.lowestFrequency();
@@ -223,6 +228,28 @@ PerssonModel::PerssonModel(const Spectrum& lineScan, double Eprime, PerssonOptio
         }
     }
     edges.push_back(fHigh);
+    // IsotropicSpectrum::c2 sums over every bin above its argument, so the construction costs
+    // (nodes) x (bins). Beyond options_.workBudget, consecutive bins are grouped into log-spaced panels
+    // (edges still at levels): at most max(16, workBudget / (bins x points)) of them.
+    const std::size_t bins = edges.size() - 1;
+    const double maxPanels =
+        std::max(16.0, options_.workBudget / (double(bins) * double(options_.pointsPerBin)));
+    if (double(bins) > maxPanels) {
+        const auto panels = static_cast<std::size_t>(maxPanels);
+        std::vector<double> grouped{fLow};
+        std::size_t next = 1;
+        for (std::size_t p = 1; p < panels; ++p) {
+            const double target = fLow * std::pow(fHigh / fLow, double(p) / double(panels));
+            while (next + 1 < edges.size() && edges[next] < target) {
+                ++next;
+            }
+            if (next + 1 < edges.size() && edges[next] > grouped.back()) {
+                grouped.push_back(edges[next]);
+            }
+        }
+        grouped.push_back(fHigh);
+        edges = std::move(grouped);
+    }
 
     const Rule rule = gaussLegendre(options_.pointsPerBin);
     const auto S = runningIntegral(rule);

@@ -86,7 +86,10 @@
 // which makes all three smooth in t, and integrated by Gauss-Legendre (pointsPerBin points,
 // default 12; the lowest bin also in geometrically graded pieces, for the logarithm of J near
 // q0 at light load). On a power law of 1000 levels, relative to 32 points: 12 points are exact
-// to ~1e-9 in u and h_c, 8 to ~1e-7, 6 to 1e-4 (in h_c). int q^3 C dq up to each node, for w, is exact on the interpolating polynomial
+// to ~1e-9 in u and h_c, 8 to ~1e-7, 6 to 1e-4 (in h_c). IsotropicSpectrum::c2 costs one
+// term per bin, so beyond about 4000 bins (12 points) the bins are grouped into log-spaced
+// panels whose edges are levels, keeping the construction near 5e7 terms (16 panels at least);
+// the kinks inside a panel are then not resolved: testPersson measures the effect. int q^3 C dq up to each node, for w, is exact on the interpolating polynomial
 // of the same points. J(s) is evaluated by separationKernel below.
 #pragma once
 
@@ -105,6 +108,9 @@ struct PerssonOptions {
     double gamma = 0.42;
     /// Gauss-Legendre points per frequency bin, within [2, 32].
     std::size_t pointsPerBin = 12;
+    /// C2 terms the construction may take (points x bins x bins); more bins than fit are grouped
+    /// into log-spaced panels (6 above). Within [1e5, 1e12]; 5e7 is about half a second.
+    double workBudget = 5e7;
 };
 
 /// One load point of Persson's theory.
