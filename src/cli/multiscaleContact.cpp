@@ -10,6 +10,7 @@
 #include "roughContact/models/BoundaryElement.hpp"
 #include "roughContact/models/ModelFactory.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
+#include "roughContact/models/Persson.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
 #include "roughContact/surface/FractalFit.hpp"
@@ -428,12 +429,24 @@ int run(const Options& o)
         return 0;
     }
     const auto* ms = dynamic_cast<const MultiscaleModel*>(model.get());
-    if (o.conductance && ms == nullptr) {
+    const auto* persson = dynamic_cast<const PerssonModel*>(model.get());
+    if (o.conductance && ms == nullptr && persson == nullptr) {
         throw ParameterError("--conductance",
-                             "the constriction conductance exists for the multi-scale models only");
+                             "the conductance exists for the multi-scale models and persson only");
     }
     out << "load,area,pressure" << (o.conductance ? ",separation,h_per_k" : "") << '\n';
     for (double load : loads) {
+        if (persson != nullptr && o.conductance) {
+            // Persson's theory: the mean separation [m] and Barber's h_c/k_s = -(1/E') dp/du
+            // (Persson.hpp); u = inf at load 0, h_per_k = inf beyond double range.
+            const PerssonPoint p = persson->evaluate(load);
+            out << load << ',' << p.areaFraction << ',';
+            if (p.areaFraction > 0.0) {
+                out << load / p.areaFraction;
+            }
+            out << ',' << p.meanSeparation << ',' << p.conductancePerConductivity << '\n';
+            continue;
+        }
         const double a = model->areaFraction(load);
         out << load << ',' << a << ',';
         if (a > 0.0) {
@@ -515,8 +528,10 @@ int main(int argc, char** argv)
     allModels.push_back("boundaryElement");
     app.add_option("--model", o.model,
                    "hertz | jgh | jghConsistent | jacksonGreen | truncation (multi-scale, seed §2) | "
-                   "greenwoodWilliamson | greenwoodWilliamsonJG | majumdarBhushan | boundaryElement (the exact "
-                   "reference: boundary elements on an --areal or --synthesize'd surface)")
+                   "greenwoodWilliamson | greenwoodWilliamsonJG | majumdarBhushan | persson (Persson's theory, "
+                   "Yang-Persson mean separation, gamma 0.42, on the isotropic 2-D form of the spectrum) | "
+                   "boundaryElement (the exact reference: boundary elements on an --areal or --synthesize'd "
+                   "surface)")
         ->required()
         ->check(CLI::IsMember(allModels));
     app.add_option("--synthesize", o.synthesize,
@@ -554,8 +569,10 @@ int main(int argc, char** argv)
     app.add_flag("--levels", o.levels, "print the per-level trace (seed Fig. 5) instead of the load curve");
     app.add_flag(
         "--conductance", o.conductance,
-        "add the column h_per_k: contact conductance over k_s = 2 k1 k2/(k1 + k2), in 1/m, from the "
-        "multi-scale constriction resistances in series (inf at complete contact); multi-scale models");
+        "add the columns separation and h_per_k: contact conductance over k_s = 2 k1 k2/(k1 + k2), in 1/m, "
+        "from the multi-scale constriction resistances in series (inf at complete contact; separation "
+        "empty) for the multi-scale models; for persson the mean separation [m] and Barber's "
+        "h_c/k_s = -(1/E') dp/du");
     app.add_flag("--info", o.info, "print the surface's parameters (McCool, fractal fit) to stderr");
 
     try {
