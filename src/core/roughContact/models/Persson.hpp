@@ -29,6 +29,8 @@
 // Persson 2008 and Almqvist et al. 2011): the stress distribution diffuses with magnification; with the boundary condition
 // P(sigma = 0) = 0 its solution gives at the highest wavenumber q1
 //     A/A_n = P(p) = erf(p / (2 sqrt(G))),  G = (pi/4) E'^2 int_{q0}^{q1} q^3 C(q) dq.     (P2)
+// (The same as erf(p/sqrt(2 V)) with the pressure variance of complete contact
+// V = (pi/2) E'^2 int q^3 C dq = 2 G, as some restatements write it.)
 // Write w(q) = (pi int_{q0}^{q} q'^3 C(q') dq')^(-1/2); then p/(2 sqrt(G(q))) = w(q) p/E' and
 // P(q, p) = erf(w(q) p/E') is the area seen at magnification q/q0. Light load: erf(x) ~ 2x/sqrt(pi)
 // and int q^3 C dq = h'^2/(2 pi) (h' the rms areal gradient), so G = E'^2 h'^2/8 and
