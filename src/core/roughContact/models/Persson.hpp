@@ -10,9 +10,13 @@
 // and <h^2> = integral over R^2 of C2(f) d^2f. With q = 2 pi f the area element is
 // d^2q = (2 pi)^2 d^2f, so the same variance needs
 //     C(q) = C2(q / (2 pi)) / (2 pi)^2.                                                   (P1)
-// Checks (testPersson): 2 pi int q C dq is the IsotropicSpectrum's variance (powerOutside(0)),
-// and 2 pi int q^3 C dq, the mean square of the areal gradient |grad h|^2, is twice the line
-// scans' slope variance (an isotropic surface's gradient has two equal components).
+// Checks (testPersson): 2 pi int q C dq is the IsotropicSpectrum's variance powerOutside(0), and
+// 2 pi int q^3 C dq, the mean square of the areal gradient |grad h|^2, its gradient computed from
+// powerOutside by parts, both to 1e-8. Twice the line scans' slope variance (an isotropic
+// gradient has two equal components) is met to 0.8 % only, and the line scans' own variance
+// not at all (32 % below, levels from 1/L): the IsotropicSpectrum's C2 lives on the band only,
+// where the Abel inversion of the band-limited C1 would be negative below it, and the band's C2
+// holds more power than the line scans. Persson and the synthesized surfaces see the same C2.
 //
 // 2. Moduli. E' here is this project's reduced modulus 1/((1-nu1^2)/E1 + (1-nu2^2)/E2), the
 // modulus of an elastic half-space against a rigid rough one (Johnson 1985 §13.1). Persson's
@@ -25,9 +29,9 @@
 // derivations given here and by testPersson (closed-form limits, Barber, the boundary-element
 // reference), not against the papers' numbered equations; (P1)-(P8) are this header's own.
 //
-// 3. Contact area (Persson 2001, the diffusion of the stress distribution; restated by Yang &
-// Persson 2008 and Almqvist et al. 2011): the stress distribution diffuses with magnification; with the boundary condition
-// P(sigma = 0) = 0 its solution gives at the highest wavenumber q1
+// 3. Contact area (Persson 2001; restated by Yang & Persson 2008 and Almqvist et al. 2011): the
+// stress distribution diffuses with magnification; with the boundary condition P(sigma = 0) = 0
+// its solution gives at the highest wavenumber q1
 //     A/A_n = P(p) = erf(p / (2 sqrt(G))),  G = (pi/4) E'^2 int_{q0}^{q1} q^3 C(q) dq.     (P2)
 // (The same as erf(p/sqrt(2 V)) with the pressure variance of complete contact
 // V = (pi/2) E'^2 int q^3 C dq = 2 G, as some restatements write it.)
@@ -45,14 +49,15 @@
 // which is the energy of the full contact (pi/2) E' int q^2 C dq (half-space stiffness E'|q|/2)
 // weighted by the contact at each scale. gamma is Yang & Persson's correction: the factor P^2 of
 // Persson's original energy (gamma = 0 there) underestimates the elastic energy stored at partial
-// contact; gamma ~ 0.4 (0.42 here, the value fitted there to molecular dynamics) fits the
-// simulations. The load follows from the energy: p = -dU_el/(A_n du), so
+// contact; a gamma of about 0.4 fits their molecular-dynamics simulations (0.42 here, the value
+// used after them; the paper's own number not checked, see Equation numbers). The load follows from the energy: p = -dU_el/(A_n du), so
 // u(p) = int_p^inf (dp'/p') (1/A_n) dU_el/dp', and since dW/dp = (dP/dp) [gamma + 3 (1-gamma) P^2],
 //     u(p) = sqrt(pi) int_{q0}^{q1} dq q^2 C(q) w(q) int_p^inf (dp'/p')
 //            [gamma + 3 (1 - gamma) P^2(q, p')] exp(-(w(q) p'/E')^2).                     (P5)
 // Which form. (a) The factor 3 in front of (1-gamma) P^2 is the derivative of P^3 in (P4); a 1
 // there would not be the derivative of any energy (the "1" in some restatements is W's own
-// factor). (b) The lower limit: Persson 2007 writes p(zeta) = p A_n/A(zeta), the mean pressure in
+// factor). (b) The lower limit (as recalled, not checked against the paper): Persson 2007
+// writes p(zeta) = p A_n/A(zeta), the mean pressure in
 // the contact seen at the magnification zeta at which the separation is observed, with the
 // wavenumbers integrated from zeta q0. The separation of the whole interface is zeta = 1, where
 // A(1) = A_n and the limit is p itself. Taking p/P(q, p) with q the integration variable instead
@@ -91,8 +96,9 @@
 // to ~1e-9 in u and h_c, 8 to ~1e-7, 6 to 1e-4 (in h_c). IsotropicSpectrum::c2 costs one
 // term per bin, so beyond about 4000 bins (12 points) the bins are grouped into log-spaced
 // panels whose edges are levels, keeping the construction near 5e7 terms (16 panels at least);
-// the kinks inside a panel are then not resolved: testPersson measures the effect. int q^3 C dq up to each node, for w, is exact on the interpolating polynomial
-// of the same points. J(s) is evaluated by separationKernel below.
+// the kinks inside a panel are then not resolved: testPersson measures 4e-5 on 3000 levels.
+// int q^3 C dq up to each node, for w, is exact on the interpolating polynomial of the same
+// points. J(s) is evaluated by persson::scaledSeparationKernel below.
 #pragma once
 
 #include "roughContact/models/ContactModel.hpp"
