@@ -10,6 +10,7 @@
 #include "roughContact/models/BoundaryElement.hpp"
 #include "roughContact/models/ModelFactory.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
+#include "roughContact/models/Persson.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
 #include "roughContact/surface/FractalFit.hpp"
@@ -470,10 +471,14 @@ int run(const Options& o)
         return 0;
     }
     const auto* ms = dynamic_cast<const MultiscaleModel*>(model.get());
+    const auto* persson = dynamic_cast<const PerssonModel*>(model.get());
     const bool conductance = o.conductance || !o.conductanceLaw.empty();
     std::unique_ptr<ConductanceLaw> law;
-    if (conductance) {
-        const std::string name = o.conductanceLaw.empty() ? defaultConductanceLaw() : o.conductanceLaw;
+    // persson's own conductance (Barber's relation with its mean separation) unless a law is named.
+    const std::string lawName =
+        o.conductanceLaw.empty() ? (persson != nullptr ? "persson" : defaultConductanceLaw()) : o.conductanceLaw;
+    if (conductance && !(persson != nullptr && lawName == "persson")) {
+        const std::string& name = lawName;
         ConductanceLawInputs in;
         in.multiscale = ms;
         in.spectrum = &spectrum;
@@ -503,12 +508,26 @@ int run(const Options& o)
         }
         if (name == "jacksonBhavnaniFerguson" && ms == nullptr) {
             throw ParameterError("--conductance", "the law jacksonBhavnaniFerguson (the default) needs a "
-                                                  "multi-scale model; choose another --conductance-law");
+                                                  "multi-scale model; choose another --conductance-law "
+                                                  "(mikic, persson, ...)");
         }
         law = makeConductanceLaw(name, in);
     }
     out << "load,area,pressure" << (conductance ? ",separation,h_per_k" : "") << '\n';
     for (double load : loads) {
+        if (persson != nullptr && conductance) {
+            // Persson's theory: the mean separation [m] and Barber's h_c/k_s = -(1/E') dp/du
+            // (Persson.hpp), or the named law's; u = inf at load 0, h_per_k = inf beyond double range.
+            const PerssonPoint p = persson->evaluate(load);
+            out << load << ',' << p.areaFraction << ',';
+            if (p.areaFraction > 0.0) {
+                out << load / p.areaFraction;
+            }
+            out << ',' << p.meanSeparation << ','
+                << (law ? law->perConductivity(load * materials.reducedModulus()) : p.conductancePerConductivity)
+                << '\n';
+            continue;
+        }
         const double a = model->areaFraction(load);
         out << load << ',' << a << ',';
         if (a > 0.0) {
@@ -590,8 +609,10 @@ int main(int argc, char** argv)
     allModels.push_back("boundaryElement");
     app.add_option("--model", o.model,
                    "hertz | jgh | jghConsistent | jacksonGreen | truncation (multi-scale, seed §2) | "
-                   "greenwoodWilliamson | greenwoodWilliamsonJG | majumdarBhushan | boundaryElement (the exact "
-                   "reference: boundary elements on an --areal or --synthesize'd surface)")
+                   "greenwoodWilliamson | greenwoodWilliamsonJG | majumdarBhushan | persson (Persson's theory, "
+                   "Yang-Persson mean separation, gamma 0.42, on the isotropic 2-D form of the spectrum) | "
+                   "boundaryElement (the exact reference: boundary elements on an --areal or --synthesize'd "
+                   "surface)")
         ->required()
         ->check(CLI::IsMember(allModels));
     app.add_option("--synthesize", o.synthesize,
@@ -629,9 +650,10 @@ int main(int argc, char** argv)
     app.add_flag("--levels", o.levels, "print the per-level trace (seed Fig. 5) instead of the load curve");
     app.add_flag(
         "--conductance", o.conductance,
-        "add the column h_per_k: contact conductance over k_s = 2 k1 k2/(k1 + k2), in 1/m, from the "
-        "--conductance-law (default: the multi-scale constriction resistances in series, inf at complete "
-        "contact)");
+        "add the columns separation and h_per_k: contact conductance over k_s = 2 k1 k2/(k1 + k2), in 1/m, "
+        "from the --conductance-law (default: the multi-scale constriction resistances in series, inf at "
+        "complete contact, for the multi-scale models; for persson its mean separation [m] and Barber's "
+        "h_c/k_s = -(1/E') dp/du); separation is empty for the other models");
     std::string lawNames;
     for (const std::string& n : conductanceLawNames()) {
         lawNames += (lawNames.empty() ? "" : ", ") + n;

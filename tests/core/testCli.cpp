@@ -10,6 +10,7 @@
 #include "roughContact/models/BoundaryElement.hpp"
 #include "roughContact/models/ModelFactory.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
+#include "roughContact/models/Persson.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
 #include "roughContact/surface/Spectrum.hpp"
@@ -234,6 +235,34 @@ TEST(Cli, ConductanceLawColumnIsTheLibrarys)
     expectError("--profile '" + standin + "' --model jacksonGreen" + steel +
                     " --loads 1e-4 --conductance-law cooperMikicYovanovich --vickers 5e9",
                 {"--vickers", "C1,C2"});
+}
+
+TEST(Cli, PerssonFillsEveryConductanceColumn)
+{
+    // --model persson --conductance: load,area,pressure,separation,h_per_k all filled, each the
+    // library's PerssonModel::evaluate to the 10 digits printed (relative 1e-9).
+    const CommandResult r = run("--profile '" + standin + "' --model persson" + steel +
+                                " --loads 1e-6,1e-4,1e-3,1e-2 --conductance");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Csv csv = parseCsv(r.out);
+    const Spectrum s = Spectrum::fromProfile(readProfile(standin));
+    const ContactMaterials mat = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
+    const PerssonModel m(s, mat.reducedModulus());
+    ASSERT_EQ(csv.rows.size(), 4U);
+    for (const auto& row : csv.rows) {
+        const double load = std::stod(row.at(column(csv, "load")));
+        const PerssonPoint p = m.evaluate(load);
+        EXPECT_NEAR(std::stod(row.at(column(csv, "area"))), p.areaFraction, 1e-9 * p.areaFraction);
+        EXPECT_NEAR(std::stod(row.at(column(csv, "pressure"))), load / p.areaFraction,
+                    1e-9 * load / p.areaFraction);
+        EXPECT_NEAR(std::stod(row.at(column(csv, "separation"))), p.meanSeparation, 1e-9 * p.meanSeparation);
+        EXPECT_NEAR(std::stod(row.at(column(csv, "h_per_k"))), p.conductancePerConductivity,
+                    1e-9 * p.conductancePerConductivity);
+    }
+    // Without --conductance: the usual three columns.
+    const CommandResult plain = run("--profile '" + standin + "' --model persson" + steel + " --loads 1e-4");
+    ASSERT_EQ(plain.status, 0) << plain.err;
+    EXPECT_EQ(plain.out.substr(0, plain.out.find('\n')), "load,area,pressure");
 }
 
 TEST(Cli, SurfaceDescriptions)

@@ -5,6 +5,7 @@
 #include "roughContact/material/Materials.hpp"
 #include "roughContact/models/ModelFactory.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
+#include "roughContact/models/Persson.hpp"
 #include "roughContact/surface/Roughness.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
@@ -53,6 +54,7 @@ TEST(ConductanceLaw, EveryNameBuildsAndIsTheFormulaItNames)
     in.microhardness = 1.42e9;
     ASSERT_FALSE(conductanceLawNames().empty());
     EXPECT_TRUE(isConductanceLaw(defaultConductanceLaw()));
+    const PerssonModel persson(s, steel.reducedModulus());
     for (const std::string& name : conductanceLawNames()) {
         const auto law = makeConductanceLaw(name, in);
         EXPECT_EQ(law->name(), name);
@@ -63,6 +65,8 @@ TEST(ConductanceLaw, EveryNameBuildsAndIsTheFormulaItNames)
             double expected = 0.0;
             if (name == "jacksonBhavnaniFerguson") {
                 expected = constrictionConductancePerConductivity(model, P / steel.reducedModulus());
+            } else if (name == "persson") {
+                expected = persson.conductancePerConductivity(P / steel.reducedModulus());
             } else if (name == "mikic") {
                 expected = mikicConductancePerConductivity(P, *in.roughness, in.Eprime);
             } else if (name == "cooperMikicYovanovich") {
@@ -88,6 +92,7 @@ TEST(ConductanceLaw, MissingInputsAndUnknownNamesSayWhat)
     ConductanceLawInputs none;
     EXPECT_NE(errorOf("jacksonBhavnaniFerguson", none).find("multi-scale"), std::string::npos);
     EXPECT_NE(errorOf("mikic", none).find("sigma"), std::string::npos);
+    EXPECT_NE(errorOf("persson", none).find("spectrum"), std::string::npos);
     none.roughness = SurfaceRoughness{1e-6, 0.1};
     EXPECT_NE(errorOf("mikic", none).find("E'"), std::string::npos); // E' = 0
     EXPECT_NE(errorOf("cooperMikicYovanovich", none).find("microhardness"), std::string::npos);

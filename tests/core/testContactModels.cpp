@@ -98,10 +98,10 @@ TEST(ContactModels, FactoryRefusesWhatItCannotBuild)
         }
     }
     // The purely elastic models need no S_y.
-    for (const char* name : {"hertz", "jgh", "jghConsistent", "greenwoodWilliamson"}) {
+    for (const char* name : {"hertz", "jgh", "jghConsistent", "greenwoodWilliamson", "persson"}) {
         EXPECT_NO_THROW(makeContactModel(name, s, elastic)) << name;
     }
-    EXPECT_EQ(modelNames().size(), multiscaleModelNames().size() + 3);
+    EXPECT_EQ(modelNames().size(), multiscaleModelNames().size() + 4);
     for (const std::string& n : multiscaleModelNames()) {
         EXPECT_TRUE(isMultiscaleModel(n));
     }

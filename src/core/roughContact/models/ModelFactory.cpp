@@ -10,6 +10,7 @@
 #include "roughContact/models/GreenwoodWilliamson.hpp"
 #include "roughContact/models/MajumdarBhushan.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
+#include "roughContact/models/Persson.hpp"
 
 #include <algorithm>
 
@@ -26,7 +27,7 @@ const std::vector<std::string>& modelNames()
 {
     static const std::vector<std::string> names{
         "hertz",      "jgh", "jghConsistent", "jacksonGreen", "truncation", "greenwoodWilliamson",
-        "greenwoodWilliamsonJG", "majumdarBhushan"};
+        "greenwoodWilliamsonJG", "majumdarBhushan", "persson"};
     return names;
 }
 
@@ -86,6 +87,9 @@ std::unique_ptr<ContactModel> makeContactModel(const std::string& name, const Sp
         const FractalParameters fp = options.fractal ? *options.fractal : fitFractal(spectrum);
         return std::make_unique<MajumdarBhushan>(fp, spectrum.nominalArea(), m.reducedModulus(),
                                                  m.yieldStrength(name));
+    }
+    if (name == "persson") { // Persson's theory on the spectrum's isotropic 2-D conversion
+        return std::make_unique<PerssonModel>(spectrum, m.reducedModulus());
     }
     unknown(name, modelNames());
 }

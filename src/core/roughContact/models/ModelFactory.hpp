@@ -22,7 +22,7 @@ struct ModelOptions {
 /// The multi-scale models (hertz, jgh, jghConsistent, jacksonGreen, truncation).
 const std::vector<std::string>& multiscaleModelNames();
 /// Those and the comparison models (greenwoodWilliamson, greenwoodWilliamsonJG,
-/// majumdarBhushan).
+/// majumdarBhushan, persson).
 const std::vector<std::string>& modelNames();
 bool isMultiscaleModel(const std::string& name);
 

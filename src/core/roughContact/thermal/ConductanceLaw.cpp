@@ -2,6 +2,7 @@
 
 #include "roughContact/Error.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
+#include "roughContact/models/Persson.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 #include "roughContact/thermal/CooperMikicYovanovich.hpp"
 #include "roughContact/thermal/Mikic.hpp"
@@ -74,6 +75,19 @@ private:
     std::optional<VickersCoefficients> vickers_;
 };
 
+class PerssonLaw final : public ConductanceLaw {
+public:
+    PerssonLaw(const Spectrum& spectrum, double Eprime) : model_(spectrum, Eprime) {}
+    std::string name() const override { return "persson"; }
+    double perConductivity(double P) const override
+    {
+        return model_.conductancePerConductivity(checkPressure(P) / model_.reducedModulus());
+    }
+
+private:
+    PerssonModel model_;
+};
+
 const SurfaceRoughness& needRoughness(const std::string& law, const ConductanceLawInputs& in)
 {
     if (!in.roughness) {
@@ -86,7 +100,8 @@ const SurfaceRoughness& needRoughness(const std::string& law, const ConductanceL
 
 const std::vector<std::string>& conductanceLawNames()
 {
-    static const std::vector<std::string> names = {"jacksonBhavnaniFerguson", "mikic", "cooperMikicYovanovich"};
+    static const std::vector<std::string> names = {"jacksonBhavnaniFerguson", "persson", "mikic",
+                                                   "cooperMikicYovanovich"};
     return names;
 }
 
@@ -110,6 +125,12 @@ std::unique_ptr<ConductanceLaw> makeConductanceLaw(const std::string& name, cons
                                        "jacksonGreen or truncation)");
         }
         return std::make_unique<JacksonBhavnaniFerguson>(*in.multiscale);
+    }
+    if (name == "persson") {
+        if (in.spectrum == nullptr) {
+            throw ParameterError(name, "needs the surface's line-scan spectrum");
+        }
+        return std::make_unique<PerssonLaw>(*in.spectrum, in.Eprime);
     }
     if (name == "mikic") {
         return std::make_unique<MikicLaw>(needRoughness(name, in), in.Eprime);

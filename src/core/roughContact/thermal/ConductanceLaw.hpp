@@ -8,12 +8,12 @@
 //                            spots in flux tubes (ConstrictionConductance.hpp; Jackson,
 //                            Bhavnani & Ferguson, J. Heat Transfer 130 (2008) 081301). Needs a
 //                            multi-scale model.
+//   persson                  Persson's theory's conductance (models/Persson.hpp: Barber's
+//                            relation with Persson's mean separation). Needs the spectrum and E'.
 //   mikic                    Mikic's elastic correlation (Mikic.hpp). Needs sigma, m and E'.
 //   cooperMikicYovanovich    the Cooper-Mikic-Yovanovich plastic correlation
 //                            (CooperMikicYovanovich.hpp). Needs sigma, m and the microhardness
 //                            H_c, given or from Vickers coefficients (Microhardness.hpp).
-//   persson                  Persson's theory's conductance (models/Persson.hpp: Barber's
-//                            relation with Persson's mean separation). Needs the spectrum and E'.
 #pragma once
 
 #include "roughContact/surface/Roughness.hpp"
