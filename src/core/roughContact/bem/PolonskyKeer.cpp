@@ -158,6 +158,11 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
             }
         }
         const double tau = den > 0.0 ? num / den : 0.0;
+        // The overlap correction's factor: tau, or, when the step is empty (one point in
+        // contact: the gap vanishes on the contact set, so t = 0 and tau = 0; a warm start
+        // from a neighbouring load starts so at light loads), the stiffness itself, so that a
+        // penetration is never left standing (that "converged" to one point at any load).
+        const double tauOverlap = tau > 0.0 ? tau : (options_.precondition ? 1.0 : op_.smallestStiffness());
         // The step, the clamp p >= 0 and, where the surface penetrates a point without
         // pressure, some pressure there (Polonsky & Keer's overlap correction).
         bool clamped = false;
@@ -169,9 +174,10 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
                 const double v = old - tau * t[i];
                 clamped = clamped || v < 0.0;
                 p[i] = std::max(0.0, v);
-            } else if (g[i] < 0.0 && tau > 0.0) {
-                p[i] = options_.precondition ? tau * std::max(-zOut[i], -g[i] * op_.smallestStiffness())
-                                             : -tau * g[i];
+            } else if (g[i] < 0.0) {
+                p[i] = options_.precondition
+                           ? tauOverlap * std::max(-zOut[i], -g[i] * op_.smallestStiffness())
+                           : -tauOverlap * g[i];
                 overlap = true;
             }
             sum += p[i];
