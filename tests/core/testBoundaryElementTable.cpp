@@ -4,6 +4,7 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/interface/BoundaryElementTable.hpp"
 #include "roughContact/interface/ContactInterface.hpp"
+#include "roughContact/io/ArealReader.hpp"
 #include "roughContact/material/Materials.hpp"
 #include "roughContact/models/BoundaryElement.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
@@ -256,4 +257,88 @@ TEST(BoundaryElementTable, SpecErrors)
     s.maxPressure.reset();
     s.hardness = 2e9;
     EXPECT_DOUBLE_EQ(BoundaryElementTable(s).pressures().back(), 0.95 * 2e9);
+}
+
+TEST(BoundaryElementTable, CompleteContactEndsTheTable)
+{
+    // With a hardness H the solve is in complete contact from P = H on: the table ends before
+    // the first load at or above it, and the interface gives complete contact from that load.
+    InterfaceSpec s = smallSpec();
+    s.hardness = 3e8;
+    s.maxPressure = 1e9;
+    const BoundaryElementTable t(s);
+    const BoundaryElementTablePoints p = t.build();
+    EXPECT_EQ(p.end, ContactTable::End::completeContact);
+    ASSERT_LT(p.pressures.size(), t.pressures().size());
+    EXPECT_EQ(p.completeContactPressure, t.pressures()[p.pressures.size()]);
+    EXPECT_GE(p.completeContactPressure, 3e8);
+    EXPECT_LT(p.pressures.back(), 3e8);
+    const BoundaryElementTableRead r = t.parse(t.write(p));
+    ASSERT_EQ(r.status, Status::ok) << r.reason;
+    EXPECT_EQ(r.points->completeContactPressure, p.completeContactPressure);
+    const ContactInterface ci(s, &*r.points);
+    EXPECT_TRUE(std::isinf(ci.conductancePerConductivity(p.completeContactPressure)));
+    EXPECT_EQ(ci.areaFraction(p.completeContactPressure), 1.0);
+    EXPECT_FALSE(ci.heldAtTableEnd(p.completeContactPressure * 0.999));
+    // A file whose complete contact is not at the load after its last point is cut short.
+    BoundaryElementTablePoints q = p;
+    q.pressures.pop_back();
+    q.areaFractions.pop_back();
+    q.conductancesPerConductivity.pop_back();
+    EXPECT_EQ(t.parse(t.write(q)).status, Status::corrupt);
+}
+
+TEST(BoundaryElementTable, ArealMapsAndTheirComposite)
+{
+    // Two 32 x 32 maps as text matrices: one alone (non-periodic), and their composite.
+    const Spectrum spectrum = smallSpec().surfaces[0].spectrum();
+    std::vector<std::string> files;
+    std::vector<ArealSurface> maps;
+    for (std::uint64_t seed : {5u, 6u}) {
+        maps.push_back(synthesizeIsotropic(spectrum, 32, seed));
+        files.push_back(testing::TempDir() + "/bemTableMap" + std::to_string(seed) + ".txt");
+        std::ofstream out(files.back());
+        out.precision(17);
+        for (std::size_t iy = 0; iy < 32; ++iy) {
+            for (std::size_t ix = 0; ix < 32; ++ix) {
+                out << (ix ? " " : "") << maps.back().at(ix, iy);
+            }
+            out << '\n';
+        }
+    }
+    InterfaceSpec s = smallSpec();
+    s.synthesize.reset();
+    s.surfaces.clear();
+    for (const std::string& f : files) {
+        SurfaceSpec a;
+        a.kind = SurfaceSpec::Kind::areal;
+        a.file = f;
+        a.arealOptions.dx = maps[0].dx();
+        s.surfaces.push_back(a);
+    }
+    const BoundaryElementTable two(s);
+    EXPECT_FALSE(two.periodic());
+    InterfaceSpec one = s;
+    one.surfaces.pop_back();
+    EXPECT_NE(BoundaryElementTable(one).key(), two.key());
+    // The composite's table equals the solver's curve on the composite surface, non-periodic.
+    const BoundaryElementTablePoints p = two.build();
+    const ArealSurface composite = compositeSurface(readAreal(files[0], s.surfaces[0].arealOptions).detrended(),
+                                                    readAreal(files[1], s.surfaces[1].arealOptions).detrended());
+    const BoundaryElementModel model(composite, two.reducedModulus(), BoundaryElementOptions{});
+    const std::vector<BoundaryElementPoint> curve = model.curve(two.loads());
+    ASSERT_EQ(p.pressures.size(), curve.size());
+    for (std::size_t k = 0; k < curve.size(); ++k) {
+        EXPECT_EQ(p.conductancesPerConductivity[k], curve[k].conductancePerConductivity) << k;
+    }
+    // A map with synthesize, or a map and a 1-D description, are refused.
+    InterfaceSpec bad = s;
+    bad.synthesize = 32;
+    EXPECT_THROW(BoundaryElementTable{bad}, ParameterError);
+    bad = s;
+    bad.surfaces[1] = smallSpec().surfaces[0];
+    EXPECT_THROW(BoundaryElementTable{bad}, ParameterError);
+    for (const std::string& f : files) {
+        std::remove(f.c_str());
+    }
 }
