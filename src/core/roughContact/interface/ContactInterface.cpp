@@ -6,6 +6,7 @@
 #include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -207,8 +208,12 @@ std::string ContactInterface::summary() const
     os << "; table " << p.size()
        << " points from " << p.front() << " to " << p.back() << " Pa (h_c/k_s "
        << table_->conductancesPerConductivity().front() << " to "
-       << table_->conductancesPerConductivity().back() << " 1/m); complete contact at "
-       << table_->completeContactPressure() << " Pa";
+       << table_->conductancesPerConductivity().back() << " 1/m); ";
+    if (!model_ && std::isinf(table_->completeContactPressure())) {
+        os << "no complete contact up to the table's end";
+    } else {
+        os << "complete contact at " << table_->completeContactPressure() << " Pa";
+    }
     return os.str();
 }
 
