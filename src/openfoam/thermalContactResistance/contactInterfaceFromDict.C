@@ -3,13 +3,20 @@
 #include "error.H"
 #include "IOstreams.H"
 #include "PtrList.H"
+#include "Pstream.H"
+
+#include "roughContact/interface/BoundaryElementTable.hpp"
+#include "roughContact/models/BoundaryElement.hpp"
 
 #include "roughContact/io/Units.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/surface/SurfaceChecksum.hpp"
 
+#include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <stdexcept>
@@ -187,6 +194,109 @@ roughContact::Material readMaterial(const dictionary& d)
     return m;
 }
 
+
+// The points of the boundary-element table of `spec`: the master reads them
+// from the case's cache file constant/boundaryElementTable.<name>.csv when its
+// key is this table's, or builds them (logging each load) and writes the file
+// (atomically); then every processor receives them from the master, so that
+// the table is built once and all ranks hold the same numbers. Other ranks
+// never touch the file.
+roughContact::BoundaryElementTablePoints boundaryElementPoints
+(
+    const roughContact::InterfaceSpec& spec,
+    const word& name,
+    const fileName& casePath,
+    const string& who
+)
+{
+    using Status = roughContact::BoundaryElementTableRead::Status;
+    const roughContact::BoundaryElementTable bem(spec);
+    roughContact::BoundaryElementTablePoints points;
+    if (Pstream::master())
+    {
+        const fileName file =
+            casePath/"constant"/("boundaryElementTable." + name + ".csv");
+        const roughContact::BoundaryElementTableRead r = bem.read(file);
+        if (r.status == Status::ok)
+        {
+            Info<< "    reusing " << file.c_str() << " (key " << bem.key().c_str()
+                << "): " << label(r.points->pressures.size()) << " points"
+                << endl;
+            points = *r.points;
+        }
+        else
+        {
+            if (r.status != Status::missing)
+            {
+                WarningInFunction
+                    << who.c_str() << ": contact entry '" << name << "': the"
+                    << " boundary-element table " << file.c_str() << " is "
+                    << (r.status == Status::foreign ? "foreign" : "corrupt")
+                    << ": " << r.reason.c_str() << "; it is rebuilt and"
+                    << " replaced" << endl;
+            }
+            Info<< "    building the boundary-element table for '" << name
+                << "': " << label(bem.pressures().size()) << " loads; "
+                << bem.inputs().c_str() << endl;
+            const auto start = std::chrono::steady_clock::now();
+            points = bem.build
+            (
+                [&]
+                (
+                    std::size_t done, std::size_t total, double P,
+                    const roughContact::BoundaryElementPoint& p,
+                    double seconds
+                )
+                {
+                    Info<< "    building the boundary-element table for '"
+                        << name << "': load " << label(done) << " of "
+                        << label(total) << ", P = " << P << " Pa, A_r/A_n = "
+                        << p.areaFraction << ", " << seconds << " s" << endl;
+                }
+            );
+            bem.writeFile(file, points);
+            Info<< "    built the boundary-element table for '" << name
+                << "' in "
+                << std::chrono::duration<double>
+                   (
+                       std::chrono::steady_clock::now() - start
+                   ).count()
+                << " s: " << label(points.pressures.size()) << " points;"
+                << " wrote " << file.c_str() << " (key " << bem.key().c_str() << ")"
+                << endl;
+        }
+    }
+    if (Pstream::parRun())
+    {
+        List<scalar> P(points.pressures.size());
+        List<scalar> A(points.areaFractions.size());
+        List<scalar> H(points.conductancesPerConductivity.size());
+        forAll(P, i)
+        {
+            P[i] = points.pressures[i];
+            A[i] = points.areaFractions[i];
+            H[i] = points.conductancesPerConductivity[i];
+        }
+        // +inf (no complete contact) as -1: a stream need not carry inf.
+        scalar complete =
+            std::isinf(points.completeContactPressure)
+          ? -1 : points.completeContactPressure;
+        label end = label(points.end);
+        Pstream::scatter(P);
+        Pstream::scatter(A);
+        Pstream::scatter(H);
+        Pstream::scatter(complete);
+        Pstream::scatter(end);
+        points.pressures.assign(P.begin(), P.end());
+        points.areaFractions.assign(A.begin(), A.end());
+        points.conductancesPerConductivity.assign(H.begin(), H.end());
+        points.completeContactPressure =
+            complete < 0 ? std::numeric_limits<double>::infinity() : complete;
+        points.end = roughContact::ContactTable::End(end);
+    }
+    return points;
+}
+
 } // End anonymous namespace
 
 
@@ -266,11 +376,70 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
         {
             spec.maxPressure = p;
         }
+        // model boundaryElement: the surface it solves and its table's loads.
+        label n;
+        if (dict.readIfPresent("synthesize", n))
+        {
+            if (n < 0)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "entry synthesize: expected a grid size N > 0, got "
+                    << n << exit(FatalIOError);
+            }
+            spec.synthesize = std::size_t(n);
+        }
+        if (dict.readIfPresent("seed", n))
+        {
+            if (n < 0)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "entry seed: expected a whole number >= 0, got " << n
+                    << exit(FatalIOError);
+            }
+            spec.seed = std::uint64_t(n);
+        }
+        bool flag;
+        if (dict.readIfPresent("periodic", flag))
+        {
+            spec.periodic = flag;
+        }
+        scalar H;
+        if (dict.readIfPresent("hardness", H))
+        {
+            spec.hardness = H;
+        }
+        spec.hardnessFromYield =
+            dict.getOrDefault<bool>("hardnessFromYield", false);
+        if (dict.readIfPresent("pointsPerDecade", n))
+        {
+            if (n < 1)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "entry pointsPerDecade: expected a whole number >= 1,"
+                    << " got " << n << exit(FatalIOError);
+            }
+            (spec.model == "boundaryElement"
+                ? spec.bemPointsPerDecade : spec.pointsPerDecade) =
+                std::size_t(n);
+        }
         FatalIOError.throwExceptions(throwing);
 
         Info<< "thermalContactResistance: building the contact table for '"
             << name << "' (" << who.c_str() << ")" << endl;
-        auto iface = std::make_shared<const roughContact::ContactInterface>(spec);
+        std::shared_ptr<const roughContact::ContactInterface> iface;
+        if (spec.model == "boundaryElement")
+        {
+            const roughContact::BoundaryElementTablePoints points =
+                boundaryElementPoints(spec, name, casePath, who);
+            iface = std::make_shared<const roughContact::ContactInterface>
+            (
+                spec, &points
+            );
+        }
+        else
+        {
+            iface = std::make_shared<const roughContact::ContactInterface>(spec);
+        }
         Info<< "    " << iface->summary().c_str() << nl;
         // What this run uses, so that a run can be traced to its surface (the
         // condition writes the checksum into its field file, too).

@@ -6,6 +6,7 @@
 #include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -84,16 +85,47 @@ Spectrum equivalentSurface(const std::vector<SurfaceSpec>& surfaces)
 
 } // namespace
 
-ContactInterface::ContactInterface(const InterfaceSpec& spec)
-    : surface_(equivalentSurface(spec.surfaces)), materials_(ContactMaterials::pair(spec.side1, spec.side2))
+ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElementTablePoints* boundaryElementTable)
+    : surface_(equivalentSurface(spec.surfaces)), materials_(ContactMaterials::pair(spec.side1, spec.side2)),
+      modelName_(spec.model)
 {
+    if (spec.model == "boundaryElement") {
+        if (!spec.conductanceLaw.empty()) {
+            throw ParameterError("conductance", "model boundaryElement gives the exact conductance of its "
+                                                "contact spots; a conductance law ('" +
+                                                    spec.conductanceLaw + "') has no place beside it: remove it");
+        }
+        if (spec.microhardness || spec.vickers) {
+            throw ParameterError(spec.microhardness ? "microhardness" : "vickers",
+                                 "is for the conductance law cooperMikicYovanovich; model boundaryElement "
+                                 "takes 'hardness' (its plastic cap) instead");
+        }
+        conductanceLaw_ = "boundaryElement (exact)";
+        const BoundaryElementTable bem(spec);
+        const BoundaryElementTablePoints points = boundaryElementTable ? *boundaryElementTable : bem.build();
+        table_ = std::make_unique<ContactTable>(points.table(bem.reducedModulus()));
+        std::ostringstream os;
+        os << bem.surface().nx() << " x " << bem.surface().ny() << " "
+           << (bem.periodic() ? "periodic" : "non-periodic") << " " << bem.surface().source();
+        bemSurface_ = os.str();
+        return;
+    }
+    for (const auto& [given, what] : {std::pair<bool, const char*>{spec.synthesize.has_value(), "synthesize"},
+                                      {spec.periodic.has_value(), "periodic"},
+                                      {spec.hardness.has_value(), "hardness"},
+                                      {spec.hardnessFromYield, "hardnessFromYield"},
+                                      {boundaryElementTable != nullptr, "boundary-element table"}}) {
+        if (given) {
+            throw ParameterError(what, "is for model boundaryElement, not " + spec.model);
+        }
+    }
     if (!isMultiscaleModel(spec.model)) {
         std::string names;
         for (const std::string& n : multiscaleModelNames()) {
             names += (names.empty() ? "" : ", ") + n;
         }
-        throw ParameterError("model",
-                             "unknown multi-scale model '" + spec.model + "' (one of " + names + ")");
+        throw ParameterError("model", "unknown multi-scale model '" + spec.model + "' (one of " + names +
+                                          ", or boundaryElement)");
     }
     const double Ep = materials_.reducedModulus();
     model_ = std::make_unique<MultiscaleModel>(surface_, Ep, makeAsperityModel(spec.model, materials_));
@@ -153,17 +185,35 @@ void ContactInterface::faces(std::size_t n, const double* P, const double* k1, c
     }
 }
 
+const MultiscaleModel& ContactInterface::model() const
+{
+    if (!model_) {
+        throw ParameterError("model", "boundaryElement is not a multi-scale model");
+    }
+    return *model_;
+}
+
 std::string ContactInterface::summary() const
 {
     std::ostringstream os;
     const auto& p = table_->pressures();
-    os << "surface " << surface_.source() << ": " << surface_.size() << " levels, L = " << surface_.length()
-       << " m; E' = " << reducedModulus() << " Pa; area from the model " << model_->name()
-       << ", conductance from the law " << conductanceLaw_ << "; table " << p.size()
+    if (!model_) {
+        os << "surface " << bemSurface_ << "; E' = " << reducedModulus()
+           << " Pa; area and conductance from boundaryElement (exact)";
+    } else {
+        os << "surface " << surface_.source() << ": " << surface_.size() << " levels, L = " << surface_.length()
+           << " m; E' = " << reducedModulus() << " Pa; area from the model " << model_->name()
+           << ", conductance from the law " << conductanceLaw_;
+    }
+    os << "; table " << p.size()
        << " points from " << p.front() << " to " << p.back() << " Pa (h_c/k_s "
        << table_->conductancesPerConductivity().front() << " to "
-       << table_->conductancesPerConductivity().back() << " 1/m); complete contact at "
-       << table_->completeContactPressure() << " Pa";
+       << table_->conductancesPerConductivity().back() << " 1/m); ";
+    if (!model_ && std::isinf(table_->completeContactPressure())) {
+        os << "no complete contact up to the table's end";
+    } else {
+        os << "complete contact at " << table_->completeContactPressure() << " Pa";
+    }
     return os.str();
 }
 

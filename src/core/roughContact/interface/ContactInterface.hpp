@@ -5,6 +5,7 @@
 #pragma once
 
 #include "roughContact/Error.hpp"
+#include "roughContact/interface/BoundaryElementTable.hpp"
 #include "roughContact/io/ArealReader.hpp"
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/material/Materials.hpp"
@@ -16,6 +17,7 @@
 #include "roughContact/thermal/Microhardness.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -53,7 +55,9 @@ struct InterfaceSpec {
     /// softer S_y deforms (ContactMaterials::pair).
     Material side1;
     Material side2;
-    /// A multi-scale asperity model: hertz, jgh, jghConsistent, jacksonGreen or truncation.
+    /// A multi-scale asperity model: hertz, jgh, jghConsistent, jacksonGreen or truncation; or
+    /// boundaryElement: the exact boundary-element solution of an areal surface
+    /// (BoundaryElementTable.hpp), whose table holds the exact area and conductance.
     std::string model = "jacksonGreen";
     /// The conductance law (ConductanceLaw.hpp); empty: defaultConductanceLaw().
     std::string conductanceLaw;
@@ -64,6 +68,22 @@ struct InterfaceSpec {
     std::optional<double> minPressure;
     std::optional<double> maxPressure;
     std::size_t pointsPerDecade = 40;
+
+    // boundaryElement only (ParameterError with any other model):
+    /// Synthesize an N x N periodic areal surface (synthesizeIsotropic) from the spectrum of
+    /// the 1-D surface description(s) (profile, spectrum, powerLaw, fractal); unset: the
+    /// surfaces are one or two areal maps (their composite), solved non-periodic by default.
+    std::optional<std::size_t> synthesize;
+    std::uint64_t seed = 1;   ///< synthesize: the phases' seed
+    /// Solve an areal map as one period of a periodic surface; unset: false for a map, true
+    /// for a synthesized surface (which cannot be solved non-periodic).
+    std::optional<bool> periodic;
+    /// The perfectly plastic cap p <= H [Pa] of the solve, or H = 2.84 S_y of the softer side.
+    std::optional<double> hardness;
+    bool hardnessFromYield = false;
+    /// Loads of the boundary-element table per decade of pressure (log spaced from minPressure,
+    /// default 1e-6 E', to maxPressure, default min(0.1 E', 0.95 H)).
+    std::size_t bemPointsPerDecade = 6;
 };
 
 /// Bad input at one face of a batch (ContactInterface::faces): what() reads
@@ -88,7 +108,9 @@ struct FaceContact {
 
 class ContactInterface {
 public:
-    explicit ContactInterface(const InterfaceSpec& spec);
+    /// boundaryElementTable (model boundaryElement only): the table's points, built before
+    /// (BoundaryElementTable::build) or read from a cache; none: built here.
+    explicit ContactInterface(const InterfaceSpec& spec, const BoundaryElementTablePoints* boundaryElementTable = nullptr);
 
     /// A_r/A_n at the nominal pressure P [Pa] (0 for P <= 0, 1 beyond complete contact).
     double areaFraction(double P) const { return table_->areaFraction(P); }
@@ -128,7 +150,10 @@ public:
     const ContactTable& table() const noexcept { return *table_; }
     /// The conductance law of the table's h column.
     const std::string& conductanceLaw() const noexcept { return conductanceLaw_; }
-    const MultiscaleModel& model() const noexcept { return *model_; }
+    /// The multi-scale model (ParameterError with boundaryElement, which has none).
+    const MultiscaleModel& model() const;
+    /// The model's name: a multi-scale model's or boundaryElement.
+    const std::string& modelName() const noexcept { return modelName_; }
     const Spectrum& surface() const noexcept { return surface_; }
     double reducedModulus() const noexcept { return materials_.reducedModulus(); }
     /// A few lines for a log: surface, levels, E', model, table range, complete contact.
@@ -140,6 +165,8 @@ private:
     std::unique_ptr<MultiscaleModel> model_;
     std::unique_ptr<ContactTable> table_;
     std::string conductanceLaw_;
+    std::string modelName_;
+    std::string bemSurface_; ///< boundaryElement: what was solved (for summary())
 };
 
 } // namespace roughContact

@@ -170,6 +170,11 @@ ContactTable::ContactTable(const MultiscaleModel& model, double minPressure, dou
     if (p_.size() < 2) {
         throw ParameterError("minimum pressure", "is within one table step of complete contact; lower it");
     }
+    index();
+}
+
+void ContactTable::index()
+{
     for (std::size_t k = 0; k < p_.size(); ++k) {
         logP_.push_back(std::log(p_[k]));
         logArea_.push_back(std::log(area_[k]));
@@ -182,6 +187,50 @@ ContactTable::ContactTable(const MultiscaleModel& model, double minPressure, dou
         bucketFirst_.push_back(
             static_cast<std::size_t>(std::upper_bound(logP_.begin(), logP_.end(), edge) - logP_.begin()));
     }
+}
+
+ContactTable ContactTable::fromPoints(std::vector<double> pressures, std::vector<double> areaFractions,
+                                      std::vector<double> conductancesPerConductivity,
+                                      double completeContactPressure, End end, double Eprime)
+{
+    requirePositive("reduced modulus E'", Eprime);
+    const std::size_t n = pressures.size();
+    if (areaFractions.size() != n || conductancesPerConductivity.size() != n) {
+        throw ParameterError("contact table", "the pressures, areas and conductances differ in number");
+    }
+    if (n < 2) {
+        throw ParameterError("contact table", "needs at least 2 points, got " + std::to_string(n));
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        const double P = pressures[k];
+        const double a = areaFractions[k];
+        const double h = conductancesPerConductivity[k];
+        std::ostringstream os;
+        os.precision(17);
+        if (!(P > 0.0 && std::isfinite(P)) || (k > 0 && !(P > pressures[k - 1]))) {
+            os << "point " << k + 1 << ": the pressure " << P
+               << " Pa is not finite, positive and above the one before";
+        } else if (!(a > 0.0 && a <= 1.0) || (k > 0 && !(a >= areaFractions[k - 1]))) {
+            os << "point " << k + 1 << ": A_r/A_n = " << a << " is not in (0, 1] and non-decreasing";
+        } else if (!(h > 0.0 && std::isfinite(h)) || (k > 0 && !(h >= conductancesPerConductivity[k - 1]))) {
+            os << "point " << k + 1 << ": h_c/k_s = " << h << " 1/m is not positive, finite and non-decreasing";
+        }
+        if (!os.str().empty()) {
+            throw ParameterError("contact table", os.str());
+        }
+    }
+    if (!(completeContactPressure > pressures.back())) {
+        throw ParameterError("contact table", "the complete-contact pressure must lie above the last point");
+    }
+    ContactTable t;
+    t.Eprime_ = Eprime;
+    t.pComplete_ = completeContactPressure;
+    t.end_ = end;
+    t.p_ = std::move(pressures);
+    t.area_ = std::move(areaFractions);
+    t.h_ = std::move(conductancesPerConductivity);
+    t.index();
+    return t;
 }
 
 ContactTable::Position ContactTable::locate(double P) const

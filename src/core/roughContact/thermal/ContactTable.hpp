@@ -32,6 +32,17 @@ public:
     ContactTable(const MultiscaleModel& model, double minPressure, double maxPressure,
                  std::size_t pointsPerDecade = 40, const ConductanceLaw* law = nullptr);
 
+    /// What ended the table (end() below).
+    enum class End { maxPressure, completeContact, conductanceCeiling };
+    /// A table of precomputed points (e.g. a boundary-element curve, BoundaryElementTable.hpp),
+    /// interpolated and queried exactly as the table above: pressures [Pa] strictly increasing
+    /// and > 0, at least 2; A_r/A_n in (0, 1] and h_c/k_s > 0, finite, both non-decreasing;
+    /// completeContactPressure above the last pressure (+infinity: none); Eprime [Pa] > 0.
+    /// ParameterError naming what is wrong otherwise.
+    static ContactTable fromPoints(std::vector<double> pressures, std::vector<double> areaFractions,
+                                   std::vector<double> conductancesPerConductivity,
+                                   double completeContactPressure, End end, double Eprime);
+
     /// A_r/A_n at the nominal pressure P [Pa].
     double areaFraction(double P) const;
     /// h_c/k_s [1/m] at the nominal pressure P [Pa].
@@ -57,10 +68,13 @@ public:
     /// complete contact, are held at the last point's: a caller should say so and suggest a
     /// higher maximum), complete contact (the table reaches to within 1e-6 of it), or h_c/k_s
     /// beyond 1e9 1/m (perfect contact for any mesh; nothing to gain beyond).
-    enum class End { maxPressure, completeContact, conductanceCeiling };
     End end() const noexcept { return end_; }
 
 private:
+    ContactTable() = default;
+    /// The logarithms and the bucket index of p_, area_, h_ (both constructors end with it).
+    void index();
+
     /// The interval [j - 1, j] of log P and the position t in it; `end`: at or beyond the last
     /// point, where its values hold.
     struct Position {
@@ -71,8 +85,8 @@ private:
     Position locate(double P) const;
     static double at(const std::vector<double>& logValues, const Position& where);
 
-    double Eprime_;
-    double pComplete_;
+    double Eprime_ = 0.0;
+    double pComplete_ = 0.0;
     End end_ = End::maxPressure;
     std::vector<double> p_;
     std::vector<double> logP_;

@@ -1,0 +1,458 @@
+#include "roughContact/interface/BoundaryElementTable.hpp"
+
+#include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
+#include "roughContact/interface/ContactInterface.hpp"
+#include "roughContact/io/ArealReader.hpp"
+#include "roughContact/material/Materials.hpp"
+#include "roughContact/models/BoundaryElement.hpp"
+#include "roughContact/models/ContactModel.hpp"
+#include "roughContact/surface/ArealSynthesis.hpp"
+#include "roughContact/surface/Spectrum.hpp"
+
+#include <openssl/evp.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cctype>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+namespace roughContact {
+
+namespace {
+
+// Bumped whenever the meaning of a table changes for the same inputs (the solver, the
+// conductance, the file's layout): every older file is then foreign and rebuilt.
+constexpr std::uint64_t formatVersion = 1;
+// h_c/k_s beyond this is perfect contact for any mesh (as ContactTable's ceiling).
+constexpr double conductanceCeiling = 1e9;
+
+const char* endName(ContactTable::End e)
+{
+    switch (e) {
+    case ContactTable::End::maxPressure:
+        return "maxPressure";
+    case ContactTable::End::completeContact:
+        return "completeContact";
+    case ContactTable::End::conductanceCeiling:
+        return "conductanceCeiling";
+    }
+    return "maxPressure";
+}
+
+std::string number(double v)
+{
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+// Bytes for the key: little-endian, independent of the host.
+class KeyBytes {
+public:
+    void u64(std::uint64_t v)
+    {
+        for (int i = 0; i < 8; ++i) {
+            bytes_.push_back(static_cast<unsigned char>((v >> (8 * i)) & 0xffu));
+        }
+    }
+    void f64(double v)
+    {
+        if (v == 0.0) {
+            v = 0.0; // -0.0 as +0.0
+        }
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &v, sizeof bits);
+        u64(bits);
+    }
+    std::string sha256Hex() const
+    {
+        unsigned char md[EVP_MAX_MD_SIZE];
+        unsigned int len = 0;
+        const std::unique_ptr<EVP_MD_CTX, void (*)(EVP_MD_CTX*)> ctx(EVP_MD_CTX_new(), EVP_MD_CTX_free);
+        if (!ctx || EVP_DigestInit_ex(ctx.get(), EVP_sha256(), nullptr) != 1 ||
+            EVP_DigestUpdate(ctx.get(), bytes_.data(), bytes_.size()) != 1 ||
+            EVP_DigestFinal_ex(ctx.get(), md, &len) != 1) {
+            throw ParameterError("boundary-element table", "OpenSSL could not compute a SHA-256 hash");
+        }
+        static const char* digits = "0123456789abcdef";
+        std::string out;
+        for (unsigned int i = 0; i < len; ++i) {
+            out += digits[md[i] >> 4];
+            out += digits[md[i] & 0xfu];
+        }
+        return out;
+    }
+
+private:
+    std::vector<unsigned char> bytes_;
+};
+
+bool parseNumber(const std::string& text, double& out)
+{
+    if (text.empty() || std::isspace(static_cast<unsigned char>(text.front()))) {
+        return false;
+    }
+    char* end = nullptr;
+    out = std::strtod(text.c_str(), &end);
+    return end == text.c_str() + text.size();
+}
+
+ArealSurface solvedSurface(const InterfaceSpec& spec)
+{
+    if (spec.surfaces.empty() || spec.surfaces.size() > 2) {
+        throw ParameterError("surfaces", "give one equivalent surface or one per side");
+    }
+    const bool areal = spec.surfaces.front().kind == SurfaceSpec::Kind::areal;
+    for (const SurfaceSpec& s : spec.surfaces) {
+        if ((s.kind == SurfaceSpec::Kind::areal) != areal) {
+            throw ParameterError("surfaces", "model boundaryElement takes two areal surfaces or two 1-D "
+                                             "descriptions to synthesize from, not one of each");
+        }
+    }
+    if (areal) {
+        if (spec.synthesize) {
+            throw ParameterError("synthesize", "makes an areal surface from a profile, spectrum, powerLaw or "
+                                               "fractal description; an areal surface is one already");
+        }
+        std::optional<ArealSurface> total;
+        for (const SurfaceSpec& s : spec.surfaces) {
+            const ArealSurface one = readAreal(s.file, s.arealOptions).detrended();
+            total = total ? compositeSurface(*total, one) : one;
+        }
+        return *total;
+    }
+    if (!spec.synthesize) {
+        throw ParameterError("model boundaryElement",
+                             "needs an areal surface: a surface of type areal (one, or one per side), or "
+                             "'synthesize N' with a profile, spectrum, powerLaw or fractal description");
+    }
+    if (spec.periodic && !*spec.periodic) {
+        throw ParameterError("periodic", "a synthesized surface is periodic and is solved so; 'periodic "
+                                         "false' is for areal maps");
+    }
+    std::optional<Spectrum> total;
+    for (const SurfaceSpec& s : spec.surfaces) {
+        const Spectrum one = s.spectrum();
+        total = total ? Spectrum::combine(*total, one) : one;
+    }
+    return synthesizeIsotropic(*total, *spec.synthesize, spec.seed, "synthesized from " + total->source());
+}
+
+} // namespace
+
+ContactTable BoundaryElementTablePoints::table(double Eprime) const
+{
+    return ContactTable::fromPoints(pressures, areaFractions, conductancesPerConductivity, completeContactPressure,
+                                    end, Eprime);
+}
+
+BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
+    // A synthesized surface is periodic (solvedSurface refuses 'periodic false' with it).
+    : periodic_(spec.synthesize ? true : spec.periodic.value_or(false)), surface_(solvedSurface(spec))
+{
+    if (spec.model != "boundaryElement") {
+        throw ParameterError("model", "a boundary-element table is for model boundaryElement, not '" +
+                                          spec.model + "'");
+    }
+    const ContactMaterials materials = ContactMaterials::pair(spec.side1, spec.side2);
+    Eprime_ = materials.reducedModulus();
+    if (spec.hardness && spec.hardnessFromYield) {
+        throw ParameterError("hardness", "give a hardness or hardnessFromYield, not both");
+    }
+    if (spec.hardness) {
+        hardness_ = requirePositive("hardness", *spec.hardness);
+    } else if (spec.hardnessFromYield) {
+        hardness_ = 2.84 * materials.yieldStrength("boundaryElement hardnessFromYield"); // H = 2.84 S_y
+    }
+    const BoundaryElementOptions defaults;
+    tolerance_ = defaults.tolerance;
+    precondition_ = defaults.precondition;
+    pointsPerDecade_ = spec.bemPointsPerDecade;
+    if (pointsPerDecade_ < 1 || pointsPerDecade_ > 1000) {
+        throw ParameterError("pointsPerDecade", "must be from 1 to 1000");
+    }
+    const double minP = spec.minPressure.value_or(1e-6 * Eprime_);
+    const double maxP = spec.maxPressure.value_or(hardness_ ? std::min(0.1 * Eprime_, 0.95 * *hardness_)
+                                                            : 0.1 * Eprime_);
+    limits::requireInRange("minimum pressure", minP, limits::minimumLoad * Eprime_, limits::maximumLoad * Eprime_,
+                           "Pa");
+    limits::requireInRange("maximum pressure", maxP, limits::minimumLoad * Eprime_, limits::maximumLoad * Eprime_,
+                           "Pa");
+    if (!(maxP > minP)) {
+        std::ostringstream os;
+        os << "must exceed the minimum pressure (" << maxP << " <= " << minP << " Pa)";
+        throw ParameterError("maximum pressure", os.str());
+    }
+    const double decades = std::log10(maxP / minP);
+    const auto n = static_cast<std::size_t>(std::ceil(decades * double(pointsPerDecade_) - 1e-9)) + 1;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double P = k + 1 == n ? maxP : minP * std::pow(maxP / minP, double(k) / double(n - 1));
+        pressures_.push_back(P);
+        loads_.push_back(checkLoad(P / Eprime_));
+    }
+
+    const ArealSurface solved = surface_.detrended(); // what BoundaryElementModel solves
+    KeyBytes k;
+    k.u64(formatVersion);
+    k.u64(solved.nx());
+    k.u64(solved.ny());
+    k.f64(solved.dx());
+    k.f64(solved.dy());
+    for (double z : solved.heights()) {
+        k.f64(z);
+    }
+    k.u64(periodic_ ? 1 : 0);
+    k.f64(Eprime_);
+    k.u64(hardness_ ? 1 : 0);
+    k.f64(hardness_.value_or(0.0));
+    k.u64(loads_.size());
+    for (double l : loads_) {
+        k.f64(l);
+    }
+    k.f64(tolerance_);
+    k.f64(conductanceTolerance);
+    k.u64(precondition_ ? 1 : 0);
+    key_ = k.sha256Hex();
+
+    std::ostringstream os;
+    os.precision(6);
+    os << "surface " << surface_.source() << ", " << solved.nx() << " x " << solved.ny() << " points at "
+       << solved.dx() << " x " << solved.dy() << " m, " << (periodic_ ? "periodic" : "non-periodic")
+       << ", rms height " << solved.rms() << " m; E' = " << Eprime_ << " Pa; hardness ";
+    if (hardness_) {
+        os << *hardness_ << " Pa";
+    } else {
+        os << "none";
+    }
+    os << "; " << n << " loads from " << minP << " to " << maxP << " Pa (" << pointsPerDecade_
+       << " per decade); tolerance " << tolerance_;
+    inputs_ = os.str();
+}
+
+BoundaryElementTablePoints BoundaryElementTable::build(const Progress& progress) const
+{
+    BoundaryElementOptions bo;
+    bo.periodic = periodic_;
+    bo.hardness = hardness_;
+    bo.tolerance = tolerance_;
+    bo.precondition = precondition_;
+    const BoundaryElementModel model(surface_, Eprime_, bo);
+    const auto start = std::chrono::steady_clock::now();
+    // Sorted already, so curve() solves them in this order, each warm-started from the one below.
+    const std::vector<BoundaryElementPoint> curve =
+        model.curve(loads_, [&](std::size_t done, std::size_t total, const BoundaryElementPoint& p) {
+            if (progress) {
+                progress(done, total, pressures_[done - 1], p,
+                         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+            }
+        });
+    BoundaryElementTablePoints out;
+    double area = 0.0;
+    double h = 0.0;
+    for (std::size_t k = 0; k < curve.size(); ++k) {
+        const BoundaryElementPoint& p = curve[k];
+        if (!(p.areaFraction < 1.0) || !std::isfinite(p.conductancePerConductivity)) {
+            out.end = ContactTable::End::completeContact;
+            out.completeContactPressure = pressures_[k];
+            break;
+        }
+        if (!(p.areaFraction > 0.0 && p.conductancePerConductivity > 0.0)) {
+            std::ostringstream os;
+            os << "the solve gives A_r/A_n = " << p.areaFraction << " and h_c/k_s = " << p.conductancePerConductivity
+               << " 1/m at " << pressures_[k] << " Pa; the table needs positive values";
+            throw ParameterError("boundary-element table", os.str());
+        }
+        area = std::max(area, p.areaFraction);
+        h = std::max(h, p.conductancePerConductivity);
+        out.pressures.push_back(pressures_[k]);
+        out.areaFractions.push_back(area);
+        out.conductancesPerConductivity.push_back(h);
+        if (h > conductanceCeiling) {
+            out.end = ContactTable::End::conductanceCeiling;
+            break;
+        }
+    }
+    if (out.pressures.size() < 2) {
+        std::ostringstream os;
+        os << "complete contact at " << out.completeContactPressure
+           << " Pa leaves fewer than 2 points of the table below it; lower minPressure";
+        throw ParameterError("boundary-element table", os.str());
+    }
+    return out;
+}
+
+std::string BoundaryElementTable::write(const BoundaryElementTablePoints& points) const
+{
+    std::string s;
+    s += boundaryElementTableHeader;
+    s += "\n# key " + key_ + "\n# inputs: " + inputs_ + "\n# end " + endName(points.end) + " " +
+         number(points.completeContactPressure) + "\npressure,area,h_per_k\n";
+    for (std::size_t k = 0; k < points.pressures.size(); ++k) {
+        s += number(points.pressures[k]) + "," + number(points.areaFractions[k]) + "," +
+             number(points.conductancesPerConductivity[k]) + "\n";
+    }
+    return s;
+}
+
+BoundaryElementTableRead BoundaryElementTable::parse(const std::string& text) const
+{
+    BoundaryElementTableRead r;
+    const auto corrupt = [&](const std::string& why) {
+        r.status = BoundaryElementTableRead::Status::corrupt;
+        r.reason = why;
+        r.points.reset();
+        return r;
+    };
+    try {
+        if (text.empty() || text.back() != '\n') {
+            return corrupt(text.empty() ? "the file is empty" : "the file does not end with a newline (cut short?)");
+        }
+        std::vector<std::string> lines;
+        std::istringstream in(text);
+        for (std::string line; std::getline(in, line);) {
+            lines.push_back(line);
+        }
+        if (lines.empty() || lines[0] != boundaryElementTableHeader) {
+            return corrupt(std::string("the first line is not '") + boundaryElementTableHeader + "'");
+        }
+        const std::string keyTag = "# key ";
+        if (lines.size() < 2 || lines[1].rfind(keyTag, 0) != 0) {
+            return corrupt("line 2 is not '# key <hash>'");
+        }
+        const std::string key = lines[1].substr(keyTag.size());
+        if (key != key_) {
+            r.status = BoundaryElementTableRead::Status::foreign;
+            r.reason = "its key " + key + " is not this table's " + key_ +
+                       " (made for another surface, material, hardness, load list or solver)";
+            return r;
+        }
+        if (lines.size() < 5 || lines[2].rfind("# inputs: ", 0) != 0 || lines[3].rfind("# end ", 0) != 0 ||
+            lines[4] != "pressure,area,h_per_k") {
+            return corrupt("lines 3 to 5 are not '# inputs: ...', '# end ...' and 'pressure,area,h_per_k'");
+        }
+        BoundaryElementTablePoints p;
+        {
+            std::istringstream e(lines[3].substr(6));
+            std::string name;
+            std::string value;
+            std::string extra;
+            e >> name >> value;
+            if (e >> extra) {
+                return corrupt("line 4 has more than '# end NAME PRESSURE'");
+            }
+            if (name == "maxPressure") {
+                p.end = ContactTable::End::maxPressure;
+            } else if (name == "completeContact") {
+                p.end = ContactTable::End::completeContact;
+            } else if (name == "conductanceCeiling") {
+                p.end = ContactTable::End::conductanceCeiling;
+            } else {
+                return corrupt("line 4: unknown end '" + name + "'");
+            }
+            if (!parseNumber(value, p.completeContactPressure) || std::isnan(p.completeContactPressure)) {
+                return corrupt("line 4: '" + value + "' is not a pressure");
+            }
+        }
+        for (std::size_t i = 5; i < lines.size(); ++i) {
+            const std::string& line = lines[i];
+            const std::size_t c1 = line.find(',');
+            const std::size_t c2 = c1 == std::string::npos ? c1 : line.find(',', c1 + 1);
+            double v[3];
+            if (c2 == std::string::npos || line.find(',', c2 + 1) != std::string::npos ||
+                !parseNumber(line.substr(0, c1), v[0]) || !parseNumber(line.substr(c1 + 1, c2 - c1 - 1), v[1]) ||
+                !parseNumber(line.substr(c2 + 1), v[2]) || !std::isfinite(v[0]) || !std::isfinite(v[1]) ||
+                !std::isfinite(v[2])) {
+                return corrupt("line " + std::to_string(i + 1) + " '" + line +
+                               "' is not three finite numbers P,area,h_per_k");
+            }
+            const std::size_t k = i - 5;
+            if (k >= pressures_.size() || v[0] != pressures_[k]) {
+                return corrupt("line " + std::to_string(i + 1) + ": the pressure " + number(v[0]) +
+                               " Pa is not the table's load " + std::to_string(k + 1) +
+                               (k < pressures_.size() ? " (" + number(pressures_[k]) + " Pa)" : std::string()));
+            }
+            p.pressures.push_back(v[0]);
+            p.areaFractions.push_back(v[1]);
+            p.conductancesPerConductivity.push_back(v[2]);
+        }
+        // Complete: every load, or up to the load of complete contact, or the ceiling.
+        const std::size_t n = p.pressures.size();
+        bool complete = false;
+        switch (p.end) {
+        case ContactTable::End::maxPressure:
+            complete = n == pressures_.size() && std::isinf(p.completeContactPressure);
+            break;
+        case ContactTable::End::completeContact:
+            complete = n < pressures_.size() && p.completeContactPressure == pressures_[n];
+            break;
+        case ContactTable::End::conductanceCeiling:
+            complete = n > 0 && std::isinf(p.completeContactPressure) &&
+                       p.conductancesPerConductivity.back() > conductanceCeiling &&
+                       (n < 2 || !(p.conductancesPerConductivity[n - 2] > conductanceCeiling));
+            break;
+        }
+        if (!complete) {
+            return corrupt(std::to_string(n) + " points of " + std::to_string(pressures_.size()) +
+                           " loads do not make a whole table ending at " + endName(p.end) + " (cut short?)");
+        }
+        (void)p.table(Eprime_); // the checks of a table: increasing, in range, non-decreasing
+        r.status = BoundaryElementTableRead::Status::ok;
+        r.reason.clear();
+        r.points = std::move(p);
+        return r;
+    } catch (const std::exception& e) {
+        return corrupt(e.what());
+    } catch (...) {
+        return corrupt("unreadable");
+    }
+}
+
+BoundaryElementTableRead BoundaryElementTable::read(const std::string& path) const
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        BoundaryElementTableRead r;
+        r.status = BoundaryElementTableRead::Status::missing;
+        r.reason = "there is no file " + path;
+        return r;
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) {
+        BoundaryElementTableRead r;
+        r.status = BoundaryElementTableRead::Status::corrupt;
+        r.reason = "reading " + path + " failed";
+        return r;
+    }
+    return parse(text.str());
+}
+
+void BoundaryElementTable::writeFile(const std::string& path, const BoundaryElementTablePoints& points) const
+{
+    const std::string temporary = path + ".tmp." + std::to_string(static_cast<long>(::getpid()));
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        out << write(points);
+        out.flush();
+        if (!out) {
+            std::remove(temporary.c_str());
+            throw ParameterError("boundary-element table", "cannot write '" + temporary + "'");
+        }
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+        std::remove(temporary.c_str());
+        throw ParameterError("boundary-element table", "cannot rename '" + temporary + "' to '" + path + "'");
+    }
+}
+
+} // namespace roughContact

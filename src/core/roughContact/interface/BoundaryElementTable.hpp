@@ -1,0 +1,113 @@
+// The pressure table of `model boundaryElement`: A_r/A_n and the exact h_c/k_s of the
+// boundary-element solution (models/BoundaryElement) at log-spaced loads, built once (minutes
+// for large maps) and so kept in a small self-describing text file keyed by a hash of every
+// input that changes it, which a later run reads instead of solving again.
+//
+// The file (v1):
+//     # roughContact boundary-element table v1
+//     # key <64 hex digits: SHA-256 of the inputs, see key()>
+//     # inputs: <one human-readable line: surface, grid, periodic, E', hardness, loads, tolerance>
+//     # end <maxPressure|completeContact|conductanceCeiling> <complete-contact pressure [Pa] or inf>
+//     pressure,area,h_per_k
+//     <P [Pa]>,<A_r/A_n>,<h_c/k_s [1/m]>        one line per point, 17 significant digits
+#pragma once
+
+#include "roughContact/surface/ArealSurface.hpp"
+#include "roughContact/thermal/ContactTable.hpp"
+
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace roughContact {
+
+struct InterfaceSpec;
+struct BoundaryElementPoint;
+
+/// The points of a boundary-element table: what ContactTable::fromPoints takes, and what a
+/// cache file holds.
+struct BoundaryElementTablePoints {
+    std::vector<double> pressures;                   ///< [Pa], increasing
+    std::vector<double> areaFractions;               ///< A_r/A_n
+    std::vector<double> conductancesPerConductivity; ///< h_c/k_s [1/m]
+    /// The first load of the list at which the solve reports complete contact (A_r/A_n = 1 or
+    /// h_c/k_s infinite): from there on the table gives complete contact; +inf: not reached.
+    double completeContactPressure = std::numeric_limits<double>::infinity();
+    ContactTable::End end = ContactTable::End::maxPressure;
+
+    /// The table these points make (ContactTable::fromPoints).
+    ContactTable table(double Eprime) const;
+};
+
+/// What reading a cache file found.
+struct BoundaryElementTableRead {
+    enum class Status { ok, missing, corrupt, foreign };
+    Status status = Status::missing;
+    std::string reason;                              ///< why not ok (empty when ok)
+    std::optional<BoundaryElementTablePoints> points; ///< set when ok
+};
+
+class BoundaryElementTable {
+public:
+    /// The solved surface, the materials and the loads of spec (model boundaryElement; reads
+    /// and synthesizes the surface, cheap next to build()). ParameterError/InputError on a bad
+    /// spec: no areal surface and no synthesize, both, a periodic false with synthesize, ...
+    explicit BoundaryElementTable(const InterfaceSpec& spec);
+
+    /// SHA-256 (64 hex digits) over, as little-endian IEEE-754 binary64 and 64-bit integers:
+    /// the format version, nx, ny, dx, dy, the heights solved (after detrending), periodic,
+    /// E', the hardness (or none), the loads, the contact and conductance tolerances and the
+    /// preconditioning. Any change of them changes it.
+    const std::string& key() const noexcept { return key_; }
+    /// One line for the file and a log: surface, grid, periodic, E', hardness, loads, tolerance.
+    const std::string& inputs() const noexcept { return inputs_; }
+    /// The table's pressures [Pa] (loads x E'), increasing.
+    const std::vector<double>& pressures() const noexcept { return pressures_; }
+    const std::vector<double>& loads() const noexcept { return loads_; }
+    double reducedModulus() const noexcept { return Eprime_; }
+    const ArealSurface& surface() const noexcept { return surface_; }
+    bool periodic() const noexcept { return periodic_; }
+
+    /// Progress of build(): after each load, the loads done, their number, the point and the
+    /// seconds since the start.
+    using Progress = std::function<void(std::size_t done, std::size_t total, double pressure,
+                                        const BoundaryElementPoint& point, double seconds)>;
+    /// Solves the loads as one warm-started curve (BoundaryElementModel::curve); the table ends
+    /// before the first load of complete contact (End::completeContact), after the first with
+    /// h_c/k_s > 1e9 1/m (End::conductanceCeiling), or at the last load (End::maxPressure).
+    /// The values are the solve's (a running maximum keeps them non-decreasing should a solve
+    /// dip by its tolerance). ParameterError when fewer than 2 points lie below complete contact.
+    BoundaryElementTablePoints build(const Progress& progress = {}) const;
+
+    /// The file's text for points (17 significant digits: reading it back is exact).
+    std::string write(const BoundaryElementTablePoints& points) const;
+    /// The points of a file's text, or why not: corrupt (bad header, number, count, order, a
+    /// NaN, a pressure not of this table's loads) or foreign (a key not this table's). Never throws.
+    BoundaryElementTableRead parse(const std::string& text) const;
+    /// parse() of a file; missing when it cannot be opened.
+    BoundaryElementTableRead read(const std::string& path) const;
+    /// Writes write(points) to path atomically: to a temporary name beside it, then renamed
+    /// over it. ParameterError when it cannot.
+    void writeFile(const std::string& path, const BoundaryElementTablePoints& points) const;
+
+private:
+    bool periodic_; // before surface_: both are set from the spec in this order
+    ArealSurface surface_;
+    double Eprime_ = 0.0;
+    std::optional<double> hardness_;
+    double tolerance_ = 0.0;
+    bool precondition_ = true;
+    std::size_t pointsPerDecade_ = 0;
+    std::vector<double> loads_;
+    std::vector<double> pressures_;
+    std::string key_;
+    std::string inputs_;
+};
+
+/// The first line of a table file.
+inline constexpr const char* boundaryElementTableHeader = "# roughContact boundary-element table v1";
+
+} // namespace roughContact

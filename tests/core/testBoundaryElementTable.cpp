@@ -1,0 +1,344 @@
+// The boundary-element pressure table of `model boundaryElement`: its points are the solver's,
+// its file reads back exactly, its key follows every input, a bad file is refused with the
+// reason, and ContactInterface interpolates it as any ContactTable.
+#include "roughContact/Error.hpp"
+#include "roughContact/interface/BoundaryElementTable.hpp"
+#include "roughContact/interface/ContactInterface.hpp"
+#include "roughContact/io/ArealReader.hpp"
+#include "roughContact/material/Materials.hpp"
+#include "roughContact/models/BoundaryElement.hpp"
+#include "roughContact/surface/ArealSynthesis.hpp"
+#include "roughContact/surface/Spectrum.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+using namespace roughContact;
+
+namespace {
+const Material steel{200e9, 0.3, 0.4e9};
+
+// A power law synthesized on a 32 x 32 periodic grid: a table of ~20 loads in well under a second.
+InterfaceSpec smallSpec()
+{
+    InterfaceSpec spec;
+    SurfaceSpec s;
+    s.kind = SurfaceSpec::Kind::powerLaw;
+    s.parameters = {2.56e-4, 0.8, 1e3, 16e3};
+    s.length = 1e-3;
+    spec.surfaces = {s};
+    spec.side1 = steel;
+    spec.side2 = steel;
+    spec.model = "boundaryElement";
+    spec.synthesize = 32;
+    spec.seed = 1;
+    spec.minPressure = 1e5;
+    spec.maxPressure = 1e9;
+    spec.bemPointsPerDecade = 4;
+    return spec;
+}
+
+using Status = BoundaryElementTableRead::Status;
+} // namespace
+
+TEST(BoundaryElementTable, PointsAreTheSolversAtTheirLoads)
+{
+    const InterfaceSpec spec = smallSpec();
+    const BoundaryElementTable t(spec);
+    EXPECT_EQ(t.pressures().size(), 17u); // 4 decades, 4 per decade
+    EXPECT_DOUBLE_EQ(t.pressures().front(), 1e5);
+    EXPECT_DOUBLE_EQ(t.pressures().back(), 1e9);
+    std::size_t calls = 0;
+    const BoundaryElementTablePoints p = t.build([&](std::size_t done, std::size_t total, double P,
+                                                     const BoundaryElementPoint&, double seconds) {
+        ++calls;
+        EXPECT_EQ(done, calls);
+        EXPECT_EQ(total, t.pressures().size());
+        EXPECT_EQ(P, t.pressures()[done - 1]);
+        EXPECT_GE(seconds, 0.0);
+    });
+    EXPECT_EQ(calls, t.pressures().size());
+    ASSERT_EQ(p.pressures.size(), t.pressures().size());
+    EXPECT_EQ(p.end, ContactTable::End::maxPressure);
+    // The same warm-started curve by hand: equal bit for bit.
+    BoundaryElementOptions bo;
+    bo.periodic = true;
+    const ArealSurface surface = synthesizeIsotropic(spec.surfaces[0].spectrum(), 32, 1);
+    const BoundaryElementModel model(surface, t.reducedModulus(), bo);
+    const std::vector<BoundaryElementPoint> curve = model.curve(t.loads());
+    for (std::size_t k = 0; k < curve.size(); ++k) {
+        SCOPED_TRACE(k);
+        EXPECT_EQ(p.areaFractions[k], curve[k].areaFraction);
+        EXPECT_EQ(p.conductancesPerConductivity[k], curve[k].conductancePerConductivity);
+    }
+    // And one load solved alone (no warm start) within the solver's tolerance.
+    const BoundaryElementPoint alone = model.solve(t.loads()[8]);
+    EXPECT_NEAR(p.areaFractions[8], alone.areaFraction, 1e-3 * alone.areaFraction);
+    EXPECT_NEAR(p.conductancesPerConductivity[8], alone.conductancePerConductivity,
+                1e-3 * alone.conductancePerConductivity);
+}
+
+TEST(BoundaryElementTable, RoundTripIsExactAndInterpolationIsLogLog)
+{
+    const InterfaceSpec spec = smallSpec();
+    const BoundaryElementTable t(spec);
+    const BoundaryElementTablePoints p = t.build();
+    const std::string text = t.write(p);
+    EXPECT_EQ(text.rfind("# roughContact boundary-element table v1\n# key " + t.key() + "\n# inputs: ", 0), 0u);
+    const BoundaryElementTableRead r = t.parse(text);
+    ASSERT_EQ(r.status, Status::ok) << r.reason;
+    EXPECT_EQ(r.points->pressures, p.pressures);
+    EXPECT_EQ(r.points->areaFractions, p.areaFractions);
+    EXPECT_EQ(r.points->conductancesPerConductivity, p.conductancesPerConductivity);
+    EXPECT_EQ(r.points->end, p.end);
+    EXPECT_EQ(t.write(*r.points), text);
+
+    // The interface built from the read points equals the one that builds them itself.
+    const ContactInterface built(spec);
+    const ContactInterface cached(spec, &*r.points);
+    EXPECT_NE(built.summary().find("area and conductance from boundaryElement (exact)"), std::string::npos)
+        << built.summary();
+    for (std::size_t k = 0; k + 1 < p.pressures.size(); ++k) {
+        const double P0 = p.pressures[k];
+        const double P1 = p.pressures[k + 1];
+        EXPECT_NEAR(cached.conductancePerConductivity(P0), p.conductancesPerConductivity[k],
+                    1e-14 * p.conductancesPerConductivity[k]);
+        EXPECT_NEAR(cached.areaFraction(P0), p.areaFractions[k], 1e-14 * p.areaFractions[k]);
+        // Log-log between the points: at P0^(1-t) P1^t the value is h0^(1-t) h1^t.
+        const double tt = 0.3;
+        const double P = std::exp((1 - tt) * std::log(P0) + tt * std::log(P1));
+        const double h = std::exp((1 - tt) * std::log(p.conductancesPerConductivity[k]) +
+                                  tt * std::log(p.conductancesPerConductivity[k + 1]));
+        const double a = std::exp((1 - tt) * std::log(p.areaFractions[k]) + tt * std::log(p.areaFractions[k + 1]));
+        EXPECT_NEAR(cached.conductancePerConductivity(P), h, 1e-12 * h);
+        EXPECT_NEAR(cached.areaFraction(P), a, 1e-12 * a);
+        EXPECT_EQ(cached.conductancePerConductivity(P), built.conductancePerConductivity(P));
+    }
+    // Beyond the last point (no complete contact reached): its values hold.
+    EXPECT_NEAR(cached.conductancePerConductivity(2e9), p.conductancesPerConductivity.back(),
+                1e-14 * p.conductancesPerConductivity.back());
+    EXPECT_TRUE(cached.heldAtTableEnd(2e9));
+}
+
+TEST(BoundaryElementTable, EveryInputChangesTheKey)
+{
+    const InterfaceSpec base = smallSpec();
+    const std::string key = BoundaryElementTable(base).key();
+    EXPECT_EQ(key.size(), 64u);
+    EXPECT_EQ(BoundaryElementTable(base).key(), key); // deterministic
+    const auto changed = [&](const char* what, auto edit) {
+        InterfaceSpec s = base;
+        edit(s);
+        EXPECT_NE(BoundaryElementTable(s).key(), key) << what;
+    };
+    changed("seed (the surface)", [](InterfaceSpec& s) { s.seed = 2; });
+    changed("surface amplitude", [](InterfaceSpec& s) { s.surfaces[0].parameters[0] *= 1.0000001; });
+    changed("grid", [](InterfaceSpec& s) { s.synthesize = 64; });
+    changed("E", [](InterfaceSpec& s) { s.side1.E = 210e9; });
+    changed("nu", [](InterfaceSpec& s) { s.side2.nu = 0.31; });
+    changed("hardness", [](InterfaceSpec& s) { s.hardness = 2e9; });
+    changed("hardness value", [](InterfaceSpec& s) {
+        s.hardness = 2e9;
+        InterfaceSpec t = s;
+        t.hardness = 2.1e9;
+        EXPECT_NE(BoundaryElementTable(s).key(), BoundaryElementTable(t).key());
+    });
+    changed("minPressure", [](InterfaceSpec& s) { s.minPressure = 2e5; });
+    changed("maxPressure", [](InterfaceSpec& s) { s.maxPressure = 2e9; });
+    changed("points per decade", [](InterfaceSpec& s) { s.bemPointsPerDecade = 5; });
+    // periodic: an areal map solved periodic or not.
+    {
+        const ArealSurface a = synthesizeIsotropic(base.surfaces[0].spectrum(), 32, 3);
+        const std::string file = testing::TempDir() + "/bemTableMap.txt";
+        {
+            std::ofstream out(file);
+            out.precision(17);
+            for (std::size_t iy = 0; iy < a.ny(); ++iy) {
+                for (std::size_t ix = 0; ix < a.nx(); ++ix) {
+                    out << (ix ? " " : "") << a.at(ix, iy);
+                }
+                out << '\n';
+            }
+        }
+        InterfaceSpec s = base;
+        s.synthesize.reset();
+        s.surfaces[0] = SurfaceSpec{};
+        s.surfaces[0].kind = SurfaceSpec::Kind::areal;
+        s.surfaces[0].file = file;
+        s.surfaces[0].arealOptions.dx = a.dx();
+        s.surfaces[0].arealOptions.dy = a.dy();
+        const std::string nonPeriodic = BoundaryElementTable(s).key();
+        s.periodic = true;
+        EXPECT_NE(BoundaryElementTable(s).key(), nonPeriodic) << "periodic";
+        EXPECT_FALSE(BoundaryElementTable(s).periodic() == BoundaryElementTable(base).periodic() &&
+                     BoundaryElementTable(s).key() == key);
+        std::remove(file.c_str());
+    }
+}
+
+TEST(BoundaryElementTable, BadFilesAreRefusedWithTheReason)
+{
+    const InterfaceSpec spec = smallSpec();
+    const BoundaryElementTable t(spec);
+    const std::string good = t.write(t.build());
+    ASSERT_EQ(t.parse(good).status, Status::ok);
+    const auto refused = [&](const std::string& text, Status status, const std::string& reason) {
+        const BoundaryElementTableRead r = t.parse(text);
+        EXPECT_EQ(r.status, status) << reason << ": " << r.reason;
+        EXPECT_NE(r.reason.find(reason), std::string::npos) << r.reason;
+        EXPECT_FALSE(r.points.has_value());
+    };
+    refused("", Status::corrupt, "empty");
+    refused("garbage\n", Status::corrupt, "first line");
+    refused(good.substr(0, good.size() - 5), Status::corrupt, "newline");
+    // Truncated at a line end: too few points.
+    const std::size_t cut = good.rfind('\n', good.size() - 2);
+    refused(good.substr(0, cut + 1), Status::corrupt, "do not make a whole table");
+    // A number changed into text, a NaN, a non-monotone area.
+    const std::size_t row = good.find("pressure,area,h_per_k\n") + 22;
+    std::string bad = good;
+    bad.replace(row, 3, "abc");
+    refused(bad, Status::corrupt, "is not three finite numbers");
+    bad = good;
+    bad.insert(good.find(',', row) + 1, "nan,");
+    refused(bad, Status::corrupt, "is not three finite numbers");
+    BoundaryElementTablePoints p = t.build();
+    p.areaFractions[3] = p.areaFractions[4] * 1.01;
+    refused(t.write(p), Status::corrupt, "non-decreasing");
+    p = t.build();
+    p.pressures[2] *= 1.000001;
+    refused(t.write(p), Status::corrupt, "is not the table's load 3");
+    // Foreign: another table's key.
+    InterfaceSpec other = spec;
+    other.side1.E = 210e9;
+    const BoundaryElementTable o(other);
+    refused(o.write(o.build()), Status::foreign, "is not this table's");
+    // Missing.
+    const BoundaryElementTableRead m = t.read(testing::TempDir() + "/no-such-bem-table.csv");
+    EXPECT_EQ(m.status, Status::missing);
+    // writeFile then read: ok, and no temporary left beside it.
+    const std::string file = testing::TempDir() + "/bemTable.csv";
+    t.writeFile(file, t.build());
+    const BoundaryElementTableRead back = t.read(file);
+    EXPECT_EQ(back.status, Status::ok) << back.reason;
+    std::remove(file.c_str());
+}
+
+TEST(BoundaryElementTable, SpecErrors)
+{
+    InterfaceSpec s = smallSpec();
+    s.synthesize.reset();
+    EXPECT_THROW(BoundaryElementTable{s}, ParameterError); // a 1-D surface without synthesize
+    s = smallSpec();
+    s.periodic = false;
+    EXPECT_THROW(BoundaryElementTable{s}, ParameterError); // synthesized is periodic
+    s = smallSpec();
+    s.hardness = 1e9;
+    s.hardnessFromYield = true;
+    EXPECT_THROW(BoundaryElementTable{s}, ParameterError);
+    s = smallSpec();
+    s.conductanceLaw = "mikic";
+    try {
+        const ContactInterface ci(s);
+        ADD_FAILURE() << "a conductance law was accepted with boundaryElement";
+    } catch (const ParameterError& e) {
+        EXPECT_NE(std::string(e.what()).find("exact conductance"), std::string::npos) << e.what();
+    }
+    s = smallSpec();
+    s.model = "jacksonGreen";
+    EXPECT_THROW(ContactInterface{s}, ParameterError); // synthesize is for boundaryElement
+    // With a hardness the default top is 0.95 H.
+    s = smallSpec();
+    s.maxPressure.reset();
+    s.hardness = 2e9;
+    EXPECT_DOUBLE_EQ(BoundaryElementTable(s).pressures().back(), 0.95 * 2e9);
+}
+
+TEST(BoundaryElementTable, CompleteContactEndsTheTable)
+{
+    // With a hardness H the solve is in complete contact from P = H on: the table ends before
+    // the first load at or above it, and the interface gives complete contact from that load.
+    InterfaceSpec s = smallSpec();
+    s.hardness = 3e8;
+    s.maxPressure = 1e9;
+    const BoundaryElementTable t(s);
+    const BoundaryElementTablePoints p = t.build();
+    EXPECT_EQ(p.end, ContactTable::End::completeContact);
+    ASSERT_LT(p.pressures.size(), t.pressures().size());
+    EXPECT_EQ(p.completeContactPressure, t.pressures()[p.pressures.size()]);
+    EXPECT_GE(p.completeContactPressure, 3e8);
+    EXPECT_LT(p.pressures.back(), 3e8);
+    const BoundaryElementTableRead r = t.parse(t.write(p));
+    ASSERT_EQ(r.status, Status::ok) << r.reason;
+    EXPECT_EQ(r.points->completeContactPressure, p.completeContactPressure);
+    const ContactInterface ci(s, &*r.points);
+    EXPECT_TRUE(std::isinf(ci.conductancePerConductivity(p.completeContactPressure)));
+    EXPECT_EQ(ci.areaFraction(p.completeContactPressure), 1.0);
+    EXPECT_FALSE(ci.heldAtTableEnd(p.completeContactPressure * 0.999));
+    // A file whose complete contact is not at the load after its last point is cut short.
+    BoundaryElementTablePoints q = p;
+    q.pressures.pop_back();
+    q.areaFractions.pop_back();
+    q.conductancesPerConductivity.pop_back();
+    EXPECT_EQ(t.parse(t.write(q)).status, Status::corrupt);
+}
+
+TEST(BoundaryElementTable, ArealMapsAndTheirComposite)
+{
+    // Two 32 x 32 maps as text matrices: one alone (non-periodic), and their composite.
+    const Spectrum spectrum = smallSpec().surfaces[0].spectrum();
+    std::vector<std::string> files;
+    std::vector<ArealSurface> maps;
+    for (std::uint64_t seed : {5u, 6u}) {
+        maps.push_back(synthesizeIsotropic(spectrum, 32, seed));
+        files.push_back(testing::TempDir() + "/bemTableMap" + std::to_string(seed) + ".txt");
+        std::ofstream out(files.back());
+        out.precision(17);
+        for (std::size_t iy = 0; iy < 32; ++iy) {
+            for (std::size_t ix = 0; ix < 32; ++ix) {
+                out << (ix ? " " : "") << maps.back().at(ix, iy);
+            }
+            out << '\n';
+        }
+    }
+    InterfaceSpec s = smallSpec();
+    s.synthesize.reset();
+    s.surfaces.clear();
+    for (const std::string& f : files) {
+        SurfaceSpec a;
+        a.kind = SurfaceSpec::Kind::areal;
+        a.file = f;
+        a.arealOptions.dx = maps[0].dx();
+        s.surfaces.push_back(a);
+    }
+    const BoundaryElementTable two(s);
+    EXPECT_FALSE(two.periodic());
+    InterfaceSpec one = s;
+    one.surfaces.pop_back();
+    EXPECT_NE(BoundaryElementTable(one).key(), two.key());
+    // The composite's table equals the solver's curve on the composite surface, non-periodic.
+    const BoundaryElementTablePoints p = two.build();
+    const ArealSurface composite = compositeSurface(readAreal(files[0], s.surfaces[0].arealOptions).detrended(),
+                                                    readAreal(files[1], s.surfaces[1].arealOptions).detrended());
+    const BoundaryElementModel model(composite, two.reducedModulus(), BoundaryElementOptions{});
+    const std::vector<BoundaryElementPoint> curve = model.curve(two.loads());
+    ASSERT_EQ(p.pressures.size(), curve.size());
+    for (std::size_t k = 0; k < curve.size(); ++k) {
+        EXPECT_EQ(p.conductancesPerConductivity[k], curve[k].conductancePerConductivity) << k;
+    }
+    // A map with synthesize, or a map and a 1-D description, are refused.
+    InterfaceSpec bad = s;
+    bad.synthesize = 32;
+    EXPECT_THROW(BoundaryElementTable{bad}, ParameterError);
+    bad = s;
+    bad.surfaces[1] = smallSpec().surfaces[0];
+    EXPECT_THROW(BoundaryElementTable{bad}, ParameterError);
+    for (const std::string& f : files) {
+        std::remove(f.c_str());
+    }
+}
