@@ -368,7 +368,10 @@ SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<b
         out.converged = true;
         return out;
     }
-    if (nc == n) {
+    if (nc == n && op.periodic()) {
+        // A periodic interface in contact everywhere: the solids are joined, nothing constricts.
+        // (A non-periodic patch in contact everywhere still constricts the flow into the
+        // half-space around it: solved below, the bonded patch's conductance.)
         out.perConductivity = std::numeric_limits<double>::infinity();
         out.converged = true;
         return out;

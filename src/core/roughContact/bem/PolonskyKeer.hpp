@@ -85,7 +85,10 @@ private:
 /// K x = 1 on the contact set (x = 0 elsewhere; conjugate gradients), h_c/k_s = mean(x) / E':
 /// k_s/E' times the contact's stiffness per nominal area. For elastic contact this is Barber's
 /// relation h_c = (k_s/E') dP/d(-mean separation) (Barber, Proc. R. Soc. A 459 (2003) 53).
-/// +inf when every cell is in contact; 0 when none is.
+/// Periodic: +inf when every cell is in contact; 0 when none is. Non-periodic (a patch of an
+/// unbounded half-space): the heat leaving the patch spreads into the half-space around it, so
+/// even the whole patch in contact has a finite conductance, that of a bonded punch of the
+/// patch's shape (BoundaryElementModel removes it from the spots' conductance).
 struct SpotConductance {
     double perConductivity = 0.0; ///< h_c/k_s [1/m]
     std::size_t iterations = 0;

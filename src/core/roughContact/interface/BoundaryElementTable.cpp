@@ -32,7 +32,10 @@ namespace {
 
 // Bumped whenever the meaning of a table changes for the same inputs (the solver, the
 // conductance, the file's layout): every older file is then foreign and rebuilt.
-constexpr std::uint64_t formatVersion = 1;
+// The version of what the table holds, in its key: 2 since the conductance of a non-periodic
+// patch has the patch's own constriction removed (BoundaryElement.hpp); a table of version 1
+// is foreign and rebuilt.
+constexpr std::uint64_t formatVersion = 2;
 // h_c/k_s beyond this is perfect contact for any mesh (as ContactTable's ceiling).
 constexpr double conductanceCeiling = 1e9;
 

@@ -37,6 +37,16 @@ BoundaryElementModel::BoundaryElementModel(const ArealSurface& surface, double E
     po.hardness = options_.hardness;
     po.precondition = options_.precondition;
     solver_ = std::make_unique<PolonskyKeer>(*op_, surface_.heights(), po);
+    patchConductance_ = std::numeric_limits<double>::infinity();
+    if (!options_.periodic) {
+        const SpotConductance patch = spotConductance(*op_, std::vector<bool>(n, true), conductanceTolerance,
+                                                      options_.maxIterations, nullptr, nullptr,
+                                                      options_.precondition);
+        if (!patch.converged || !(patch.perConductivity > 0.0)) {
+            throw ParameterError("boundaryElement", "the conductance of the bonded patch did not converge");
+        }
+        patchConductance_ = patch.perConductivity;
+    }
 }
 
 BoundaryElementPoint BoundaryElementModel::solve(double load, std::vector<double>* pressure,
@@ -55,6 +65,7 @@ BoundaryElementPoint BoundaryElementModel::solve(double load, std::vector<double
         out.areaFraction = 1.0;
         out.plasticFraction = 1.0;
         out.conductancePerConductivity = std::numeric_limits<double>::infinity();
+        out.spotsConductancePerConductivity = patchConductance_;
         return out;
     }
     ContactSolution s = solver_->solve(P, warmStart);
@@ -81,7 +92,12 @@ BoundaryElementPoint BoundaryElementModel::solve(double load, std::vector<double
            << " iterations (residual " << c.residual << ")";
         throw ParameterError("boundaryElement", os.str());
     }
-    out.conductancePerConductivity = c.perConductivity;
+    out.spotsConductancePerConductivity = c.perConductivity;
+    // The patch's own constriction removed (the header): 1/h = 1/h_spots - 1/h_patch; the
+    // spots of a patch conduct at most as the bonded patch does.
+    const double interfaceResistance = 1.0 / c.perConductivity - 1.0 / patchConductance_;
+    out.conductancePerConductivity =
+        interfaceResistance > 0.0 ? 1.0 / interfaceResistance : std::numeric_limits<double>::infinity();
     out.conductanceIterations = c.iterations;
     out.conductanceResidual = c.residual;
     if (pressure != nullptr) {
