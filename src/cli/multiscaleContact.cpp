@@ -411,7 +411,7 @@ int run(const Options& o)
     if (o.model == "boundaryElement") {
         return runBoundaryElement(o);
     }
-    const bool cmy = o.conductanceLaw == "cooperMikicYovanovich";
+    const bool cmy = o.conductanceLaw == "cooperMikicYovanovich" || o.conductanceLaw == "all";
     for (const auto& [given, what] : {std::pair<bool, const char*>{!o.synthesize.empty(), "--synthesize"},
                                       {o.periodic, "--periodic"},
                                       {o.hardness.has_value() && !cmy, "--hardness"},
@@ -473,17 +473,17 @@ int run(const Options& o)
     const auto* ms = dynamic_cast<const MultiscaleModel*>(model.get());
     const auto* persson = dynamic_cast<const PerssonModel*>(model.get());
     const bool conductance = o.conductance || !o.conductanceLaw.empty();
-    std::unique_ptr<ConductanceLaw> law;
+    const bool allLaws = o.conductanceLaw == "all";
     // persson's own conductance (Barber's relation with its mean separation) unless a law is named.
-    const std::string lawName =
-        o.conductanceLaw.empty() ? (persson != nullptr ? "persson" : defaultConductanceLaw()) : o.conductanceLaw;
-    if (conductance && !(persson != nullptr && lawName == "persson")) {
-        const std::string& name = lawName;
-        ConductanceLawInputs in;
+    const std::string lawName = o.conductanceLaw.empty() || allLaws
+                                    ? (persson != nullptr ? "persson" : defaultConductanceLaw())
+                                    : o.conductanceLaw;
+    ConductanceLawInputs in;
+    if (conductance) {
         in.multiscale = ms;
         in.spectrum = &spectrum;
         in.Eprime = materials.reducedModulus();
-        if (name == "mikic" || name == "cooperMikicYovanovich") {
+        if (allLaws || lawName == "mikic" || lawName == "cooperMikicYovanovich") {
             in.roughness = roughnessOf(o);
         }
         if (o.hardness && o.hardnessFromYield) {
@@ -501,19 +501,50 @@ int run(const Options& o)
             }
             in.vickers = VickersCoefficients{c[0], c[1]};
         }
+    }
+    // Why a law cannot be built here, or "" when it can.
+    const auto missing = [&](const std::string& name) -> std::string {
         if (name == "cooperMikicYovanovich" && !in.microhardness && !in.vickers) {
-            throw ParameterError("--conductance-law cooperMikicYovanovich",
-                                 "needs the microhardness: --hardness H_C [Pa], --hardness-from-yield "
-                                 "(2.84 S_y) or --vickers C1,C2");
+            return "needs the microhardness: --hardness H_C [Pa], --hardness-from-yield (2.84 S_y) or "
+                   "--vickers C1,C2";
         }
         if (name == "jacksonBhavnaniFerguson" && ms == nullptr) {
-            throw ParameterError("--conductance", "the law jacksonBhavnaniFerguson (the default) needs a "
-                                                  "multi-scale model; choose another --conductance-law "
-                                                  "(mikic, persson, ...)");
+            return "needs a multi-scale model; choose another --conductance-law (mikic, persson, ...)";
         }
-        law = makeConductanceLaw(name, in);
+        return "";
+    };
+    std::unique_ptr<ConductanceLaw> law; // the h_per_k column's (none: persson's own)
+    if (conductance && !(persson != nullptr && lawName == "persson")) {
+        const std::string why = missing(lawName);
+        if (!why.empty() && allLaws) {
+            // all: h_per_k stays empty where the default law cannot be built; the other columns say.
+        } else if (!why.empty()) {
+            throw ParameterError(o.conductanceLaw.empty() ? "--conductance" : "--conductance-law " + lawName,
+                                 (o.conductanceLaw.empty() ? "the default law " + lawName + " " : "") + why);
+        }
+        if (why.empty()) {
+            law = makeConductanceLaw(lawName, in);
+        }
     }
-    out << "load,area,pressure" << (conductance ? ",separation,h_per_k" : "") << '\n';
+    // --conductance-law all: every law that can be built here, a column h_per_k_NAME each.
+    std::vector<std::pair<std::string, std::unique_ptr<ConductanceLaw>>> every;
+    if (allLaws) {
+        for (const std::string& name : conductanceLawNames()) {
+            const std::string why = missing(name);
+            if (why.empty()) {
+                every.emplace_back(name, makeConductanceLaw(name, in));
+            } else {
+                std::cerr << "multiscaleContact: --conductance-law all: no column for " << name << ": " << why
+                          << '\n';
+            }
+        }
+    }
+    out << "load,area,pressure" << (conductance ? ",separation,h_per_k" : "");
+    for (const auto& [name, l] : every) {
+        out << ",h_per_k_" << name;
+    }
+    out << '\n';
+    const double Ep = materials.reducedModulus();
     for (double load : loads) {
         if (persson != nullptr && conductance) {
             // Persson's theory: the mean separation [m] and Barber's h_c/k_s = -(1/E') dp/du
@@ -523,18 +554,22 @@ int run(const Options& o)
             if (p.areaFraction > 0.0) {
                 out << load / p.areaFraction;
             }
-            out << ',' << p.meanSeparation << ','
-                << (law ? law->perConductivity(load * materials.reducedModulus()) : p.conductancePerConductivity)
-                << '\n';
-            continue;
+            out << ',' << p.meanSeparation << ',' << (law ? law->perConductivity(load * Ep) : p.conductancePerConductivity);
+        } else {
+            const double a = model->areaFraction(load);
+            out << load << ',' << a << ',';
+            if (a > 0.0) {
+                out << load / a; // F/(A_r E'), seed Eq. 34
+            }
+            if (conductance) { // no mean separation in these models: empty
+                out << ",,";
+                if (law) {
+                    out << law->perConductivity(load * Ep); // inf at complete contact
+                }
+            }
         }
-        const double a = model->areaFraction(load);
-        out << load << ',' << a << ',';
-        if (a > 0.0) {
-            out << load / a; // F/(A_r E'), seed Eq. 34
-        }
-        if (conductance) { // no mean separation in these models: empty
-            out << ",," << law->perConductivity(load * materials.reducedModulus()); // inf at complete contact
+        for (const auto& [name, l] : every) {
+            out << ',' << l->perConductivity(load * Ep);
         }
         out << '\n';
     }
@@ -660,7 +695,8 @@ int main(int argc, char** argv)
     }
     app.add_option("--conductance-law", o.conductanceLaw,
                    "the law of the h_per_k column (implies --conductance): " + lawNames + " (default " +
-                       defaultConductanceLaw() + "). cooperMikicYovanovich needs the microhardness: "
+                       defaultConductanceLaw() + "); 'all': the default's column and one h_per_k_NAME "
+                       "column per law that can be built. cooperMikicYovanovich needs the microhardness: "
                        "--hardness H_C, --hardness-from-yield (2.84 S_y) or --vickers C1,C2");
     app.add_option("--vickers", o.vickers,
                    "cooperMikicYovanovich: Vickers coefficients C1 [Pa], C2 of H_v = c1 (d_v/1 um)^c2, the "

@@ -237,6 +237,47 @@ TEST(Cli, ConductanceLawColumnIsTheLibrarys)
                 {"--vickers", "C1,C2"});
 }
 
+TEST(Cli, EveryConductanceLawSideBySide)
+{
+    // --conductance-law all: one h_per_k_NAME column per law, each the library's law (10
+    // digits), h_per_k the default's; a law that cannot be built here (no microhardness; a
+    // model that is not multi-scale) has no column, and stderr says why.
+    const Profile profile = readProfile(standin);
+    const Spectrum s = Spectrum::fromProfile(profile);
+    const ContactMaterials mat = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
+    const MultiscaleModel m(s, mat.reducedModulus(), makeAsperityModel("jacksonGreen", mat));
+    ConductanceLawInputs in;
+    in.multiscale = &m;
+    in.spectrum = &s;
+    in.roughness = profileRoughness(profile);
+    in.Eprime = mat.reducedModulus();
+    in.microhardness = 2.84 * 0.2e9;
+    const CommandResult r = run("--profile '" + standin + "' --model jacksonGreen" + steel +
+                                " --loads 1e-5,1e-4 --conductance-law all --hardness-from-yield");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Csv csv = parseCsv(r.out);
+    ASSERT_EQ(csv.rows.size(), 2U);
+    for (const std::string& name : conductanceLawNames()) {
+        const int c = column(csv, "h_per_k_" + name);
+        const auto law = makeConductanceLaw(name, in);
+        for (const auto& row : csv.rows) {
+            const double load = std::stod(row.at(0));
+            const double expected = law->perConductivity(load * mat.reducedModulus());
+            EXPECT_NEAR(std::stod(row.at(c)), expected, 1e-9 * expected) << name;
+            if (name == defaultConductanceLaw()) {
+                EXPECT_EQ(row.at(column(csv, "h_per_k")), row.at(c));
+            }
+        }
+    }
+    const CommandResult gw = run("--profile '" + standin + "' --model greenwoodWilliamson" + steel +
+                                 " --loads 1e-4 --conductance-law all");
+    ASSERT_EQ(gw.status, 0) << gw.err;
+    EXPECT_EQ(gw.out.substr(0, gw.out.find('\n')),
+              "load,area,pressure,separation,h_per_k,h_per_k_persson,h_per_k_mikic");
+    EXPECT_NE(gw.err.find("no column for jacksonBhavnaniFerguson"), std::string::npos) << gw.err;
+    EXPECT_NE(gw.err.find("no column for cooperMikicYovanovich"), std::string::npos) << gw.err;
+}
+
 TEST(Cli, PerssonFillsEveryConductanceColumn)
 {
     // --model persson --conductance: load,area,pressure,separation,h_per_k all filled, each the
