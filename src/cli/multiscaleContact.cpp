@@ -508,7 +508,7 @@ int run(const Options& o)
             return "needs the microhardness: --hardness H_C [Pa], --hardness-from-yield (2.84 S_y) or "
                    "--vickers C1,C2";
         }
-        if (name == "jacksonBhavnaniFerguson" && ms == nullptr) {
+        if ((name == "jacksonBhavnaniFerguson" || name == "multiscaleBarber") && ms == nullptr) {
             return "needs a multi-scale model; choose another --conductance-law (mikic, persson, ...)";
         }
         return "";

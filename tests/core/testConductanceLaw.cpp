@@ -12,6 +12,7 @@
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 #include "roughContact/thermal/CooperMikicYovanovich.hpp"
 #include "roughContact/thermal/Mikic.hpp"
+#include "roughContact/thermal/MultiscaleBarber.hpp"
 
 #include <gtest/gtest.h>
 
@@ -55,6 +56,7 @@ TEST(ConductanceLaw, EveryNameBuildsAndIsTheFormulaItNames)
     ASSERT_FALSE(conductanceLawNames().empty());
     EXPECT_TRUE(isConductanceLaw(defaultConductanceLaw()));
     const PerssonModel persson(s, steel.reducedModulus());
+    const MultiscaleBarber barber(model, s);
     for (const std::string& name : conductanceLawNames()) {
         const auto law = makeConductanceLaw(name, in);
         EXPECT_EQ(law->name(), name);
@@ -65,6 +67,8 @@ TEST(ConductanceLaw, EveryNameBuildsAndIsTheFormulaItNames)
             double expected = 0.0;
             if (name == "jacksonBhavnaniFerguson") {
                 expected = constrictionConductancePerConductivity(model, P / steel.reducedModulus());
+            } else if (name == "multiscaleBarber") {
+                expected = barber.conductancePerConductivity(P / steel.reducedModulus());
             } else if (name == "persson") {
                 expected = persson.conductancePerConductivity(P / steel.reducedModulus());
             } else if (name == "mikic") {
@@ -93,6 +97,7 @@ TEST(ConductanceLaw, MissingInputsAndUnknownNamesSayWhat)
     EXPECT_NE(errorOf("jacksonBhavnaniFerguson", none).find("multi-scale"), std::string::npos);
     EXPECT_NE(errorOf("mikic", none).find("sigma"), std::string::npos);
     EXPECT_NE(errorOf("persson", none).find("spectrum"), std::string::npos);
+    EXPECT_NE(errorOf("multiscaleBarber", none).find("multi-scale"), std::string::npos);
     none.roughness = SurfaceRoughness{1e-6, 0.1};
     EXPECT_NE(errorOf("mikic", none).find("E'"), std::string::npos); // E' = 0
     EXPECT_NE(errorOf("cooperMikicYovanovich", none).find("microhardness"), std::string::npos);

@@ -6,6 +6,7 @@
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 #include "roughContact/thermal/CooperMikicYovanovich.hpp"
 #include "roughContact/thermal/Mikic.hpp"
+#include "roughContact/thermal/MultiscaleBarber.hpp"
 
 #include <algorithm>
 
@@ -32,6 +33,22 @@ public:
     }
 
 private:
+    const MultiscaleModel& model_;
+};
+
+class MultiscaleBarberLaw final : public ConductanceLaw {
+public:
+    MultiscaleBarberLaw(const MultiscaleModel& model, const Spectrum& spectrum) : law_(model, spectrum), model_(model)
+    {
+    }
+    std::string name() const override { return "multiscaleBarber"; }
+    double perConductivity(double P) const override
+    {
+        return law_.conductancePerConductivity(checkPressure(P) / model_.reducedModulus());
+    }
+
+private:
+    MultiscaleBarber law_;
     const MultiscaleModel& model_;
 };
 
@@ -100,8 +117,8 @@ const SurfaceRoughness& needRoughness(const std::string& law, const ConductanceL
 
 const std::vector<std::string>& conductanceLawNames()
 {
-    static const std::vector<std::string> names = {"jacksonBhavnaniFerguson", "persson", "mikic",
-                                                   "cooperMikicYovanovich"};
+    static const std::vector<std::string> names = {"jacksonBhavnaniFerguson", "multiscaleBarber", "persson",
+                                                   "mikic", "cooperMikicYovanovich"};
     return names;
 }
 
@@ -125,6 +142,13 @@ std::unique_ptr<ConductanceLaw> makeConductanceLaw(const std::string& name, cons
                                        "jacksonGreen or truncation)");
         }
         return std::make_unique<JacksonBhavnaniFerguson>(*in.multiscale);
+    }
+    if (name == "multiscaleBarber") {
+        if (in.multiscale == nullptr || in.spectrum == nullptr) {
+            throw ParameterError(name, "needs a multi-scale contact model (hertz, jgh, jghConsistent, "
+                                       "jacksonGreen or truncation) and its spectrum");
+        }
+        return std::make_unique<MultiscaleBarberLaw>(*in.multiscale, *in.spectrum);
     }
     if (name == "persson") {
         if (in.spectrum == nullptr) {

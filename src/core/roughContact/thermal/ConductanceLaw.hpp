@@ -8,6 +8,8 @@
 //                            spots in flux tubes (ConstrictionConductance.hpp; Jackson,
 //                            Bhavnani & Ferguson, J. Heat Transfer 130 (2008) 081301). Needs a
 //                            multi-scale model.
+//   multiscaleBarber         Barber's relation on the elastic energy of the multi-scale levels
+//                            (MultiscaleBarber.hpp). Needs a multi-scale model and its spectrum.
 //   persson                  Persson's theory's conductance (models/Persson.hpp: Barber's
 //                            relation with Persson's mean separation). Needs the spectrum and E'.
 //   mikic                    Mikic's elastic correlation (Mikic.hpp). Needs sigma, m and E'.
