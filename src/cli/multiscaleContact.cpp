@@ -273,6 +273,22 @@ ContactMaterials materialsOf(const Options& o)
     return m.size() == 1 ? ContactMaterials::againstRigidFlat(m[0]) : ContactMaterials::pair(m[0], m[1]);
 }
 
+// --hardness H or --hardness-from-yield (H = 2.84 S_y): the boundary-element cap and the CMY
+// microhardness alike; none when neither is given.
+std::optional<double> hardnessOf(const Options& o, const ContactMaterials& materials, const std::string& who)
+{
+    if (o.hardness && o.hardnessFromYield) {
+        throw ParameterError("--hardness", "give a hardness or --hardness-from-yield, not both");
+    }
+    if (o.hardness) {
+        return requirePositive("--hardness", *o.hardness);
+    }
+    if (o.hardnessFromYield) {
+        return materials.hardness(who);
+    }
+    return std::nullopt;
+}
+
 void printInfo(const Spectrum& s, std::ostream& os)
 {
     os << "# surface: " << s.source() << "\n# levels: " << s.size() << ", f = " << s.frequencies().front()
@@ -340,14 +356,7 @@ int runBoundaryElement(const Options& o)
     const ContactMaterials materials = materialsOf(o);
     BoundaryElementOptions bo;
     bo.periodic = periodic;
-    if (o.hardness && o.hardnessFromYield) {
-        throw ParameterError("--hardness", "give a hardness or --hardness-from-yield, not both");
-    }
-    if (o.hardness) {
-        bo.hardness = requirePositive("--hardness", *o.hardness);
-    } else if (o.hardnessFromYield) {
-        bo.hardness = 2.84 * materials.yieldStrength("boundaryElement --hardness-from-yield"); // H = 2.84 S_y
-    }
+    bo.hardness = hardnessOf(o, materials, "boundaryElement --hardness-from-yield");
     const std::vector<double> loads = loadsOf(o);
     const BoundaryElementModel model(surface, materials.reducedModulus(), bo);
     const auto start = std::chrono::steady_clock::now();
@@ -486,14 +495,7 @@ int run(const Options& o)
         if (allLaws || lawName == "mikic" || lawName == "cooperMikicYovanovich") {
             in.roughness = roughnessOf(o);
         }
-        if (o.hardness && o.hardnessFromYield) {
-            throw ParameterError("--hardness", "give a hardness or --hardness-from-yield, not both");
-        }
-        if (o.hardness) {
-            in.microhardness = requirePositive("--hardness", *o.hardness);
-        } else if (o.hardnessFromYield) {
-            in.microhardness = 2.84 * materials.yieldStrength("--hardness-from-yield"); // H = 2.84 S_y
-        }
+        in.microhardness = hardnessOf(o, materials, "--hardness-from-yield");
         if (!o.vickers.empty()) {
             const std::vector<double> c = splitNumbers(o.vickers, ',', "--vickers");
             if (c.size() != 2) {

@@ -2,6 +2,8 @@
 // (seed §3.1; Abbott & Firestone; physics.md §3).
 #pragma once
 
+#include "roughContact/material/Materials.hpp"
+
 #include "roughContact/asperity/Hertz.hpp"
 #include "roughContact/asperity/YieldOnset.hpp"
 
@@ -26,7 +28,7 @@ public:
     const YieldOnset& onset() const noexcept { return onset_; }
     double hardness() const noexcept { return H_; }
 
-    static constexpr double hardnessCoefficient = 2.84; ///< H = 2.84 S_y (seed §3.1)
+    static constexpr double hardnessCoefficient = hardnessPerYieldStrength; ///< H = 2.84 S_y (seed §3.1)
 
 private:
     Hertz hertz_;

@@ -175,7 +175,7 @@ BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
     if (spec.hardness) {
         hardness_ = requirePositive("hardness", *spec.hardness);
     } else if (spec.hardnessFromYield) {
-        hardness_ = 2.84 * materials.yieldStrength("boundaryElement hardnessFromYield"); // H = 2.84 S_y
+        hardness_ = materials.hardness("boundaryElement hardnessFromYield");
     }
     const BoundaryElementOptions defaults;
     tolerance_ = defaults.tolerance;

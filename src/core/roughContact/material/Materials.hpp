@@ -18,6 +18,12 @@ struct Material {
 /// the core accepts (Limits.hpp): E in [1e3, 1e13] Pa, nu in (-1, 0.5), S_y/E in [1e-6, 0.1].
 void checkMaterial(const Material& m, const std::string& which);
 
+/// The flow pressure of a perfectly plastic contact spot over the yield strength: H = 2.84 S_y
+/// (seed §3.1, the truncation model's and Majumdar-Bhushan's hardness). The one place of the
+/// coefficient: the truncation law, Majumdar-Bhushan, the boundary-element cap
+/// (hardnessFromYield) and the CMY microhardness (--hardness-from-yield) all take it from here.
+inline constexpr double hardnessPerYieldStrength = 2.84;
+
 /// What the contact models need of the pair:
 /// - E' from 1/E' = (1-nu1^2)/E1 + (1-nu2^2)/E2 (physics.md §1),
 /// - the yield strength S_y, Poisson's ratio nu and modulus E of the material that yields
@@ -40,6 +46,9 @@ public:
     /// Throw ParameterError naming `model` when the property is missing.
     double yieldStrength(const std::string& model) const;
     double poissonRatio(const std::string& model) const;
+    /// H = hardnessPerYieldStrength S_y of the yielding material [Pa]; ParameterError naming
+    /// `model` without S_y.
+    double hardness(const std::string& model) const { return hardnessPerYieldStrength * yieldStrength(model); }
     /// Young's modulus of the yielding material (seed Eq. 18).
     double youngModulus(const std::string& model) const;
 

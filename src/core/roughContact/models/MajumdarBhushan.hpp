@@ -2,6 +2,8 @@
 // seed §3.1; physics.md §4).
 #pragma once
 
+#include "roughContact/material/Materials.hpp"
+
 #include "roughContact/models/ContactModel.hpp"
 #include "roughContact/surface/FractalFit.hpp"
 
@@ -38,7 +40,7 @@ public:
     double reducedModulus() const noexcept { return Eprime_; }
     double yieldStrength() const noexcept { return Sy_; }
 
-    static constexpr double hardnessCoefficient = 2.84; ///< H = 2.84 S_y (seed §3.1)
+    static constexpr double hardnessCoefficient = hardnessPerYieldStrength; ///< H = 2.84 S_y (seed §3.1)
 
 private:
     FractalParameters fractal_;
