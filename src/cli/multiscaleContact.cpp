@@ -492,7 +492,7 @@ int run(const Options& o)
         in.multiscale = ms;
         in.spectrum = &spectrum;
         in.Eprime = materials.reducedModulus();
-        if (allLaws || lawName == "mikic" || lawName == "cooperMikicYovanovich") {
+        if (allLaws || conductanceLawNeedsRoughness(lawName)) {
             in.roughness = roughnessOf(o);
         }
         in.microhardness = hardnessOf(o, materials, "--hardness-from-yield");

@@ -130,16 +130,13 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
     const double Ep = materials_.reducedModulus();
     model_ = std::make_unique<MultiscaleModel>(surface_, Ep, makeAsperityModel(spec.model, materials_));
     conductanceLaw_ = spec.conductanceLaw.empty() ? defaultConductanceLaw() : spec.conductanceLaw;
-    if (!isConductanceLaw(conductanceLaw_)) {
-        makeConductanceLaw(conductanceLaw_, {}); // the error that lists the laws
-    }
     ConductanceLawInputs in;
     in.multiscale = model_.get();
     in.spectrum = &surface_;
     in.Eprime = Ep;
     in.microhardness = spec.microhardness;
     in.vickers = spec.vickers;
-    if (conductanceLaw_ == "mikic" || conductanceLaw_ == "cooperMikicYovanovich") {
+    if (conductanceLawNeedsRoughness(conductanceLaw_)) {
         std::optional<SurfaceRoughness> r;
         for (const SurfaceSpec& s : spec.surfaces) {
             r = r ? combined(*r, s.roughness()) : s.roughness();

@@ -134,6 +134,11 @@ bool isConductanceLaw(const std::string& name)
     return std::find(n.begin(), n.end(), name) != n.end();
 }
 
+bool conductanceLawNeedsRoughness(const std::string& name)
+{
+    return name == "mikic" || name == "cooperMikicYovanovich";
+}
+
 std::unique_ptr<ConductanceLaw> makeConductanceLaw(const std::string& name, const ConductanceLawInputs& in)
 {
     if (name == "jacksonBhavnaniFerguson") {

@@ -58,6 +58,9 @@ const std::vector<std::string>& conductanceLawNames();
 const std::string& defaultConductanceLaw();
 /// True for a name in conductanceLawNames().
 bool isConductanceLaw(const std::string& name);
+/// True for the laws that take the surfaces' sigma and m (ConductanceLawInputs::roughness), which
+/// callers compute only for them (it reads the surface files again).
+bool conductanceLawNeedsRoughness(const std::string& name);
 /// The law `name` built from `inputs`. ParameterError for an unknown name (listing the known
 /// ones) or a missing input.
 std::unique_ptr<ConductanceLaw> makeConductanceLaw(const std::string& name, const ConductanceLawInputs& inputs);
