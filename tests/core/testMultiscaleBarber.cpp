@@ -2,6 +2,7 @@
 // the bins hold the whole 2-D variance, one level gives the closed form, the law is +inf at
 // complete contact and rises with the load.
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 #include "roughContact/material/Materials.hpp"
 #include "roughContact/models/ModelFactory.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
@@ -64,6 +65,9 @@ TEST(MultiscaleBarber, CompleteContactZeroAndLightLoad)
     const MultiscaleBarber law(m, s);
     EXPECT_EQ(law.conductancePerConductivity(0.0), 0.0);
     EXPECT_THROW(law.conductancePerConductivity(-1.0), ParameterError);
+    // The ends of the accepted loads (the difference stays inside them).
+    EXPECT_GT(law.conductancePerConductivity(limits::minimumLoad), 0.0);
+    EXPECT_TRUE(std::isinf(law.conductancePerConductivity(limits::maximumLoad)));
     // Every level in complete contact: the energy no longer changes, nothing constricts.
     EXPECT_TRUE(std::isinf(law.conductancePerConductivity(10.0)));
     // h_c rises with the load. Not in proportion to it, although the multi-scale area does at

@@ -1,11 +1,13 @@
 #include "roughContact/thermal/MultiscaleBarber.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 #include "roughContact/models/ContactModel.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -50,8 +52,10 @@ double MultiscaleBarber::conductancePerConductivity(double load) const
     if (checkLoad(load) == 0.0) {
         return 0.0;
     }
-    const double dU = (energy(load * (1.0 + relativeStep)) - energy(load * (1.0 - relativeStep))) /
-                      (2.0 * relativeStep * load);
+    // Central, but inside the accepted loads: one-sided at their ends.
+    const double lo = std::max(load * (1.0 - relativeStep), limits::minimumLoad);
+    const double hi = std::min(load * (1.0 + relativeStep), limits::maximumLoad);
+    const double dU = (energy(hi) - energy(lo)) / (hi - lo);
     return dU > 0.0 ? load / dU : std::numeric_limits<double>::infinity();
 }
 
