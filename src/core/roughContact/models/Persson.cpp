@@ -33,25 +33,8 @@ struct Rule {
 Rule gaussLegendre(std::size_t n)
 {
     Rule r{std::vector<double>(n), std::vector<double>(n)};
-    for (std::size_t i = 0; i < n; ++i) {
-        double x = std::cos(pi * (double(i) + 0.75) / (double(n) + 0.5));
-        double dp = 1.0;
-        for (int it = 0; it < 100; ++it) {
-            double p0 = 1.0;
-            double p1 = x;
-            for (std::size_t k = 2; k <= n; ++k) {
-                const double p2 = ((2.0 * double(k) - 1.0) * x * p1 - (double(k) - 1.0) * p0) / double(k);
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = double(n) * (x * p1 - p0) / (x * x - 1.0);
-            const double dx = p1 / dp;
-            x -= dx;
-            if (std::abs(dx) < 1e-16) {
-                break;
-            }
-        }
-        // Recompute the derivative at the converged root.
+    // P_n(x) and P_n'(x) by the three-term recurrence.
+    const auto legendre = [n](double x) {
         double p0 = 1.0;
         double p1 = x;
         for (std::size_t k = 2; k <= n; ++k) {
@@ -59,7 +42,20 @@ Rule gaussLegendre(std::size_t n)
             p0 = p1;
             p1 = p2;
         }
-        dp = double(n) * (x * p1 - p0) / (x * x - 1.0);
+        return std::pair<double, double>{p1, double(n) * (x * p1 - p0) / (x * x - 1.0)};
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        double x = std::cos(pi * (double(i) + 0.75) / (double(n) + 0.5));
+        for (int it = 0; it < 100; ++it) {
+            const auto [p, dp] = legendre(x);
+            const double dx = p / dp;
+            x -= dx;
+            if (std::abs(dx) < 1e-16) {
+                break;
+            }
+        }
+        // The derivative at the converged root.
+        const double dp = legendre(x).second;
         r.t[n - 1 - i] = 0.5 * (1.0 + x);
         r.w[n - 1 - i] = 1.0 / ((1.0 - x * x) * dp * dp); // 2/((1-x^2) P'^2), halved for [0, 1]
     }
