@@ -37,8 +37,9 @@ std::vector<double> ridge(std::size_t nx, std::size_t ny, double amplitude)
     return h;
 }
 
-// A Gaussian random periodic surface with a power-law spectrum (Hurst exponent 0.8), rms 1.
-std::vector<double> randomSurface(std::size_t n, unsigned seed)
+// A Gaussian random periodic surface with a power-law spectrum (Hurst exponent 0.8), of rms
+// height `rms`.
+std::vector<double> randomSurface(std::size_t n, unsigned seed, double rms = 1.0)
 {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> phase(0.0, 2 * pi);
@@ -66,7 +67,7 @@ std::vector<double> randomSurface(std::size_t n, unsigned seed)
     }
     s = std::sqrt(s / double(h.size()));
     for (double& v : h) {
-        v /= s;
+        v *= rms / s;
     }
     return h;
 }
@@ -145,10 +146,7 @@ TEST(PolonskyKeer, PreconditioningChangesTheIterationsNotTheSolution)
     // to 1e-9 (its residual is 1e-10).
     const std::size_t n = 64;
     const double L = 1e-4;
-    std::vector<double> h = randomSurface(n, 21);
-    for (double& v : h) {
-        v *= 1e-7;
-    }
+    const std::vector<double> h = randomSurface(n, 21, 1e-7);
     for (bool periodic : {true, false}) {
         const HalfSpaceOperator K(n, n, L / n, L / n, Ep, periodic);
         PolonskyKeerOptions plainOptions;
@@ -354,10 +352,7 @@ TEST(SpotConductance, BarbersRelationOnARoughSurface)
     // issue's bound; the difference's own error is O(eps^2) = 1e-4.
     const std::size_t n = 128;
     const double L = 1e-4;
-    std::vector<double> h = randomSurface(n, 11);
-    for (double& v : h) {
-        v *= 1e-7;
-    }
+    const std::vector<double> h = randomSurface(n, 11, 1e-7);
     const HalfSpaceOperator K(n, n, L / n, L / n, Ep, true);
     const PolonskyKeer solver(K, h);
     for (double P : {1e-3 * Ep * 1e-3, 1e-2 * Ep * 1e-3}) {
@@ -385,10 +380,7 @@ TEST(PolonskyKeer, PlasticCapHoldsTheLoadAtTheHardness)
     // elastic pressures every contact point flows and A_r = F / H exactly (to the cell).
     const std::size_t n = 64;
     const double L = 1e-4;
-    std::vector<double> h = randomSurface(n, 5);
-    for (double& v : h) {
-        v *= 1e-7;
-    }
+    const std::vector<double> h = randomSurface(n, 5, 1e-7);
     const HalfSpaceOperator K(n, n, L / n, L / n, Ep, true);
     const double P = 1e-3 * Ep * 1e-2;
     const ContactSolution elastic = PolonskyKeer(K, h).solve(P);
@@ -478,10 +470,7 @@ TEST(BoundaryElementModel, CurveWithWarmStartsEqualsColdSolves)
 {
     const std::size_t n = 64;
     const double L = 1e-4;
-    std::vector<double> h = randomSurface(n, 9);
-    for (double& v : h) {
-        v *= 1e-7;
-    }
+    const std::vector<double> h = randomSurface(n, 9, 1e-7);
     BoundaryElementOptions o;
     o.periodic = true;
     const BoundaryElementModel model(arealOf(h, n, L, "random"), Ep, o);
@@ -548,10 +537,7 @@ TEST(PolonskyKeer, AWarmStartOnOnePointFindsTheWholeContact)
     // and the solve "converged" on one point at any load. Both solvers, periodic.
     const std::size_t n = 64;
     const double L = 1e-4;
-    std::vector<double> h = randomSurface(n, 5);
-    for (double& v : h) {
-        v *= 1e-7;
-    }
+    const std::vector<double> h = randomSurface(n, 5, 1e-7);
     const HalfSpaceOperator K(n, n, L / n, L / n, Ep, true);
     const std::size_t top = static_cast<std::size_t>(std::max_element(h.begin(), h.end()) - h.begin());
     for (bool precondition : {true, false}) {
@@ -599,10 +585,7 @@ TEST(BoundaryElementModel, APatchsConductanceLessItsOwnConstrictionIsTheInterfac
     // (without the correction the patch's h is 0.63 and 0.23 of the periodic one). Bound: 10 %.
     const std::size_t n = 128;
     const double L = 1e-4;
-    std::vector<double> h = randomSurface(n, 17);
-    for (double& v : h) {
-        v *= 1e-7;
-    }
+    const std::vector<double> h = randomSurface(n, 17, 1e-7);
     BoundaryElementOptions periodicOptions;
     periodicOptions.periodic = true;
     const BoundaryElementModel periodic(arealOf(h, n, L, "random"), Ep, periodicOptions);

@@ -192,20 +192,32 @@ TEST(Cli, ConductanceColumnIsTheLibrarys)
                 {"--conductance"});
 }
 
+// The stand-in under jacksonGreen on steel, as the CLI builds it, and every conductance law's
+// inputs from it (the microhardness from --hardness-from-yield).
+struct StandinLaws {
+    Profile profile = readProfile(standin);
+    Spectrum spectrum = Spectrum::fromProfile(profile);
+    ContactMaterials materials = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
+    MultiscaleModel model{spectrum, materials.reducedModulus(), makeAsperityModel("jacksonGreen", materials)};
+    ConductanceLawInputs inputs() const
+    {
+        ConductanceLawInputs in;
+        in.multiscale = &model;
+        in.spectrum = &spectrum;
+        in.roughness = profileRoughness(profile);
+        in.Eprime = materials.reducedModulus();
+        in.microhardness = materials.hardness("--hardness-from-yield");
+        return in;
+    }
+};
+
 TEST(Cli, ConductanceLawColumnIsTheLibrarys)
 {
     // --conductance-law NAME: the h_per_k column is the library's law, built from the same
     // surface (its sigma and m from the profile's heights), for every law, to 10 digits.
-    const Profile profile = readProfile(standin);
-    const Spectrum s = Spectrum::fromProfile(profile);
-    const ContactMaterials mat = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
-    const MultiscaleModel m(s, mat.reducedModulus(), makeAsperityModel("jacksonGreen", mat));
-    ConductanceLawInputs in;
-    in.multiscale = &m;
-    in.spectrum = &s;
-    in.roughness = profileRoughness(profile);
-    in.Eprime = mat.reducedModulus();
-    in.microhardness = 2.84 * 0.2e9;
+    const StandinLaws standinLaws;
+    const ContactMaterials& mat = standinLaws.materials;
+    const ConductanceLawInputs in = standinLaws.inputs();
     for (const std::string& name : conductanceLawNames()) {
         const std::string extra = name == "cooperMikicYovanovich" ? " --hardness-from-yield" : "";
         const CommandResult r = run("--profile '" + standin + "' --model jacksonGreen" + steel +
@@ -242,16 +254,9 @@ TEST(Cli, EveryConductanceLawSideBySide)
     // --conductance-law all: one h_per_k_NAME column per law, each the library's law (10
     // digits), h_per_k the default's; a law that cannot be built here (no microhardness; a
     // model that is not multi-scale) has no column, and stderr says why.
-    const Profile profile = readProfile(standin);
-    const Spectrum s = Spectrum::fromProfile(profile);
-    const ContactMaterials mat = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
-    const MultiscaleModel m(s, mat.reducedModulus(), makeAsperityModel("jacksonGreen", mat));
-    ConductanceLawInputs in;
-    in.multiscale = &m;
-    in.spectrum = &s;
-    in.roughness = profileRoughness(profile);
-    in.Eprime = mat.reducedModulus();
-    in.microhardness = 2.84 * 0.2e9;
+    const StandinLaws standinLaws;
+    const ContactMaterials& mat = standinLaws.materials;
+    const ConductanceLawInputs in = standinLaws.inputs();
     const CommandResult r = run("--profile '" + standin + "' --model jacksonGreen" + steel +
                                 " --loads 1e-5,1e-4 --conductance-law all --hardness-from-yield");
     ASSERT_EQ(r.status, 0) << r.err;

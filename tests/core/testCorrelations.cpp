@@ -2,6 +2,8 @@
 // law (Mikic.hpp), the Cooper-Mikic-Yovanovich plastic law (CooperMikicYovanovich.hpp) and the
 // Song-Yovanovich microhardness (Microhardness.hpp). Every expected number is written out from
 // the formula, computed independently (python3, double precision), never by the code under test.
+#include "ExpectParameterError.hpp"
+
 #include "roughContact/Error.hpp"
 #include "roughContact/surface/Roughness.hpp"
 #include "roughContact/thermal/CooperMikicYovanovich.hpp"
@@ -29,17 +31,6 @@ constexpr double Eprime = 100e9;
 constexpr double Hc = 3e9;
 const VickersCoefficients vickers{5e9, -0.2};
 
-// EXPECT_THROW of a ParameterError whose parameter() names `entry`.
-template <class F>
-void expectParameterError(F f, const std::string& entry)
-{
-    try {
-        f();
-        ADD_FAILURE() << "no ParameterError naming " << entry;
-    } catch (const ParameterError& e) {
-        EXPECT_EQ(e.parameter(), entry) << e.what();
-    }
-}
 
 } // namespace
 

@@ -1,6 +1,8 @@
 // sigma and the mean absolute slope m of profiles, areal surfaces and spectra, and of two
 // surfaces together (Roughness.hpp, docs/correlations.md). Expected values come from the
 // closed forms of the test surfaces, with the discretisation error of each stated.
+#include "ExpectParameterError.hpp"
+
 #include "roughContact/Error.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/Profile.hpp"
@@ -22,16 +24,6 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-template <class F>
-void expectParameterError(F f, const std::string& entry)
-{
-    try {
-        f();
-        ADD_FAILURE() << "no ParameterError naming " << entry;
-    } catch (const ParameterError& e) {
-        EXPECT_EQ(e.parameter(), entry) << e.what();
-    }
-}
 
 // z_i = A sin(2 pi x_i/lambda) + a + b x_i at x_i = i dx, i = 0..n-1.
 std::vector<double> sampledSine(double A, double lambda, double dx, std::size_t n, double a = 0.0, double b = 0.0)
