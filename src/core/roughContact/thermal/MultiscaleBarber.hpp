@@ -9,7 +9,8 @@
 // energy as the full-contact energy of the roughness at each scale weighted by the contact seen
 // at that scale, P:
 //     U_el/A_n = (pi/2) E' int q^2 C(q) W(P(q)) dq,  W(P) = P [gamma + (1 - gamma) P^2]       (B2)
-// (the same form as models/Persson.hpp, (P4), gamma = 0.42). Here P(q) is not Persson's but the
+// (the same form as models/Persson.hpp, (P4), gamma = 0.42; (B1)-(B3) are this header's own
+// labels: the papers' equation numbers were not at hand, as Persson.hpp says). Here P(q) is not Persson's but the
 // multi-scale model's: in the frequency bin of level i the area seen is a_i = A_i/A_n, the area
 // after level i (MultiscaleModel::trace). The bin's full-contact energy over E' is
 // (pi/2) int_bin q^2 C dq = q_i V_i/4, V_i the 2-D variance in the bin (q = 2 pi f; with
