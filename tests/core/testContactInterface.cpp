@@ -192,66 +192,6 @@ TEST(ContactInterface, FaceConductanceFromTheTableAndBothConductivities)
     EXPECT_THROW(ci.face(1e6, k1, std::nan("")), ParameterError);
 }
 
-// The batch form the boundary condition calls per evaluation: the same numbers as face(), bit
-// for bit, whether a face's table lookup is fresh or re-used from the cache (pressures kept,
-// changed, moved to no contact and to complete contact between calls), and bad input named
-// by its face.
-TEST(ContactInterface, BatchOfFacesWithCacheEqualsFaceByFace)
-{
-    const ContactInterface ci(steelOnCopper());
-    std::size_t n = 500;
-    std::mt19937_64 gen(3);
-    std::uniform_real_distribution<double> logP(3.0, 9.5); // 1 kPa .. 3 GPa: beyond complete
-    std::uniform_real_distribution<double> kU(10.0, 400.0);
-    std::vector<double> P(n), k1(n), k2(n), area(n), h(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        P[i] = std::pow(10.0, logP(gen));
-        k1[i] = kU(gen);
-        k2[i] = kU(gen);
-    }
-    P[0] = 0.0;
-    P[1] = -3e5;
-    ContactInterface::FaceCache cache;
-    const auto check = [&](const char* when) {
-        ci.faces(n, P.data(), k1.data(), k2.data(), cache, area.data(), h.data());
-        for (std::size_t i = 0; i < n; ++i) {
-            const FaceContact c = ci.face(P[i], k1[i], k2[i]);
-            ASSERT_EQ(area[i], c.areaFraction) << when << ", face " << i;
-            ASSERT_EQ(h[i], c.conductance) << when << ", face " << i;
-        }
-    };
-    check("first call");
-    check("everything cached");
-    for (std::size_t i = 0; i < n; i += 3) {
-        P[i] *= 1.5;   // some pressures change,
-        k1[i + 1] = 7; // some conductivities (never cached),
-    }
-    P[5] = 0.0;       // a face comes apart,
-    P[6] = 1e12;      // one is pressed into complete contact
-    check("after changes");
-    // A cache of another size starts over.
-    P.resize(n - 10);
-    k1.resize(n - 10);
-    k2.resize(n - 10);
-    n -= 10;
-    check("fewer faces");
-
-    P[17] = std::nan("");
-    try {
-        ci.faces(n, P.data(), k1.data(), k2.data(), cache, area.data(), h.data());
-        FAIL() << "a NaN pressure was accepted";
-    } catch (const FaceError& e) {
-        EXPECT_EQ(e.face(), 17U);
-        EXPECT_NE(std::string(e.what()).find("face 17: pressure"), std::string::npos) << e.what();
-    }
-    P[17] = 1e6;
-    P[40] = HUGE_VAL;
-    EXPECT_THROW(ci.faces(n, P.data(), k1.data(), k2.data(), cache, area.data(), h.data()), FaceError);
-    P[40] = 1e6;
-    k2[41] = -1.0;
-    EXPECT_THROW(ci.faces(n, P.data(), k1.data(), k2.data(), cache, area.data(), h.data()), FaceError);
-}
-
 TEST(ContactInterface, HeldAtTableEndOnlyWhereMaxPressureCutTheTable)
 {
     // The boundary condition warns "raise maxPressure" from this; before, it also warned in the

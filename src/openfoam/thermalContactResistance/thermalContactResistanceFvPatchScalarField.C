@@ -25,12 +25,18 @@
 
 namespace
 {
-    //- What contactConductance holds where h is infinite (complete contact).
-    constexpr Foam::scalar completeContactOutput = 1e15;
-
-    //- The name of a field of a region's registry.
-    const Foam::word outputNames[3] =
-        {"contactConductance", "contactAreaFraction", "contactPressure"};
+    //- The fields the condition writes, in one list: name and dimensions.
+    //  The constant-h mode writes the first only; gapConductance is written
+    //  where the interface has a gap.
+    enum outputField
+    {
+        outConductance, outAreaFraction, outPressure, outState, outGap, nOutputs
+    };
+    const char* const outputNames[nOutputs] =
+    {
+        "contactConductance", "contactAreaFraction", "contactPressure",
+        "contactState", "gapConductance"
+    };
 }
 
 
@@ -359,11 +365,21 @@ void Foam::thermalContactResistanceFvPatchScalarField::storeOutput() const
 {
     const fvMesh& mesh = patch().boundaryMesh().mesh();
     const label patchi = patch().index();
-    const dimensionSet dims[3] =
-        {dimPower/dimArea/dimTemperature, dimless, dimPressure};
-    const label nOutputs = (hConstant_ > 0 ? 1 : 3);
+    const dimensionSet hDims(dimPower/dimArea/dimTemperature);
+    const dimensionSet dims[nOutputs] =
+        {hDims, dimless, dimPressure, dimless, hDims};
+    const scalarField* values[nOutputs] =
+    {
+        &conductance_, &areaFraction_, &contactPressure_, &contactState_,
+        &gapConductance_
+    };
+    const bool gap = hConstant_ <= 0 && interface_->hasGap();
     for (label k = 0; k < nOutputs; ++k)
     {
+        if ((hConstant_ > 0 && k != outConductance) || (k == outGap && !gap))
+        {
+            continue;
+        }
         if (!mesh.foundObject<volScalarField>(outputNames[k]))
         {
             volScalarField* f = new volScalarField
@@ -381,90 +397,81 @@ void Foam::thermalContactResistanceFvPatchScalarField::storeOutput() const
             );
             f->store();
         }
-        scalarField& out =
-            const_cast<volScalarField&>
-            (
-                mesh.lookupObject<volScalarField>(outputNames[k])
-            ).boundaryFieldRef()[patchi];
-        if (k == 0)
-        {
-            forAll(out, facei)
-            {
-                out[facei] =
-                    std::isinf(conductance_[facei])
-                  ? completeContactOutput
-                  : conductance_[facei];
-            }
-        }
-        else
-        {
-            out = (k == 1 ? areaFraction_ : contactPressure_);
-        }
+        const_cast<volScalarField&>
+        (
+            mesh.lookupObject<volScalarField>(outputNames[k])
+        ).boundaryFieldRef()[patchi] = *values[k];
     }
+}
+
+
+::roughContact::CouplingSummary
+Foam::thermalContactResistanceFvPatchScalarField::summary() const
+{
+    ::roughContact::CouplingSummary s;
+    if (coupling_.state.size() == size_t(size()))
+    {
+        s.add(coupling_, patch().magSf().cdata(), conductance_.cdata());
+    }
+    // Over all processors: sums, and the extremes where there are any.
+    const label nPartialHere = label(s.partial + s.beyondTable);
+    scalar hMin = nPartialHere ? s.hPartialMin : GREAT;
+    scalar hMax = nPartialHere ? s.hPartialMax : -GREAT;
+    reduce(hMin, minOp<scalar>());
+    reduce(hMax, maxOp<scalar>());
+    s.hPartialMin = hMin;
+    s.hPartialMax = hMax;
+    for
+    (
+        scalar* x :
+        {
+            &s.area, &s.touchingArea, &s.partialArea, &s.pressureArea,
+            &s.areaFractionArea, &s.areaFractionPartialArea,
+            &s.hTouchingArea, &s.hPartialArea, &s.hAllArea
+        }
+    )
+    {
+        reduce(*x, sumOp<scalar>());
+    }
+    for
+    (
+        std::size_t* c : {&s.apart, &s.partial, &s.complete, &s.beyondTable}
+    )
+    {
+        label n = label(*c);
+        reduce(n, sumOp<label>());
+        *c = std::size_t(n);
+    }
+    return s;
 }
 
 
 void Foam::thermalContactResistanceFvPatchScalarField::report() const
 {
-    const scalarField& magSf = patch().magSf();
     if (hConstant_ > 0)
     {
         Info<< "thermalContactResistance: " << who().c_str()
             << ": h = " << hConstant_ << " W/m^2/K (constant)" << endl;
         return;
     }
-    scalar hMin = GREAT;
-    scalar hMax = 0;
-    scalar hA = 0;
-    scalar arA = 0;
-    scalar touchingArea = 0;
-    label nTouching = 0;
-    label nComplete = 0;
-    label nApart = 0;
-    forAll(conductance_, facei)
-    {
-        const scalar h = conductance_[facei];
-        if (std::isinf(h))
-        {
-            ++nComplete;
-        }
-        else if (contactPressure_[facei] <= 0)
-        {
-            ++nApart;
-        }
-        else
-        {
-            ++nTouching;
-            hMin = min(hMin, h);
-            hMax = max(hMax, h);
-            hA += h*magSf[facei];
-            arA += areaFraction_[facei]*magSf[facei];
-            touchingArea += magSf[facei];
-        }
-    }
-    reduce(hMin, minOp<scalar>());
-    reduce(hMax, maxOp<scalar>());
-    reduce(hA, sumOp<scalar>());
-    reduce(arA, sumOp<scalar>());
-    reduce(touchingArea, sumOp<scalar>());
-    reduce(nTouching, sumOp<label>());
-    reduce(nComplete, sumOp<label>());
-    reduce(nApart, sumOp<label>());
-
+    const ::roughContact::CouplingSummary s = summary();
+    const label nPartial = label(s.partial + s.beyondTable);
     Info<< "thermalContactResistance: " << who().c_str() << ": ";
-    if (nTouching > 0)
+    if (nPartial > 0)
     {
-        Info<< "h min/mean/max = " << hMin << " / " << hA/touchingArea
-            << " / " << hMax << " W/m^2/K, A_r/A_n mean = "
-            << arA/touchingArea << " (area-weighted over " << nTouching
+        Info<< "h min/mean/max = " << s.hPartialMin << " / "
+            << s.hPartialArea/s.partialArea << " / " << s.hPartialMax
+            << " W/m^2/K, A_r/A_n mean = "
+            << s.areaFractionPartialArea/s.partialArea
+            << " (area-weighted over " << nPartial
             << " faces in partial contact)";
     }
     else
     {
         Info<< "no face in partial contact";
     }
-    Info<< "; " << nComplete << " faces in complete contact (h infinite), "
-        << nApart << " faces apart (P <= 0)" << endl;
+    Info<< "; " << label(s.complete) << " faces in complete contact (h infinite),"
+        << " " << label(s.apart) << " faces apart (P <= 0)" << endl;
 }
 
 
@@ -494,6 +501,8 @@ thermalContactResistanceFvPatchScalarField
     areaFraction_(p.size(), Zero),
     conductance_(p.size(), Zero),
     contactPressure_(p.size(), Zero),
+    contactState_(p.size(), Zero),
+    gapConductance_(p.size(), Zero),
     evaluated_(false),
     dictName_(iF.objectPath()),
     dictStart_(-1),
@@ -531,6 +540,8 @@ thermalContactResistanceFvPatchScalarField
     areaFraction_(p.size(), Zero),
     conductance_(p.size(), Zero),
     contactPressure_(p.size(), Zero),
+    contactState_(p.size(), Zero),
+    gapConductance_(p.size(), Zero),
     evaluated_(false),
     dictName_(dict.name()),
     dictStart_(dict.startLineNumber()),
@@ -587,6 +598,8 @@ thermalContactResistanceFvPatchScalarField
     areaFraction_(ptf.areaFraction_, mapper),
     conductance_(ptf.conductance_, mapper),
     contactPressure_(ptf.contactPressure_, mapper),
+    contactState_(ptf.contactState_, mapper),
+    gapConductance_(ptf.gapConductance_, mapper),
     evaluated_(ptf.evaluated_),
     dictName_(ptf.dictName_),
     dictStart_(ptf.dictStart_),
@@ -633,6 +646,8 @@ thermalContactResistanceFvPatchScalarField
     areaFraction_(ptf.areaFraction_),
     conductance_(ptf.conductance_),
     contactPressure_(ptf.contactPressure_),
+    contactState_(ptf.contactState_),
+    gapConductance_(ptf.gapConductance_),
     evaluated_(ptf.evaluated_),
     dictName_(ptf.dictName_),
     dictStart_(ptf.dictStart_),
@@ -670,6 +685,8 @@ thermalContactResistanceFvPatchScalarField
     areaFraction_(ptf.areaFraction_),
     conductance_(ptf.conductance_),
     contactPressure_(ptf.contactPressure_),
+    contactState_(ptf.contactState_),
+    gapConductance_(ptf.gapConductance_),
     evaluated_(ptf.evaluated_),
     dictName_(ptf.dictName_),
     dictStart_(ptf.dictStart_),
@@ -724,7 +741,10 @@ void Foam::thermalContactResistanceFvPatchScalarField::autoMap
     areaFraction_.autoMap(m);
     conductance_.autoMap(m);
     contactPressure_.autoMap(m);
-    faceCache_ = {};
+    contactState_.autoMap(m);
+    gapConductance_.autoMap(m);
+    coupling_ = {};
+    couplingCache_ = {};
     nbrDeltaCoeffs_.clear();
     haveNbrDeltaCoeffs_ = false;
 }
@@ -746,7 +766,10 @@ void Foam::thermalContactResistanceFvPatchScalarField::rmap
     areaFraction_.rmap(tiptf.areaFraction_, addr);
     conductance_.rmap(tiptf.conductance_, addr);
     contactPressure_.rmap(tiptf.contactPressure_, addr);
-    faceCache_ = {};
+    contactState_.rmap(tiptf.contactState_, addr);
+    gapConductance_.rmap(tiptf.gapConductance_, addr);
+    coupling_ = {};
+    couplingCache_ = {};
     nbrDeltaCoeffs_.clear();
     haveNbrDeltaCoeffs_ = false;
 }
@@ -782,124 +805,133 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
 
     checkKappaField();
     const scalarField myKappa(kappa(*this));
-    const scalarField myKDelta(myKappa*patch().deltaCoeffs());
-    scalarField& f = this->valueFraction();
+    const scalarField& myDeltaCoeffs = patch().deltaCoeffs();
 
-    if (hConstant_ > 0)
+    // The per-face physics is the core's (roughContact::couple and
+    // coupleConstant, interface/FaceCoupling.hpp): this gathers both sides'
+    // arrays, calls it once and hands its results to the mixed condition.
+    roughContact::CouplingInputs in;
+    in.n = size();
+    in.kappa = myKappa.cdata();
+    in.deltaCoeffs = myDeltaCoeffs.cdata();
+
+    // What this side needs of the neighbour, in one exchange: its cell
+    // temperature (contact) or face temperature (h), kappa and pressure per
+    // face, and (once, while the mesh does not change) its deltaCoeffs.
+    vectorField nbrData(nbrPatch.size());
+    nbrField.checkKappaField();
     {
-        // The stock coupled baffle with thicknessLayers/kappaLayers, as is.
-        scalarField nbrT(nbrField);
-        mpp.distribute(nbrT);
-        this->refValue() = nbrT;
-        f = hConstant_/(hConstant_ + myKDelta);
-        conductance_ = hConstant_;
+        const scalarField nbrT
+        (
+            hConstant_ > 0
+          ? scalarField(nbrField)
+          : nbrField.patchInternalField()()
+        );
+        const scalarField nbrK(nbrField.kappa(nbrField));
+        const scalarField nbrP(nbrField.interfacePressure());
+        forAll(nbrData, i)
+        {
+            nbrData[i] = vector(nbrT[i], nbrK[i], nbrP[i]);
+        }
     }
-    else
+    mpp.distribute(nbrData);
+    // distribute() is collective: decide on what every processor knows
+    // alike (not on this processor's, possibly empty, face count).
+    if (!haveNbrDeltaCoeffs_ || nbrMesh.changing())
     {
-        // What this side needs of the neighbour, in one exchange: its cell
-        // temperature, kappa and pressure per face, and (once, while the
-        // mesh does not change) its deltaCoeffs.
-        checkContactUnchanged();
-        vectorField nbrData(nbrPatch.size());
-        nbrField.checkKappaField();
-        {
-            const scalarField nbrT(nbrField.patchInternalField());
-            const scalarField nbrK(nbrField.kappa(nbrField));
-            const scalarField nbrP(nbrField.interfacePressure());
-            forAll(nbrData, i)
-            {
-                nbrData[i] = vector(nbrT[i], nbrK[i], nbrP[i]);
-            }
-        }
-        mpp.distribute(nbrData);
-        // distribute() is collective: decide on what every processor knows
-        // alike (not on this processor's, possibly empty, face count).
-        if (!haveNbrDeltaCoeffs_ || nbrMesh.changing())
-        {
-            nbrDeltaCoeffs_ = nbrPatch.deltaCoeffs();
-            mpp.distribute(nbrDeltaCoeffs_);
-            haveNbrDeltaCoeffs_ = true;
-        }
-        const scalarField nbrTcell(nbrData.component(vector::X));
-        const scalarField nbrKappa(nbrData.component(vector::Y));
-        const scalarField nbrKDelta(nbrKappa*nbrDeltaCoeffs_);
+        nbrDeltaCoeffs_ = nbrPatch.deltaCoeffs();
+        mpp.distribute(nbrDeltaCoeffs_);
+        haveNbrDeltaCoeffs_ = true;
+    }
+    const scalarField nbrT(nbrData.component(vector::X));
+    const scalarField nbrKappa(nbrData.component(vector::Y));
+    const scalarField nbrP(nbrData.component(vector::Z));
+    in.kappaNbr = nbrKappa.cdata();
+    in.deltaCoeffsNbr = nbrDeltaCoeffs_.cdata();
 
-        // Both sides' pressures, averaged: both sides get the same h.
-        // Each half first: 0.5*(a + b) overflows for pressures near the
-        // largest double (a floating-point trap), 0.5*a + 0.5*b does not.
-        contactPressure_ =
-            0.5*interfacePressure() + 0.5*nbrData.component(vector::Z);
+    const scalarField myP(interfacePressure());
+    try
+    {
+        if (hConstant_ > 0)
+        {
+            in.faceTemperatureNbr = nbrT.cdata();
+            roughContact::coupleConstant(hConstant_, in, coupling_);
+        }
+        else
+        {
+            checkContactUnchanged();
+            in.pressure = myP.cdata();
+            in.pressureNbr = nbrP.cdata();
+            in.cellTemperatureNbr = nbrT.cdata();
+            roughContact::couple(*interface_, in, couplingCache_, coupling_);
+        }
+    }
+    catch (const roughContact::FaceError& e)
+    {
+        const label facei = label(e.face());
+        RuntimeIOError
+            << who().c_str() << ": face " << facei << " at "
+            << patch().Cf()[facei] << ": pressure " << myP[facei]
+            << " Pa on this side and " << nbrP[facei] << " Pa on the"
+            << " neighbour's, kappa " << myKappa[facei] << " and "
+            << nbrKappa[facei] << " W/m/K, deltaCoeffs "
+            << myDeltaCoeffs[facei] << " and " << nbrDeltaCoeffs_[facei]
+            << " 1/m: " << e.what() << exit(FatalIOError);
+    }
+    catch (const std::exception& e)
+    {
+        RuntimeIOError
+            << who().c_str() << ": the interface coupling of the faces"
+            << (contactName_.empty() ? "" : " (contact '" + contactName_ + "')")
+            << " failed: " << e.what() << exit(FatalIOError);
+    }
 
-        try
-        {
-            interface_->faces
-            (
-                size(), contactPressure_.cdata(), myKappa.cdata(),
-                nbrKappa.cdata(), faceCache_, areaFraction_.data(),
-                conductance_.data()
-            );
-        }
-        catch (const roughContact::FaceError& e)
-        {
-            const label facei = label(e.face());
-            RuntimeIOError
-                << who().c_str() << ": face " << facei << " at "
-                << patch().Cf()[facei] << ": nominal pressure "
-                << contactPressure_[facei] << " Pa (mean of both sides), kappa "
-                << myKappa[facei] << " and " << nbrKappa[facei] << " W/m/K: "
-                << e.what() << exit(FatalIOError);
-        }
-        catch (const std::exception& e)
-        {
-            RuntimeIOError
-                << who().c_str() << ": entry 'contact " << contactName_
-                << "' (" << db().time().constant()/"thermalContactProperties"
-                << "): the contact conductance of the faces failed: "
-                << e.what() << exit(FatalIOError);
-        }
+    const roughContact::CouplingOutputs& out = coupling_;
+    this->refValue() = scalarField(UList<scalar>(coupling_.refValue.data(), size()));
+    this->valueFraction() =
+        scalarField(UList<scalar>(coupling_.valueFraction.data(), size()));
+    bool apart = false;
+    bool beyondTable = false;
+    forAll(conductance_, facei)
+    {
+        conductance_[facei] = roughContact::shownConductance
+        (
+            out.conductance[facei],
+            myKappa[facei]*myDeltaCoeffs[facei],
+            nbrKappa[facei]*nbrDeltaCoeffs_[facei]
+        );
+        areaFraction_[facei] = out.areaFraction[facei];
+        contactPressure_[facei] = out.pressure[facei];
+        contactState_[facei] = roughContact::contactStateCode(out.state[facei]);
+        gapConductance_[facei] =
+            out.gapConductance[facei] + out.radiativeConductance[facei];
+        apart = apart || out.state[facei] == roughContact::FaceState::apart;
+        beyondTable =
+            beyondTable
+         || out.state[facei] == roughContact::FaceState::beyondTable;
+    }
 
-        bool apart = false;
-        bool beyondTable = false;
-        const scalar tableEnd = interface_->tableEnd();
-        const scalar complete = interface_->completeContactPressure();
-        forAll(f, facei)
-        {
-            const scalar P = contactPressure_[facei];
-            try
-            {
-                f[facei] = roughContact::coupledValueFraction
-                (
-                    conductance_[facei], myKDelta[facei], nbrKDelta[facei]
-                );
-            }
-            catch (const std::exception& e)
-            {
-                RuntimeIOError
-                    << who().c_str() << ": face " << facei << " at "
-                    << patch().Cf()[facei] << ": h " << conductance_[facei]
-                    << " W/m^2/K, kappa*delta " << myKDelta[facei] << " and "
-                    << nbrKDelta[facei] << " W/m^2/K: " << e.what()
-                    << exit(FatalIOError);
-            }
-            apart = apart || P <= 0;
-            beyondTable = beyondTable || interface_->heldAtTableEnd(P);
-        }
-        this->refValue() = nbrTcell;
-
+    if (hConstant_ <= 0)
+    {
         if (returnReduce(apart, orOp<bool>()) && !warnedNoContact_)
         {
             Info<< "thermalContactResistance: " << who().c_str()
                 << ": zero or negative pressure on some faces: the surfaces"
-                << " do not touch there (h = 0, no heat crosses)" << endl;
+                << " do not touch there ("
+                << (interface_->hasGap()
+                    ? "only the gap's conductance remains)"
+                    : "h = 0, no heat crosses)") << endl;
             warnedNoContact_ = true;
         }
         if (returnReduce(beyondTable, orOp<bool>()) && !warnedBeyondTable_)
         {
             WarningInFunction
-                << who().c_str() << ": pressures above " << tableEnd
+                << who().c_str() << ": pressures above "
+                << interface_->tableEnd()
                 << " Pa, the end of the table of contact '" << contactName_
                 << "' (its maxPressure), and below complete contact ("
-                << complete << " Pa): h is held at the table's last value"
+                << interface_->completeContactPressure()
+                << " Pa): h is held at the table's last value"
                 << " there. Raise maxPressure." << endl;
             warnedBeyondTable_ = true;
         }

@@ -156,32 +156,6 @@ FaceContact ContactInterface::face(double P, double k1, double k2) const
     return {v.areaFraction, ks * v.conductancePerConductivity};
 }
 
-void ContactInterface::faces(std::size_t n, const double* P, const double* k1, const double* k2,
-                             FaceCache& cache, double* area, double* h) const
-{
-    if (cache.pressure.size() != n) {
-        // NaN never equals a pressure: every face is looked up on the first call.
-        cache.pressure.assign(n, std::numeric_limits<double>::quiet_NaN());
-        cache.areaFraction.assign(n, 0.0);
-        cache.conductancePerConductivity.assign(n, 0.0);
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-        try {
-            if (!(P[i] == cache.pressure[i])) {
-                requireFinite("pressure", P[i]);
-                const ContactTable::Values v = table_->values(P[i]);
-                cache.pressure[i] = P[i];
-                cache.areaFraction[i] = v.areaFraction;
-                cache.conductancePerConductivity[i] = v.conductancePerConductivity;
-            }
-            area[i] = cache.areaFraction[i];
-            h[i] = harmonicMeanConductivity(k1[i], k2[i]) * cache.conductancePerConductivity[i];
-        } catch (const ParameterError& e) {
-            throw FaceError(i, e);
-        }
-    }
-}
-
 const MultiscaleModel& ContactInterface::model() const
 {
     if (!model_) {

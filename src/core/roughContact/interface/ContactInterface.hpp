@@ -86,20 +86,6 @@ struct InterfaceSpec {
     std::size_t bemPointsPerDecade = 6;
 };
 
-/// Bad input at one face of a batch (ContactInterface::faces): what() reads
-/// "face I: PARAMETER: message".
-class FaceError : public ParameterError {
-public:
-    FaceError(std::size_t face, const ParameterError& why)
-        : ParameterError("face " + std::to_string(face), why.what()), face_(face)
-    {
-    }
-    std::size_t face() const noexcept { return face_; }
-
-private:
-    std::size_t face_;
-};
-
 /// What a boundary condition needs at one face.
 struct FaceContact {
     double areaFraction = 0.0; ///< A_r/A_n
@@ -121,20 +107,6 @@ public:
     /// contact) between solids of conductivities k1, k2 [W/(m K)] (finite, > 0), with
     /// k_s = 2 k1 k2/(k1 + k2) (physics.md §5). ParameterError on a NaN or infinite pressure or a bad k.
     FaceContact face(double P, double k1, double k2) const;
-    /// Per-face memory for faces(): each face's last pressure and its table values.
-    struct FaceCache {
-        std::vector<double> pressure;
-        std::vector<double> areaFraction;
-        std::vector<double> conductancePerConductivity;
-    };
-    /// face() for n faces: area[i] and h[i] from P[i], k1[i], k2[i]. A face whose pressure is
-    /// the one `cache` holds for it re-uses that table lookup (the common case: a pressure
-    /// constant in time, or several evaluations per time step); the results are the same as
-    /// face()'s, bit for bit. A cache of another size starts over. On bad input throws
-    /// FaceError naming the face.
-    void faces(std::size_t n, const double* P, const double* k1, const double* k2, FaceCache& cache,
-               double* area, double* h) const;
-
     /// The last pressure [Pa] the table resolves: above it and below complete contact the
     /// table returns its last values (a floor), so a boundary condition should say so.
     double tableEnd() const noexcept { return table_->pressures().back(); }
@@ -146,6 +118,9 @@ public:
         return table_->end() == ContactTable::End::maxPressure && P > tableEnd() && P < completeContactPressure();
     }
     double completeContactPressure() const noexcept { return table_->completeContactPressure(); }
+
+    /// True when the interface has a gap conductance (gas or radiation) beside the contact.
+    bool hasGap() const noexcept { return hasGap_; }
 
     const ContactTable& table() const noexcept { return *table_; }
     /// The conductance law of the table's h column.
@@ -167,6 +142,7 @@ private:
     std::string conductanceLaw_;
     std::string modelName_;
     std::string bemSurface_; ///< boundaryElement: what was solved (for summary())
+    bool hasGap_ = false;
 };
 
 } // namespace roughContact

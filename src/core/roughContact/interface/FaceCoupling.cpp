@@ -1,0 +1,159 @@
+#include "roughContact/interface/FaceCoupling.hpp"
+
+#include "roughContact/Error.hpp"
+#include "roughContact/interface/ContactInterface.hpp"
+#include "roughContact/thermal/ConstrictionConductance.hpp"
+#include "roughContact/thermal/InterfaceCoupling.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace roughContact {
+
+void CouplingOutputs::resize(std::size_t n)
+{
+    state.resize(n);
+    for (std::vector<double>* v : {&pressure, &areaFraction, &contactConductance, &gapConductance,
+                                   &radiativeConductance, &conductance, &valueFraction, &refValue}) {
+        v->resize(n);
+    }
+}
+
+namespace {
+
+void requireArrays(const CouplingInputs& in, bool contact)
+{
+    const bool ok = in.kappa && in.kappaNbr && in.deltaCoeffs && in.deltaCoeffsNbr &&
+                    (contact ? in.pressure && in.pressureNbr && in.cellTemperatureNbr : in.faceTemperatureNbr != nullptr);
+    if (in.n > 0 && !ok) {
+        throw ParameterError("interface coupling", "an input array the coupling needs is missing");
+    }
+}
+
+} // namespace
+
+void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCache& cache, CouplingOutputs& out)
+{
+    requireArrays(in, true);
+    const std::size_t n = in.n;
+    out.resize(n);
+    if (cache.pressure.size() != n) {
+        // NaN never equals a pressure: every face is looked up on the first call.
+        cache.pressure.assign(n, std::numeric_limits<double>::quiet_NaN());
+        cache.areaFraction.assign(n, 0.0);
+        cache.conductancePerConductivity.assign(n, 0.0);
+        cache.separation.assign(n, 0.0);
+    }
+    const ContactTable& table = iface.table();
+    const double complete = iface.completeContactPressure();
+    for (std::size_t i = 0; i < n; ++i) {
+        try {
+            const double P = requireFinite("nominal pressure", nominalPressure(in.pressure[i], in.pressureNbr[i]));
+            if (!(P == cache.pressure[i])) {
+                const ContactTable::Values v = table.values(P);
+                cache.pressure[i] = P;
+                cache.areaFraction[i] = v.areaFraction;
+                cache.conductancePerConductivity[i] = v.conductancePerConductivity;
+            }
+            const double k1 = requirePositive("kappa", in.kappa[i]);
+            const double k2 = requirePositive("neighbour kappa", in.kappaNbr[i]);
+            const double ks = harmonicMeanConductivity(k1, k2);
+            const double kDelta = k1 * requirePositive("deltaCoeffs", in.deltaCoeffs[i]);
+            const double kDeltaNbr = k2 * requirePositive("neighbour deltaCoeffs", in.deltaCoeffsNbr[i]);
+
+            FaceState state;
+            if (P <= 0.0) {
+                state = FaceState::apart;
+            } else if (P >= complete) {
+                state = FaceState::complete;
+            } else if (iface.heldAtTableEnd(P)) {
+                state = FaceState::beyondTable;
+            } else {
+                state = FaceState::partial;
+            }
+            const double hc = ks * cache.conductancePerConductivity[i];
+            const double hg = 0.0;
+            const double hr = 0.0;
+            const double h = hc + hg + hr;
+
+            out.state[i] = state;
+            out.pressure[i] = P;
+            out.areaFraction[i] = cache.areaFraction[i];
+            out.contactConductance[i] = hc;
+            out.gapConductance[i] = hg;
+            out.radiativeConductance[i] = hr;
+            out.conductance[i] = h;
+            out.valueFraction[i] = coupledValueFraction(h, kDelta, kDeltaNbr);
+            out.refValue[i] = in.cellTemperatureNbr[i];
+        } catch (const ParameterError& e) {
+            throw FaceError(i, e);
+        }
+    }
+}
+
+void coupleConstant(double h, const CouplingInputs& in, CouplingOutputs& out)
+{
+    requirePositive("h", h);
+    requireArrays(in, false);
+    const std::size_t n = in.n;
+    out.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        try {
+            const double kDelta =
+                requirePositive("kappa", in.kappa[i]) * requirePositive("deltaCoeffs", in.deltaCoeffs[i]);
+            out.state[i] = FaceState::partial;
+            out.pressure[i] = 0.0;
+            out.areaFraction[i] = 1.0;
+            out.contactConductance[i] = h;
+            out.gapConductance[i] = 0.0;
+            out.radiativeConductance[i] = 0.0;
+            out.conductance[i] = h;
+            // The stock turbulentTemperatureCoupledBaffleMixed with layers, as it writes it.
+            out.valueFraction[i] = h / (h + kDelta);
+            out.refValue[i] = in.faceTemperatureNbr[i];
+        } catch (const ParameterError& e) {
+            throw FaceError(i, e);
+        }
+    }
+}
+
+double shownConductance(double h, double kDelta, double kDeltaNbr)
+{
+    return std::isinf(h) ? effectiveConductance(kDelta, kDeltaNbr) : h;
+}
+
+void CouplingSummary::add(const CouplingOutputs& out, const double* magSf, const double* shown)
+{
+    const std::size_t n = out.state.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const double a = magSf[i];
+        area += a;
+        pressureArea += out.pressure[i] * a;
+        hAllArea += shown[i] * a;
+        switch (out.state[i]) {
+        case FaceState::apart:
+            ++apart;
+            continue;
+        case FaceState::complete:
+            ++complete;
+            break;
+        case FaceState::partial:
+        case FaceState::beyondTable: {
+            const bool first = partial + beyondTable == 0;
+            ++(out.state[i] == FaceState::partial ? partial : beyondTable);
+            hPartialMin = first ? shown[i] : std::min(hPartialMin, shown[i]);
+            hPartialMax = first ? shown[i] : std::max(hPartialMax, shown[i]);
+            partialArea += a;
+            hPartialArea += shown[i] * a;
+            areaFractionPartialArea += out.areaFraction[i] * a;
+            break;
+        }
+        }
+        touchingArea += a;
+        areaFractionArea += out.areaFraction[i] * a;
+        hTouchingArea += shown[i] * a;
+    }
+}
+
+} // namespace roughContact

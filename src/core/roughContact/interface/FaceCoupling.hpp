@@ -1,0 +1,143 @@
+// The per-face coupling of the two solids across a rough interface: everything the boundary
+// condition decides per face, in one call on plain arrays. The OpenFOAM glue only gathers the
+// arrays (its own side's and, exchanged once, the neighbour's) and hands the results to the
+// mixed condition; a bad face comes back as a FaceError naming it.
+//
+// Per face i, with this side "1" and the neighbour "2" (their values mapped onto this side's
+// faces):
+//   P        = nominalPressure(P1, P2)                       the rule for the two sides' pressures
+//   state    = apart (P <= 0), partial, beyondTable (held at the table's end, see
+//              ContactInterface::heldAtTableEnd) or complete (P >= complete contact)
+//   A_r/A_n, h_c = k_s (h_c/k_s)(P)  from the interface's table (ContactInterface), 0 apart,
+//              +inf at complete contact; k_s = 2 k1 k2/(k1 + k2)
+//   h        = h_c + h_g + h_r       (docs/theory.md "Interface conductance"), the gap terms
+//              (interface/InterfaceGap.hpp) where the interface has a gap, 0 otherwise; at
+//              complete contact there is no gap left and h = +inf
+//   w        = coupledValueFraction(h, kappa1 delta1, kappa2 delta2)  (thermal/InterfaceCoupling)
+//   refValue = the neighbour's cell temperature
+// so the face flux is (T_cell2 - T_cell1)/(1/(kappa1 delta1) + 1/h + 1/(kappa2 delta2)) on both
+// sides alike.
+//
+// The constant-h mode (a given h instead of a contact) is the stock coupled baffle with
+// thicknessLayers/kappaLayers, as that condition computes it: refValue = the neighbour's FACE
+// temperature, w = h/(h + kappa1 delta1). At convergence it is the same law (the face
+// temperatures jump by q/h); on the way it iterates differently from the contact mode. It is
+// kept as the stock computes it so that it reproduces that condition to round-off.
+#pragma once
+
+#include "roughContact/Error.hpp"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace roughContact {
+
+class ContactInterface;
+
+/// Bad input at one face of a batch (couple, coupleConstant): what() reads
+/// "face I: PARAMETER: message".
+class FaceError : public ParameterError {
+public:
+    FaceError(std::size_t face, const ParameterError& why)
+        : ParameterError("face " + std::to_string(face), why.what()), face_(face)
+    {
+    }
+    std::size_t face() const noexcept { return face_; }
+
+private:
+    std::size_t face_;
+};
+
+/// What a face is doing. The contactState field writes int(state) for the first three;
+/// beyondTable is written as partial (1): it is in partial contact, with h held at the table's
+/// last value (the boundary condition warns once).
+enum class FaceState : int { apart = 0, partial = 1, complete = 2, beyondTable = 3 };
+
+/// The written code of a state: 0 apart, 1 partial (and beyondTable), 2 complete.
+inline int contactStateCode(FaceState s) { return s == FaceState::beyondTable ? 1 : static_cast<int>(s); }
+
+/// The nominal pressure of a face from the pressures both sides give for it [Pa]: their mean,
+/// so that both sides compute the same h (a side that knows the pressure and one that does not,
+/// giving 0, see half of it). Each half first: 0.5 (a + b) overflows for pressures near the
+/// largest double, 0.5 a + 0.5 b does not.
+inline double nominalPressure(double P, double Pnbr) { return 0.5 * P + 0.5 * Pnbr; }
+
+/// The arrays of one side's faces (n each). The neighbour's are mapped onto this side's faces.
+struct CouplingInputs {
+    std::size_t n = 0;
+    const double* pressure = nullptr;           ///< this side's pressure [Pa] (contact mode)
+    const double* pressureNbr = nullptr;        ///< the neighbour's [Pa] (contact mode)
+    const double* faceTemperature = nullptr;    ///< [K] (the gap terms; may be null without gap)
+    const double* faceTemperatureNbr = nullptr; ///< [K] (the gap terms; the constant-h mode's refValue)
+    const double* cellTemperatureNbr = nullptr; ///< [K] the contact mode's refValue
+    const double* kappa = nullptr;              ///< [W/(m K)] at the face
+    const double* kappaNbr = nullptr;
+    const double* deltaCoeffs = nullptr;        ///< 1/(face to cell centre) [1/m]
+    const double* deltaCoeffsNbr = nullptr;
+    /// The separation of faces apart [m] (the condition's gap or gapField entry); null: the
+    /// interface's separation at first touch (InterfaceGap).
+    const double* gapWidth = nullptr;
+};
+
+/// Per-face results (n each). Every array is written.
+struct CouplingOutputs {
+    std::vector<FaceState> state;
+    std::vector<double> pressure;             ///< P [Pa]
+    std::vector<double> areaFraction;         ///< A_r/A_n
+    std::vector<double> contactConductance;   ///< h_c [W/(m^2 K)], +inf at complete contact
+    std::vector<double> gapConductance;       ///< h_g [W/(m^2 K)] (0 without a gas)
+    std::vector<double> radiativeConductance; ///< h_r [W/(m^2 K)] (0 without radiation)
+    std::vector<double> conductance;          ///< h = h_c + h_g + h_r, +inf at complete contact
+    std::vector<double> valueFraction;        ///< the mixed condition's w
+    std::vector<double> refValue;             ///< the mixed condition's reference temperature [K]
+
+    void resize(std::size_t n);
+};
+
+/// Per-face memory of couple(): each face's last pressure and its table values, re-used while
+/// the face's pressure holds (the common case: a pressure constant in time, or several
+/// evaluations per time step). The results are the same as without it, bit for bit. A cache of
+/// another size starts over.
+struct CouplingCache {
+    std::vector<double> pressure;
+    std::vector<double> areaFraction;
+    std::vector<double> conductancePerConductivity;
+    std::vector<double> separation;
+};
+
+/// The contact mode, as described above. FaceError (a ParameterError naming the face) on a
+/// non-finite pressure, a kappa or deltaCoeffs that is not finite and > 0, a bad temperature or
+/// gap width where the gap terms need them.
+void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCache& cache, CouplingOutputs& out);
+
+/// The constant-h mode (h finite and > 0): state partial, h_c = h, h_g = h_r = 0, area 1 (not
+/// meaningful), w = h/(h + kappa delta), refValue = the neighbour's face temperature.
+void coupleConstant(double h, const CouplingInputs& in, CouplingOutputs& out);
+
+/// The counts and area-weighted means of a set of faces (one processor's; a caller reduces
+/// the sums over processors and then calls finish()), what the boundary condition reports.
+struct CouplingSummary {
+    std::size_t apart = 0, partial = 0, complete = 0, beyondTable = 0;
+    double area = 0.0;                 ///< sum of face areas [m^2]
+    double touchingArea = 0.0;         ///< of faces partial, beyondTable or complete
+    double partialArea = 0.0;          ///< of faces partial or beyondTable
+    double pressureArea = 0.0;         ///< sum P a
+    double areaFractionArea = 0.0;     ///< sum (A_r/A_n) a over touching faces
+    double areaFractionPartialArea = 0.0; ///< sum (A_r/A_n) a over faces in partial contact
+    double hTouchingArea = 0.0;        ///< sum h_shown a over touching faces
+    double hPartialArea = 0.0;         ///< sum h_shown a over faces in partial contact
+    double hAllArea = 0.0;             ///< sum h_shown a over all faces
+    double hPartialMin = 0.0, hPartialMax = 0.0; ///< of h over faces in partial contact
+    /// Adds faces with areas `magSf`; h_shown is shownConductance(...).
+    void add(const CouplingOutputs& out, const double* magSf, const double* shownConductance);
+};
+
+/// What the contactConductance field shows for a face: h where finite; at complete contact
+/// (h infinite: the interface adds no resistance) the conductance of the two half-cells beside
+/// the face, 1/(1/(kappa1 delta1) + 1/(kappa2 delta2)): the most the mesh passes there per
+/// kelvin, a finite number of the same order as its neighbours' so that averages stay
+/// meaningful. contactState tells such a face apart.
+double shownConductance(double h, double kDelta, double kDeltaNbr);
+
+} // namespace roughContact

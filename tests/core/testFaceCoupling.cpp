@@ -1,0 +1,342 @@
+// The per-face coupling the boundary condition calls once per evaluation (interface/FaceCoupling):
+// the rule for the two sides' pressures, the face states, the same numbers as the interface's
+// own face() and the mixed-condition arithmetic (bit for bit, cached or not), conservation
+// across the two sides, the constant-h mode's stock arithmetic, the finite conductance shown
+// for complete contact, the summary's counts and sums, and bad input named by its face.
+#include "roughContact/Error.hpp"
+#include "roughContact/interface/ContactInterface.hpp"
+#include "roughContact/interface/FaceCoupling.hpp"
+#include "roughContact/thermal/ConstrictionConductance.hpp"
+#include "roughContact/thermal/InterfaceCoupling.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace roughContact;
+
+namespace {
+const std::string standin = std::string(ROUGHCONTACT_SOURCE_DIR) + "/data/standin-2454.csv";
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+InterfaceSpec steelOnCopper()
+{
+    InterfaceSpec spec;
+    SurfaceSpec s;
+    s.kind = SurfaceSpec::Kind::profile;
+    s.file = standin;
+    spec.surfaces = {s};
+    spec.side1 = Material{179.52e9, 0.32, 0.2e9};
+    spec.side2 = Material{117e9, 0.34, 0.07e9};
+    spec.model = "jacksonGreen";
+    return spec;
+}
+
+const ContactInterface& interface()
+{
+    static const ContactInterface ci(steelOnCopper());
+    return ci;
+}
+
+/// One side's arrays, owned, and the inputs pointing into them.
+struct Side {
+    std::vector<double> P, Pnbr, Tf, TfNbr, TcNbr, k, kNbr, d, dNbr;
+    explicit Side(std::size_t n)
+        : P(n), Pnbr(n), Tf(n, 300.0), TfNbr(n, 300.0), TcNbr(n, 300.0), k(n, 50.0), kNbr(n, 50.0), d(n, 1e3),
+          dNbr(n, 1e3)
+    {
+    }
+    CouplingInputs inputs() const
+    {
+        CouplingInputs in;
+        in.n = P.size();
+        in.pressure = P.data();
+        in.pressureNbr = Pnbr.data();
+        in.faceTemperature = Tf.data();
+        in.faceTemperatureNbr = TfNbr.data();
+        in.cellTemperatureNbr = TcNbr.data();
+        in.kappa = k.data();
+        in.kappaNbr = kNbr.data();
+        in.deltaCoeffs = d.data();
+        in.deltaCoeffsNbr = dNbr.data();
+        return in;
+    }
+    /// The neighbour's view of the same faces.
+    Side mirrored(const std::vector<double>& Tcell) const
+    {
+        Side o(P.size());
+        o.P = Pnbr;
+        o.Pnbr = P;
+        o.Tf = TfNbr;
+        o.TfNbr = Tf;
+        o.TcNbr = Tcell;
+        o.k = kNbr;
+        o.kNbr = k;
+        o.d = dNbr;
+        o.dNbr = d;
+        return o;
+    }
+};
+} // namespace
+
+// The rule: the nominal pressure of a face is the mean of the two sides' (so both sides get
+// the same h). A change of the rule (one side's pressure, the larger one) fails here.
+TEST(FaceCoupling, ThePressureOfAFaceIsTheMeanOfBothSides)
+{
+    EXPECT_EQ(nominalPressure(2e6, 0.0), 1e6);
+    EXPECT_EQ(nominalPressure(0.0, 2e6), 1e6);
+    EXPECT_EQ(nominalPressure(3e6, 1e6), 2e6);
+    EXPECT_EQ(nominalPressure(-1e6, 1e6), 0.0);
+    // Near the largest double the halves are taken first: no overflow (a trap in the tests).
+    const double big = std::numeric_limits<double>::max();
+    EXPECT_EQ(nominalPressure(big, big), big);
+
+    Side s(3);
+    s.P = {2e6, 0.0, 3e6};
+    s.Pnbr = {0.0, 2e6, 1e6};
+    CouplingCache cache;
+    CouplingOutputs out;
+    couple(interface(), s.inputs(), cache, out);
+    EXPECT_EQ(out.pressure[0], 1e6);
+    EXPECT_EQ(out.pressure[1], 1e6);
+    EXPECT_EQ(out.pressure[2], 2e6);
+    const double ks = harmonicMeanConductivity(50.0, 50.0);
+    EXPECT_EQ(out.contactConductance[0], ks * interface().conductancePerConductivity(1e6));
+    EXPECT_EQ(out.contactConductance[1], out.contactConductance[0]); // the two sides agree
+    EXPECT_EQ(out.contactConductance[2], ks * interface().conductancePerConductivity(2e6));
+    EXPECT_NE(out.contactConductance[2], ks * interface().conductancePerConductivity(3e6));
+}
+
+// couple() gives what face() and coupledValueFraction() give, bit for bit, whether a face's
+// table lookup is fresh or re-used (pressures kept, changed, moved apart and into complete
+// contact between calls; conductivities are never cached).
+TEST(FaceCoupling, BatchWithCacheEqualsFaceByFace)
+{
+    const ContactInterface& ci = interface();
+    std::size_t n = 500;
+    std::mt19937_64 gen(3);
+    std::uniform_real_distribution<double> logP(3.0, 9.5); // 1 kPa .. 3 GPa: beyond complete
+    std::uniform_real_distribution<double> kU(10.0, 400.0);
+    std::uniform_real_distribution<double> dU(1e2, 1e4);
+    std::uniform_real_distribution<double> TU(280.0, 420.0);
+    Side s(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        s.P[i] = std::pow(10.0, logP(gen));
+        s.Pnbr[i] = std::pow(10.0, logP(gen));
+        s.k[i] = kU(gen);
+        s.kNbr[i] = kU(gen);
+        s.d[i] = dU(gen);
+        s.dNbr[i] = dU(gen);
+        s.TcNbr[i] = TU(gen);
+    }
+    s.P[0] = s.Pnbr[0] = 0.0;
+    s.P[1] = s.Pnbr[1] = -3e5;
+    CouplingCache cache;
+    CouplingOutputs out;
+    const auto check = [&](const char* when) {
+        couple(ci, s.inputs(), cache, out);
+        ASSERT_EQ(out.state.size(), s.P.size());
+        for (std::size_t i = 0; i < s.P.size(); ++i) {
+            const double P = 0.5 * s.P[i] + 0.5 * s.Pnbr[i];
+            const FaceContact c = ci.face(P, s.k[i], s.kNbr[i]);
+            ASSERT_EQ(out.areaFraction[i], c.areaFraction) << when << ", face " << i;
+            ASSERT_EQ(out.contactConductance[i], c.conductance) << when << ", face " << i;
+            ASSERT_EQ(out.conductance[i], c.conductance) << when << ", face " << i; // no gap
+            ASSERT_EQ(out.gapConductance[i], 0.0);
+            ASSERT_EQ(out.radiativeConductance[i], 0.0);
+            ASSERT_EQ(out.valueFraction[i],
+                      coupledValueFraction(c.conductance, s.k[i] * s.d[i], s.kNbr[i] * s.dNbr[i]))
+                << when << ", face " << i;
+            ASSERT_EQ(out.refValue[i], s.TcNbr[i]);
+            const FaceState expected = P <= 0                              ? FaceState::apart
+                                       : P >= ci.completeContactPressure() ? FaceState::complete
+                                                                           : FaceState::partial;
+            ASSERT_EQ(out.state[i], expected) << when << ", face " << i << ", P " << P;
+        }
+    };
+    check("first call");
+    check("everything cached");
+    for (std::size_t i = 0; i < n; i += 3) {
+        s.P[i] *= 1.5;     // some pressures change,
+        s.k[i + 1] = 7;    // some conductivities (never cached),
+        s.dNbr[i + 2] = 9; // and cell distances
+    }
+    s.P[5] = s.Pnbr[5] = 0.0;  // a face comes apart,
+    s.P[6] = s.Pnbr[6] = 1e12; // one is pressed into complete contact
+    check("after changes");
+    for (std::vector<double>* v : {&s.P, &s.Pnbr, &s.k, &s.kNbr, &s.d, &s.dNbr, &s.TcNbr, &s.Tf, &s.TfNbr}) {
+        v->resize(n - 10); // a cache of another size starts over
+    }
+    n -= 10;
+    check("fewer faces");
+    // Both states appear: the test covers them.
+    EXPECT_EQ(out.state[0], FaceState::apart);
+    EXPECT_EQ(out.state[6], FaceState::complete);
+    EXPECT_EQ(out.conductance[6], inf);
+    EXPECT_EQ(out.valueFraction[0], 0.0); // apart: adiabatic
+}
+
+// Faces held at the end of a table that maxPressure cut short are beyondTable (written as 1).
+TEST(FaceCoupling, BeyondTheTableIsItsOwnState)
+{
+    InterfaceSpec spec = steelOnCopper();
+    spec.maxPressure = 1e6;
+    const ContactInterface cut(spec);
+    ASSERT_LT(cut.tableEnd(), cut.completeContactPressure());
+    Side s(3);
+    s.P = {0.5e6, 4e6, 1e13};
+    s.Pnbr = s.P;
+    CouplingCache cache;
+    CouplingOutputs out;
+    couple(cut, s.inputs(), cache, out);
+    EXPECT_EQ(out.state[0], FaceState::partial);
+    EXPECT_EQ(out.state[1], FaceState::beyondTable);
+    EXPECT_EQ(out.state[2], FaceState::complete);
+    EXPECT_EQ(contactStateCode(FaceState::apart), 0);
+    EXPECT_EQ(contactStateCode(FaceState::partial), 1);
+    EXPECT_EQ(contactStateCode(FaceState::beyondTable), 1);
+    EXPECT_EQ(contactStateCode(FaceState::complete), 2);
+}
+
+// Both sides, each coupled from its own view, carry the same flux through every face: the
+// series formula (T_c2 - T_c1)/(1/kd1 + 1/h + 1/kd2). Tolerance as testInterfaceCoupling:
+// 1e-12 relative for the formula's roundings plus 8 ulps of 450 K times kDelta.
+TEST(FaceCoupling, BothSidesCarryTheSameFlux)
+{
+    const std::size_t n = 200;
+    std::mt19937_64 gen(11);
+    std::uniform_real_distribution<double> logP(4.0, 8.0);
+    std::uniform_real_distribution<double> TU(280.0, 420.0);
+    Side a(n);
+    std::vector<double> T1(n), T2(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        a.P[i] = std::pow(10.0, logP(gen));
+        a.Pnbr[i] = std::pow(10.0, logP(gen));
+        a.k[i] = 15.0 + i % 7;
+        a.kNbr[i] = 380.0 - i % 5;
+        a.d[i] = 2e3;
+        a.dNbr[i] = 5e2 + i;
+        T1[i] = TU(gen);
+        T2[i] = TU(gen);
+    }
+    a.TcNbr = T2;
+    const Side b = a.mirrored(T1);
+    CouplingCache ca, cb;
+    CouplingOutputs oa, ob;
+    couple(interface(), a.inputs(), ca, oa);
+    couple(interface(), b.inputs(), cb, ob);
+    const double ulp = std::numeric_limits<double>::epsilon() * 450.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        ASSERT_EQ(oa.conductance[i], ob.conductance[i]) << "face " << i;
+        const double kd1 = a.k[i] * a.d[i];
+        const double kd2 = a.kNbr[i] * a.dNbr[i];
+        const double h = oa.conductance[i];
+        ASSERT_GT(h, 0.0);
+        const double fluxA = kd1 * (mixedFaceTemperature(oa.valueFraction[i], T1[i], oa.refValue[i]) - T1[i]);
+        const double fluxB = kd2 * (mixedFaceTemperature(ob.valueFraction[i], T2[i], ob.refValue[i]) - T2[i]);
+        const double series = (T2[i] - T1[i]) / (1 / kd1 + 1 / h + 1 / kd2);
+        ASSERT_NEAR(fluxA, series, 1e-12 * std::abs(series) + 8 * ulp * kd1) << "face " << i;
+        ASSERT_NEAR(fluxB, -series, 1e-12 * std::abs(series) + 8 * ulp * kd2) << "face " << i;
+    }
+}
+
+// The constant-h mode is the stock turbulentTemperatureCoupledBaffleMixed with layers:
+// refValue = the neighbour's face temperature, w = h/(h + kappa delta).
+TEST(FaceCoupling, ConstantHIsTheStockCoupledBaffle)
+{
+    Side s(4);
+    s.k = {1.0, 15.0, 200.0, 400.0};
+    s.d = {10.0, 1e3, 2e4, 5e5};
+    s.TfNbr = {301.0, 302.5, 350.0, 299.0};
+    s.TcNbr = {1.0, 2.0, 3.0, 4.0}; // not used by the constant mode
+    CouplingOutputs out;
+    const double h = 2500.0;
+    coupleConstant(h, s.inputs(), out);
+    for (std::size_t i = 0; i < 4; ++i) {
+        EXPECT_EQ(out.valueFraction[i], h / (h + s.k[i] * s.d[i]));
+        EXPECT_EQ(out.refValue[i], s.TfNbr[i]);
+        EXPECT_EQ(out.conductance[i], h);
+        EXPECT_EQ(out.state[i], FaceState::partial);
+    }
+    EXPECT_EQ(out.valueFraction[0], 2500.0 / 2510.0);
+    EXPECT_THROW(coupleConstant(0.0, s.inputs(), out), ParameterError);
+    EXPECT_THROW(coupleConstant(inf, s.inputs(), out), ParameterError);
+}
+
+// Complete contact shows the two half-cells' conductance, finite; any other h as it is.
+TEST(FaceCoupling, CompleteContactShowsTheHalfCellsConductance)
+{
+    EXPECT_EQ(shownConductance(inf, 3e4, 6e4), 2e4); // 1/(1/3e4 + 1/6e4)
+    EXPECT_EQ(shownConductance(1234.5, 3e4, 6e4), 1234.5);
+    EXPECT_EQ(shownConductance(0.0, 3e4, 6e4), 0.0);
+}
+
+// The summary's counts and area-weighted sums, by hand on four faces.
+TEST(FaceCoupling, SummaryCountsAndWeighsTheFaces)
+{
+    CouplingOutputs out;
+    out.resize(4);
+    out.state = {FaceState::apart, FaceState::partial, FaceState::beyondTable, FaceState::complete};
+    out.pressure = {0.0, 1e6, 3e6, 5e8};
+    out.areaFraction = {0.0, 0.01, 0.02, 1.0};
+    const std::vector<double> magSf = {1.0, 2.0, 3.0, 4.0};
+    const std::vector<double> shown = {0.0, 1e4, 3e4, 2e5};
+    CouplingSummary s;
+    s.add(out, magSf.data(), shown.data());
+    EXPECT_EQ(s.apart, 1U);
+    EXPECT_EQ(s.partial, 1U);
+    EXPECT_EQ(s.beyondTable, 1U);
+    EXPECT_EQ(s.complete, 1U);
+    EXPECT_EQ(s.area, 10.0);
+    EXPECT_EQ(s.touchingArea, 9.0);
+    EXPECT_EQ(s.partialArea, 5.0);
+    EXPECT_EQ(s.pressureArea, 2e6 + 9e6 + 2e9);
+    EXPECT_DOUBLE_EQ(s.areaFractionArea, 0.02 + 0.06 + 4.0);
+    EXPECT_DOUBLE_EQ(s.areaFractionPartialArea, 0.02 + 0.06);
+    EXPECT_EQ(s.hTouchingArea, 2e4 + 9e4 + 8e5);
+    EXPECT_EQ(s.hPartialArea, 2e4 + 9e4);
+    EXPECT_EQ(s.hAllArea, 2e4 + 9e4 + 8e5);
+    EXPECT_EQ(s.hPartialMin, 1e4);
+    EXPECT_EQ(s.hPartialMax, 3e4);
+}
+
+// Bad input comes back as a FaceError naming the face and what is wrong.
+TEST(FaceCoupling, BadInputNamesTheFace)
+{
+    Side s(50);
+    std::fill(s.P.begin(), s.P.end(), 1e6);
+    s.Pnbr = s.P;
+    CouplingCache cache;
+    CouplingOutputs out;
+    const auto fails = [&](std::size_t face, const std::string& what) {
+        try {
+            couple(interface(), s.inputs(), cache, out);
+            ADD_FAILURE() << "accepted: " << what;
+        } catch (const FaceError& e) {
+            EXPECT_EQ(e.face(), face);
+            EXPECT_NE(std::string(e.what()).find("face " + std::to_string(face) + ": " + what), std::string::npos)
+                << e.what();
+        }
+    };
+    s.P[17] = std::nan("");
+    fails(17, "nominal pressure");
+    s.P[17] = 1e6;
+    s.Pnbr[40] = HUGE_VAL;
+    fails(40, "nominal pressure");
+    s.Pnbr[40] = 1e6;
+    s.kNbr[41] = -1.0;
+    fails(41, "neighbour kappa");
+    s.kNbr[41] = 50.0;
+    s.d[3] = 0.0;
+    fails(3, "deltaCoeffs");
+    s.d[3] = 1e3;
+    couple(interface(), s.inputs(), cache, out); // all good again
+
+    CouplingInputs missing = s.inputs();
+    missing.cellTemperatureNbr = nullptr;
+    EXPECT_THROW(couple(interface(), missing, cache, out), ParameterError);
+}
