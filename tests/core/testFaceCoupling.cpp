@@ -283,6 +283,8 @@ TEST(FaceCoupling, SummaryCountsAndWeighsTheFaces)
     out.state = {FaceState::apart, FaceState::partial, FaceState::beyondTable, FaceState::complete};
     out.pressure = {0.0, 1e6, 3e6, 5e8};
     out.areaFraction = {0.0, 0.01, 0.02, 1.0};
+    out.gapConductance = {10.0, 20.0, 30.0, 0.0};
+    out.radiativeConductance = {1.0, 2.0, 3.0, 0.0};
     const std::vector<double> magSf = {1.0, 2.0, 3.0, 4.0};
     const std::vector<double> shown = {0.0, 1e4, 3e4, 2e5};
     CouplingSummary s;
@@ -300,6 +302,7 @@ TEST(FaceCoupling, SummaryCountsAndWeighsTheFaces)
     EXPECT_EQ(s.hTouchingArea, 2e4 + 9e4 + 8e5);
     EXPECT_EQ(s.hPartialArea, 2e4 + 9e4);
     EXPECT_EQ(s.hAllArea, 2e4 + 9e4 + 8e5);
+    EXPECT_EQ(s.gapAllArea, 11.0 + 44.0 + 99.0);
     EXPECT_EQ(s.hPartialMin, 1e4);
     EXPECT_EQ(s.hPartialMax, 3e4);
 }

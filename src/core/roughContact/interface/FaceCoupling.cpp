@@ -131,6 +131,7 @@ void CouplingSummary::add(const CouplingOutputs& out, const double* magSf, const
         area += a;
         pressureArea += out.pressure[i] * a;
         hAllArea += shown[i] * a;
+        gapAllArea += (out.gapConductance[i] + out.radiativeConductance[i]) * a;
         switch (out.state[i]) {
         case FaceState::apart:
             ++apart;

@@ -128,6 +128,7 @@ struct CouplingSummary {
     double hTouchingArea = 0.0;        ///< sum h_shown a over touching faces
     double hPartialArea = 0.0;         ///< sum h_shown a over faces in partial contact
     double hAllArea = 0.0;             ///< sum h_shown a over all faces
+    double gapAllArea = 0.0;           ///< sum (h_g + h_r) a over all faces
     double hPartialMin = 0.0, hPartialMax = 0.0; ///< of h over faces in partial contact
     /// Adds faces with areas `magSf`; h_shown is shownConductance(...).
     void add(const CouplingOutputs& out, const double* magSf, const double* shownConductance);

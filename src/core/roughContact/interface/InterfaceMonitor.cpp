@@ -1,0 +1,69 @@
+#include "roughContact/interface/InterfaceMonitor.hpp"
+
+#include "roughContact/interface/ContactInterface.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+namespace roughContact {
+
+namespace {
+
+/// %.10g: every number to ten digits, whatever the stream's state.
+std::string number(double x)
+{
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.10g", x);
+    return buffer;
+}
+
+/// sum/area, or empty where no face counts (area 0).
+std::string mean(double sum, double area)
+{
+    return area > 0.0 ? number(sum / area) : std::string();
+}
+
+} // namespace
+
+std::string interfaceSeriesHeader(const std::string& description, const std::string& side1,
+                                  const std::string& side2)
+{
+    std::ostringstream os;
+    os << "# thermalContactResistance: " << description << "\n"
+       << "# one row per write time; means are area-weighted; h in W/(m^2 K); an empty field: no face to average\n"
+       << "time,Q_from_" << side1 << "_W,Q_into_" << side2
+       << "_W,h_mean_touching,h_mean_all,h_gap_mean_all,P_mean_Pa,Ar_An_mean_touching,faces_apart,faces_partial,"
+          "faces_complete\n";
+    return os.str();
+}
+
+std::string interfaceSeriesRow(double time, double heatFromSide1, double heatIntoSide2, const CouplingSummary& s)
+{
+    std::ostringstream os;
+    os << number(time) << ',' << number(heatFromSide1) << ',' << number(heatIntoSide2) << ','
+       << mean(s.hTouchingArea, s.touchingArea) << ',' << mean(s.hAllArea, s.area) << ','
+       << mean(s.gapAllArea, s.area) << ',' << mean(s.pressureArea, s.area) << ','
+       << mean(s.areaFractionArea, s.touchingArea) << ',' << s.apart << ',' << s.partial + s.beyondTable << ','
+       << s.complete << '\n';
+    return os.str();
+}
+
+void writeInterfaceTable(std::ostream& os, const ContactInterface& iface, const std::string& description)
+{
+    const ContactTable& t = iface.table();
+    os << "# thermalContactResistance: the pressure table of " << description << "\n"
+       << "# " << iface.summary() << "\n"
+       << "# h_c = k_s * hc_per_ks_per_m, k_s = 2 k1 k2/(k1 + k2); below the first pressure the first interval's "
+          "power law, above the last its values";
+    if (t.completeContactPressure() < std::numeric_limits<double>::infinity()) {
+        os << ", complete contact (h infinite) from " << number(t.completeContactPressure()) << " Pa";
+    }
+    os << "\nP_Pa,Ar_An,hc_per_ks_per_m\n";
+    const auto& P = t.pressures();
+    for (std::size_t i = 0; i < P.size(); ++i) {
+        os << number(P[i]) << ',' << number(t.areaFractions()[i]) << ','
+           << number(t.conductancesPerConductivity()[i]) << '\n';
+    }
+}
+
+} // namespace roughContact
