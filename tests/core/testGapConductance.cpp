@@ -302,3 +302,44 @@ TEST(GapConductance, StefanBoltzmannConstant)
     EXPECT_NEAR(stefanBoltzmann, 2.0 * std::pow(pi, 5) * std::pow(kB, 4) / (15.0 * h * h * h * c * c),
                 1e-9 * stefanBoltzmann);
 }
+
+TEST(GapConductance, FiniteAtTheCornersOfTheAcceptedRanges)
+{
+    // Every accepted extreme at once, with the traps on (overflow, invalid, division by zero): each
+    // result finite and > 0 (an underflow towards 0 is allowed, as OpenFOAM does not trap it).
+    for (double k : {minimumGasConductivity, maximumGasConductivity}) {
+        for (double n : {1e-300, maximumConductivityExponent}) {
+            for (double Pr : {minimumPrandtl, maximumPrandtl}) {
+                for (double a : {minimumAccommodation, 1.0}) {
+                    for (double Pg : {1e-10, 1e9}) {
+                        GasGapSpec spec;
+                        spec.gas = {"user", k, n, 1e-2, 10.0, Pr, 1e3, 1e-10, a};
+                        spec.pressure = Pg;
+                        const GasGap gap(spec);
+                        for (double T : {1e-2, 1e5}) {
+                            for (double Y : {0.0, 1e3}) {
+                                const double h = gap.conductance(Y, T);
+                                EXPECT_TRUE(std::isfinite(h) && h >= 0.0) << h;
+                            }
+                            EXPECT_TRUE(std::isfinite(gap.rarefaction(T)));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    for (double T1 : {1e-2, 1e5}) {
+        for (double e : {1e-320, 1.0}) {
+            const double h = radiativeConductance(T1, 1e5, e, 1.0);
+            EXPECT_TRUE(std::isfinite(h) && h >= 0.0) << h;
+        }
+    }
+    for (double sigma : {1e-15, 1e3}) {
+        for (double P : {1e-320, 1.0, 1e308}) {
+            for (double Hc : {1e-320, 1.0, 1e308}) {
+                EXPECT_TRUE(std::isfinite(gapSeparationCorrelation(P, sigma, Hc)));
+                EXPECT_TRUE(std::isfinite(gapSeparationGaussian(P, sigma, Hc)));
+            }
+        }
+    }
+}
