@@ -2,9 +2,11 @@
 // surfaces, beside the solid spots (Mikic.hpp, CooperMikicYovanovich.hpp): the joint conductance
 // is h_j = h_c + h_g + h_r.
 //
-// Gas gap (the model of Yovanovich's group: Song & Yovanovich; Bahrami, Culham & Yovanovich,
-// J. Thermophys. Heat Transfer 18 (2004); Yovanovich, IEEE Trans. Comp. Packag. Technol. 28 (2005)
-// 182-206, where it is written for the microgap of conforming rough surfaces):
+// Gas gap (the model of Yovanovich's group: Bahrami, Yovanovich & Culham, "Thermal joint
+// resistances of conforming rough surfaces with gas-filled gaps" and "... of nonconforming rough
+// surfaces with gas-filled gaps", J. Thermophys. Heat Transfer 18(3) (2004); Yovanovich, "Four
+// decades of research on thermal contact, gap, and joint resistance in microelectronics", IEEE
+// Trans. Comp. Packag. Technol. 28(2) (2005) 182-206):
 //
 //   h_g = k_g(T) / (Y + M)                                   parallel plates Y apart with a
 //                                                            temperature jump at each face
@@ -17,9 +19,11 @@
 // form of M against two independent implementations found by code search (chaos-polymtl/lethe,
 // DEM heat transfer: gas parameter 2 (2-a)/a 2gamma/(1+gamma) Lambda/Pr for a1 = a2 = a; and a
 // CFD code's temperature-slip wall, ((2-a)/a) 2gamma/(gamma+1) Lambda/Pr per face). The papers
-// themselves could not be read here: no equation numbers are given, and h_g = k_g/(Y+M) as the
-// gap law is as the brief and the cited reviews' abstracts describe it (one conductance over all
-// Knudsen numbers), NOT VERIFIED against their text.
+// themselves could not be read here (only their first pages: titles, abstracts, nomenclature
+// with "gas parameter M", "mean surface plane separation Y", "thermal accommodation coefficient",
+// "ratio of gas specific heats", "mean free path", Pr): no equation numbers are given, and
+// h_g = k_g/(Y + M) as the gap law, one relation from the continuum to the free-molecular regime
+// as the abstracts describe, is NOT VERIFIED against their text.
 //
 // Mean-plane separation Y of a plastically deformed Gaussian rough contact (the model of Cooper,
 // Mikic & Yovanovich 1969: the real contact fraction is A_r/A_a = P/H_c = (1/2) erfc(Y/(sqrt(2)
