@@ -66,6 +66,16 @@ constexpr double bytesPerLevel = 200.0;
 /// the model.
 constexpr std::size_t maximumGridPoints = 4096 * 4096;
 
+/// Temperatures [K] of a gas gap or a radiating surface: from 0.01 K (below any gas in use) to
+/// 1e5 K (far above any solid's melting point). Within them T^3 and (T/T0)^n (n <= 2) stay far
+/// from overflow.
+constexpr double minimumTemperature = 1e-2;
+constexpr double maximumTemperature = 1e5;
+/// Gas pressures [Pa] of a gas gap: from 1e-10 Pa (ultra-high vacuum; the free-molecular limit
+/// long before) to 1e9 Pa (10 kbar, beyond any gas-filled joint). Also a gas's reference pressure.
+constexpr double minimumGasPressure = 1e-10;
+constexpr double maximumGasPressure = 1e9;
+
 /// Throws ParameterError(what, ...) unless value lies in [lo, hi] (and is finite); `unit`
 /// follows the numbers in the message ("m", "Pa", "" for none).
 double requireInRange(const std::string& what, double value, double lo, double hi, const char* unit);
