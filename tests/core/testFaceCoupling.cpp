@@ -343,3 +343,140 @@ TEST(FaceCoupling, BadInputNamesTheFace)
     missing.cellTemperatureNbr = nullptr;
     EXPECT_THROW(couple(interface(), missing, cache, out), ParameterError);
 }
+
+namespace {
+InterfaceSpec withAirAndRadiation()
+{
+    InterfaceSpec spec = steelOnCopper();
+    GapSpec gap;
+    gap.gas = GasGapSpec{gasByName("air"), 101325.0, 0.0, 0.0};
+    gap.emissivity1 = 0.5;
+    gap.emissivity2 = 0.5;
+    spec.gap = gap;
+    return spec;
+}
+} // namespace
+
+// With a gap every face not in complete contact adds h_g + h_r. Independent numbers for air at
+// 300 K and 1 atm (docs: thermal/Gas.hpp's table): k_g = 0.0262 W/(m K); M = [2 (2 - 0.9)/0.9]
+// [2 (1.4)/2.4] 61.52 nm/0.712 = 2.444 x 1.1667 x 86.40 nm = 246.4 nm; a face apart at a gap
+// width of 10 um: h_g = 0.0262/10.2464e-6 = 2557.0 W/(m^2 K). Two grey plates at 300 K with
+// e = 0.5: h_r = 4 sigma_SB T^3/3 = 2.0413 W/(m^2 K). Tolerance 1e-3 relative: the constants are
+// written here to four or five digits.
+TEST(FaceCoupling, TheGapAddsGasAndRadiation)
+{
+    const ContactInterface ci(withAirAndRadiation());
+    ASSERT_TRUE(ci.hasGap());
+    Side s(4);
+    s.P = {0.0, 1e6, 1e13, -5e5};
+    s.Pnbr = s.P;
+    std::vector<double> width = {10e-6, 0.0, 0.0, 4e-6}, widthNbr = {10e-6, 0.0, 0.0, 6e-6};
+    CouplingInputs in = s.inputs();
+    in.gapWidth = width.data();
+    in.gapWidthNbr = widthNbr.data();
+    CouplingCache cache;
+    CouplingOutputs out;
+    couple(ci, in, cache, out);
+
+    EXPECT_EQ(out.state[0], FaceState::apart);
+    EXPECT_NEAR(out.gapConductance[0], 2557.0, 1e-3 * 2557.0);
+    EXPECT_NEAR(out.radiativeConductance[0], 2.0413, 1e-3 * 2.0413);
+    EXPECT_EQ(out.contactConductance[0], 0.0);
+    EXPECT_EQ(out.conductance[0], out.gapConductance[0] + out.radiativeConductance[0]);
+    EXPECT_EQ(out.valueFraction[0], coupledValueFraction(out.conductance[0], 5e4, 5e4));
+    // The mean of both sides' widths: 5 um.
+    EXPECT_NEAR(out.gapConductance[3], 0.0262 / (5e-6 + 246.4e-9), 1e-3 * 0.0262 / (5e-6 + 246.4e-9));
+
+    // A touching face: Y from the correlation of the surfaces' sigma and P/H_c, H_c = 2.84 S_y of
+    // copper (the softer side): the same h_c as without a gap, plus the gap's terms.
+    EXPECT_EQ(out.state[1], FaceState::partial);
+    const double ks = harmonicMeanConductivity(50.0, 50.0);
+    EXPECT_EQ(out.contactConductance[1], ks * ci.conductancePerConductivity(1e6));
+    const double Y = ci.gap().separation(1e6);
+    EXPECT_GT(Y, 0.0);
+    EXPECT_NEAR(out.gapConductance[1], 0.0262 / (Y + 246.4e-9), 1e-3 * 0.0262 / (Y + 246.4e-9));
+    EXPECT_EQ(out.conductance[1], out.contactConductance[1] + out.gapConductance[1] + out.radiativeConductance[1]);
+
+    // Complete contact: no gap left.
+    EXPECT_EQ(out.state[2], FaceState::complete);
+    EXPECT_EQ(out.gapConductance[2], 0.0);
+    EXPECT_EQ(out.radiativeConductance[2], 0.0);
+    EXPECT_EQ(out.conductance[2], inf);
+
+    // The gas is at the mean of the two face temperatures: 280 K and 320 K give 300 K's h_g
+    // (at 280 K alone k_g would be 5.6 % lower).
+    s.Tf[0] = 280.0;
+    s.TfNbr[0] = 320.0;
+    in.faceTemperature = s.Tf.data();
+    in.faceTemperatureNbr = s.TfNbr.data();
+    couple(ci, in, cache, out);
+    EXPECT_NEAR(out.gapConductance[0], 2557.0, 1e-3 * 2557.0);
+    s.Tf[0] = s.TfNbr[0] = 300.0;
+
+    // Faces apart without widths take the separation at first touch (the table's lowest
+    // pressure), larger than at 1 MPa.
+    in.gapWidth = in.gapWidthNbr = nullptr;
+    couple(ci, in, cache, out);
+    const double Y0 = ci.gap().firstTouchSeparation();
+    EXPECT_EQ(Y0, ci.gap().separation(ci.table().pressures().front()));
+    EXPECT_GT(Y0, Y);
+    EXPECT_NEAR(out.gapConductance[0], 0.0262 / (Y0 + 246.4e-9), 1e-3 * 0.0262 / (Y0 + 246.4e-9));
+    EXPECT_NE(ci.summary().find("gap: air"), std::string::npos) << ci.summary();
+}
+
+// Radiation grows as T^3: at 600 K it is 8 times that at 300 K; the gas term uses the mean of
+// the two face temperatures. A vacuum gap (radiation only) has h_g = 0.
+TEST(FaceCoupling, RadiationFollowsTheFaceTemperatures)
+{
+    InterfaceSpec spec = withAirAndRadiation();
+    spec.gap->gas.reset();
+    const ContactInterface vacuum(spec);
+    Side s(2);
+    s.P = {0.0, 0.0};
+    s.Pnbr = s.P;
+    s.Tf = {300.0, 600.0};
+    s.TfNbr = {300.0, 600.0};
+    CouplingCache cache;
+    CouplingOutputs out;
+    couple(vacuum, s.inputs(), cache, out);
+    EXPECT_EQ(out.gapConductance[0], 0.0);
+    EXPECT_NEAR(out.radiativeConductance[1] / out.radiativeConductance[0], 8.0, 1e-12);
+    EXPECT_NEAR(out.radiativeConductance[0], 4 * 5.670374419e-8 * 2.7e7 / 3, 1e-9);
+}
+
+TEST(FaceCoupling, BadGapInputIsNamed)
+{
+    InterfaceSpec spec = withAirAndRadiation();
+    spec.gap->emissivity2.reset();
+    EXPECT_THROW(ContactInterface{spec}, ParameterError);
+    spec.gap->emissivity1.reset();
+    spec.gap->gas.reset();
+    EXPECT_THROW(ContactInterface{spec}, ParameterError); // neither gas nor radiation
+    spec = withAirAndRadiation();
+    spec.gap->emissivity1 = 1.5;
+    EXPECT_THROW(ContactInterface{spec}, ParameterError);
+
+    const ContactInterface ci(withAirAndRadiation());
+    Side s(3);
+    s.Pnbr = s.P;
+    std::vector<double> width = {1e-6, -1e-6, 1e-6};
+    CouplingInputs in = s.inputs();
+    in.gapWidth = width.data();
+    in.gapWidthNbr = width.data();
+    CouplingCache cache;
+    CouplingOutputs out;
+    try {
+        couple(ci, in, cache, out);
+        ADD_FAILURE() << "a negative gap width was accepted";
+    } catch (const FaceError& e) {
+        EXPECT_EQ(e.face(), 1U);
+        EXPECT_NE(std::string(e.what()).find("gap width"), std::string::npos) << e.what();
+    }
+    in.gapWidth = nullptr;
+    in.gapWidthNbr = nullptr;
+    s.Tf[2] = 0.0;
+    in = s.inputs();
+    EXPECT_THROW(couple(ci, in, cache, out), FaceError);
+    in.faceTemperature = nullptr;
+    EXPECT_THROW(couple(ci, in, cache, out), ParameterError); // the gap needs the face temperatures
+}

@@ -49,4 +49,15 @@ double requirePositive(const std::string& parameter, double value)
     return value;
 }
 
+double requireNonNegative(const std::string& parameter, double value)
+{
+    requireFinite(parameter, value);
+    if (!(value >= 0.0)) {
+        std::ostringstream os;
+        os << "must be >= 0, got " << value;
+        throw ParameterError(parameter, os.str());
+    }
+    return value;
+}
+
 } // namespace roughContact

@@ -40,6 +40,8 @@ private:
 double requirePositive(const std::string& parameter, double value);
 /// Throws ParameterError unless value is finite.
 double requireFinite(const std::string& parameter, double value);
+/// Throws ParameterError unless value is finite and >= 0.
+double requireNonNegative(const std::string& parameter, double value);
 
 /// The same for a literal name: the name becomes a string only when the check fails, so the
 /// checks cost nothing on per-face paths.
@@ -50,6 +52,10 @@ inline double requirePositive(const char* parameter, double value)
 inline double requireFinite(const char* parameter, double value)
 {
     return std::isfinite(value) ? value : requireFinite(std::string(parameter), value);
+}
+inline double requireNonNegative(const char* parameter, double value)
+{
+    return std::isfinite(value) && value >= 0.0 ? value : requireNonNegative(std::string(parameter), value);
 }
 
 } // namespace roughContact

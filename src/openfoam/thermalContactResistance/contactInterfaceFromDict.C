@@ -195,6 +195,91 @@ roughContact::Material readMaterial(const dictionary& d)
 }
 
 
+// The gap sub-dictionary: gas (a name, or a dictionary of its properties),
+// its pressure, the accommodation coefficients and the emissivities. Checked
+// by the core (roughContact::InterfaceGap: the one place of the rules),
+// reported here naming the sub-dictionary and its lines.
+roughContact::GapSpec readGap(const dictionary& d)
+{
+    roughContact::GapSpec g;
+    if (d.found("gas"))
+    {
+        roughContact::GasGapSpec gas;
+        if (d.isDict("gas"))
+        {
+            const dictionary& p = d.subDict("gas");
+            roughContact::GasProperties& q = gas.gas;
+            q.name = "user";
+            q.conductivity = p.get<scalar>("conductivity");
+            q.conductivityExponent =
+                p.getOrDefault<scalar>("conductivityExponent", 0);
+            q.referenceTemperature = p.get<scalar>("referenceTemperature");
+            q.heatCapacityRatio = p.get<scalar>("heatCapacityRatio");
+            q.prandtl = p.get<scalar>("prandtl");
+            q.meanFreePath = p.get<scalar>("meanFreePath");
+            q.referencePressure =
+                p.getOrDefault<scalar>("referencePressure", 101325);
+            q.accommodation = p.get<scalar>("accommodation");
+        }
+        else
+        {
+            const word name(d.get<word>("gas"));
+            try
+            {
+                gas.gas = roughContact::gasByName(name);
+            }
+            catch (const std::exception& e)
+            {
+                FatalIOErrorInFunction(d)
+                    << "entry " << e.what() << exit(FatalIOError);
+            }
+        }
+        gas.pressure = d.getOrDefault<scalar>("pressure", 101325);
+        if (d.found("accommodation"))
+        {
+            const List<scalar> a(d.lookup("accommodation"));
+            if (a.size() != 2)
+            {
+                FatalIOErrorInFunction(d)
+                    << "entry accommodation: expected (a1 a2), the thermal"
+                    << " accommodation coefficients of the two surfaces; got "
+                    << a.size() << " values" << exit(FatalIOError);
+            }
+            gas.accommodation1 = a[0];
+            gas.accommodation2 = a[1];
+        }
+        g.gas = gas;
+    }
+    if (d.found("emissivity"))
+    {
+        const List<scalar> e(d.lookup("emissivity"));
+        if (e.size() != 2)
+        {
+            FatalIOErrorInFunction(d)
+                << "entry emissivity: expected (e1 e2), the emissivities of"
+                << " the two surfaces; got " << e.size() << " values"
+                << exit(FatalIOError);
+        }
+        g.emissivity1 = e[0];
+        g.emissivity2 = e[1];
+    }
+    try
+    {
+        // The rules, checked once (a unit separation stands in for the
+        // contact's, which is not built yet).
+        roughContact::InterfaceGap(g, [](double) { return 1.0; }, 1, 1, 1);
+    }
+    catch (const std::exception& e)
+    {
+        FatalIOErrorInFunction(d)
+            << "entry " << e.what() << " (sub-dictionary " << d.dictName()
+            << ": gas, pressure, accommodation, emissivity)"
+            << exit(FatalIOError);
+    }
+    return g;
+}
+
+
 // The points of the boundary-element table of `spec`: the master reads them
 // from the case's cache file constant/boundaryElementTable.<name>.csv when its
 // key is this table's, or builds them (logging each load) and writes the file
@@ -421,6 +506,10 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
             (spec.model == "boundaryElement"
                 ? spec.bemPointsPerDecade : spec.pointsPerDecade) =
                 std::size_t(n);
+        }
+        if (dict.found("gap"))
+        {
+            spec.gap = readGap(dict.subDict("gap"));
         }
         FatalIOError.throwExceptions(throwing);
 

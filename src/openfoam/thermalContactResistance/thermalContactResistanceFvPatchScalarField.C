@@ -6,12 +6,17 @@
 #include "volFields.H"
 #include "mappedPatchBase.H"
 #include "IOdictionary.H"
+#include "OSspecific.H"
 
+#include "roughContact/interface/InterfaceMonitor.hpp"
 #include "roughContact/surface/SurfaceChecksum.hpp"
 #include "roughContact/thermal/InterfaceCoupling.hpp"
 
 #include <cmath>
 #include <exception>
+#include <fstream>
+#include <set>
+#include <string>
 
 // An error found at run time (not while reading the dictionary): FatalIOError
 // naming the file and lines the condition was read from.
@@ -86,7 +91,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::readContact
                 << who().c_str() << ": entry 'h' must be a finite conductance"
                 << " > 0 [W/m^2/K], got " << hConstant_ << exit(FatalIOError);
         }
-        for (const char* other : {"pressure", "pressureField"})
+        for (const char* other : {"pressure", "pressureField", "gap", "gapField"})
         {
             if (dict.found(other))
             {
@@ -173,6 +178,46 @@ void Foam::thermalContactResistanceFvPatchScalarField::readContact
     contactDigest_ = props.subDict(contactName_).digest();
     contactCheckedTimeIndex_ = runTime.timeIndex();
     checkRecordedSurface(dict);
+
+    // The width of the gap where the surfaces do not touch (P <= 0).
+    const bool hasGap = dict.found("gap");
+    const bool hasGapField = dict.found("gapField");
+    if (hasGap || hasGapField)
+    {
+        if (hasGap && hasGapField)
+        {
+            FatalIOErrorInFunction(dict)
+                << who().c_str() << ": give at most one of the entries 'gap'"
+                << " (a uniform gap width [m] of faces apart) and 'gapField'"
+                << " (the name of a volScalarField of gap widths [m])"
+                << exit(FatalIOError);
+        }
+        if (!interface_->hasGap())
+        {
+            FatalIOErrorInFunction(dict)
+                << who().c_str() << ": entry '"
+                << (hasGap ? "gap" : "gapField") << "': the contact '"
+                << contactName_ << "' of " << props.objectPath() << " has no"
+                << " gap sub-dictionary (gas, emissivity), so nothing would"
+                << " cross the gap: add one, or remove this entry"
+                << exit(FatalIOError);
+        }
+        if (hasGap)
+        {
+            gapWidth_ = dict.get<scalar>("gap");
+            if (!(gapWidth_ >= 0) || !std::isfinite(gapWidth_))
+            {
+                FatalIOErrorInFunction(dict)
+                    << who().c_str() << ": entry 'gap' must be a finite gap"
+                    << " width >= 0 [m], got " << gapWidth_
+                    << exit(FatalIOError);
+            }
+        }
+        else
+        {
+            gapFieldName_ = dict.get<word>("gapField");
+        }
+    }
 }
 
 
@@ -276,6 +321,12 @@ void Foam::thermalContactResistanceFvPatchScalarField::checkNeighbour
         problem =
             "the two sides name different 'contact' entries ('"
           + contactName_ + "' and '" + nbr.contactName_ + "')";
+    }
+    else if (hasGapWidth() != nbr.hasGapWidth())
+    {
+        problem =
+            "one side gives the gap width of faces apart ('gap' or"
+            " 'gapField'), the other does not";
     }
     if (!problem.empty())
     {
@@ -446,6 +497,90 @@ Foam::thermalContactResistanceFvPatchScalarField::summary() const
 }
 
 
+Foam::scalar
+Foam::thermalContactResistanceFvPatchScalarField::heatIntoCells() const
+{
+    // kappa dT/dn |S_f| summed: the heat [W] entering this side's cells
+    // through the interface (the face flux of the mixed condition).
+    return gSum(kappa(*this)*snGrad()*patch().magSf());
+}
+
+
+void Foam::thermalContactResistanceFvPatchScalarField::writeSeries() const
+{
+    const mappedPatchBase& mpp =
+        refCast<const mappedPatchBase>(patch().patch());
+    const word region(patch().boundaryMesh().mesh().name());
+    const word nbrRegion(mpp.sampleRegion());
+    const word nbrPatchName(mpp.samplePatch());
+    // One of the two sides writes: the one whose region (then patch) name
+    // comes first.
+    if
+    (
+        nbrRegion < region
+     || (nbrRegion == region && nbrPatchName < patch().name())
+    )
+    {
+        return;
+    }
+    const auto& nbrField =
+        refCast<const thermalContactResistanceFvPatchScalarField>
+        (
+            *neighbourField(true)
+        );
+    // Collective (every processor): the sums, then the master writes.
+    const scalar heatFrom = -heatIntoCells();
+    const scalar heatInto = nbrField.heatIntoCells();
+    const ::roughContact::CouplingSummary s = summary();
+    if (!Pstream::master())
+    {
+        return;
+    }
+    const Time& runTime = db().time();
+    const fileName dir =
+        runTime.globalPath()/"postProcessing"/"thermalContactResistance"
+       /(region + "_" + patch().name())
+       /runTime.timeName(runTime.startTime().value());
+    const fileName series = dir/"interface.csv";
+    // Started once per run (and process): the header, and the table.
+    static std::set<std::string> started;
+    const bool first = started.insert(series).second;
+    if (first)
+    {
+        mkDir(dir);
+        const std::string description =
+            "interface of contact '" + contactName_ + "' between "
+          + region + "/" + patch().name() + " and " + nbrRegion + "/"
+          + nbrPatchName;
+        std::ofstream header(series, std::ios::trunc);
+        header
+            << ::roughContact::interfaceSeriesHeader
+               (
+                   description, region, nbrRegion
+               );
+        std::ofstream table(dir/"table.csv", std::ios::trunc);
+        ::roughContact::writeInterfaceTable(table, *interface_, description);
+        if (!header || !table)
+        {
+            WarningInFunction
+                << who().c_str() << ": cannot write " << series << " or "
+                << dir/"table.csv" << endl;
+        }
+        else
+        {
+            Info<< "thermalContactResistance: " << who().c_str()
+                << ": writing the interface's time series to " << series
+                << " and its table to " << dir/"table.csv" << endl;
+        }
+    }
+    std::ofstream os(series, std::ios::app);
+    os << ::roughContact::interfaceSeriesRow
+          (
+              runTime.value(), heatFrom, heatInto, s
+          );
+}
+
+
 void Foam::thermalContactResistanceFvPatchScalarField::report() const
 {
     if (hConstant_ > 0)
@@ -494,6 +629,8 @@ thermalContactResistanceFvPatchScalarField
     hConstant_(-1),
     pressure_(),
     pressureFieldName_(),
+    gapWidth_(-1),
+    gapFieldName_(),
     interface_(),
     surfaceChecksum_(),
     contactDigest_(),
@@ -533,6 +670,8 @@ thermalContactResistanceFvPatchScalarField
     hConstant_(-1),
     pressure_(),
     pressureFieldName_(),
+    gapWidth_(-1),
+    gapFieldName_(),
     interface_(),
     surfaceChecksum_(),
     contactDigest_(),
@@ -591,6 +730,8 @@ thermalContactResistanceFvPatchScalarField
     hConstant_(ptf.hConstant_),
     pressure_(),
     pressureFieldName_(ptf.pressureFieldName_),
+    gapWidth_(ptf.gapWidth_),
+    gapFieldName_(ptf.gapFieldName_),
     interface_(ptf.interface_),
     surfaceChecksum_(ptf.surfaceChecksum_),
     contactDigest_(ptf.contactDigest_),
@@ -639,6 +780,8 @@ thermalContactResistanceFvPatchScalarField
       : nullptr
     ),
     pressureFieldName_(ptf.pressureFieldName_),
+    gapWidth_(ptf.gapWidth_),
+    gapFieldName_(ptf.gapFieldName_),
     interface_(ptf.interface_),
     surfaceChecksum_(ptf.surfaceChecksum_),
     contactDigest_(ptf.contactDigest_),
@@ -678,6 +821,8 @@ thermalContactResistanceFvPatchScalarField
       : nullptr
     ),
     pressureFieldName_(ptf.pressureFieldName_),
+    gapWidth_(ptf.gapWidth_),
+    gapFieldName_(ptf.gapFieldName_),
     interface_(ptf.interface_),
     surfaceChecksum_(ptf.surfaceChecksum_),
     contactDigest_(ptf.contactDigest_),
@@ -725,6 +870,30 @@ Foam::thermalContactResistanceFvPatchScalarField::interfacePressure() const
            .boundaryField()[patch().index()];
     }
     return tmp<scalarField>(new scalarField(size(), Zero));
+}
+
+
+Foam::tmp<Foam::scalarField>
+Foam::thermalContactResistanceFvPatchScalarField::interfaceGapWidth() const
+{
+    if (!gapFieldName_.empty())
+    {
+        const fvMesh& mesh = patch().boundaryMesh().mesh();
+        if (!mesh.foundObject<volScalarField>(gapFieldName_))
+        {
+            RuntimeIOError
+                << who().c_str() << ": entry 'gapField "
+                << gapFieldName_ << "': region " << mesh.name()
+                << " has no volScalarField '" << gapFieldName_
+                << "' (read it, e.g. with the readFields function object,"
+                << " or let a solver or function object create it)"
+                << exit(FatalIOError);
+        }
+        return
+            mesh.lookupObject<volScalarField>(gapFieldName_)
+           .boundaryField()[patch().index()];
+    }
+    return tmp<scalarField>(new scalarField(size(), max(gapWidth_, 0.0)));
 }
 
 
@@ -850,6 +1019,30 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
     in.deltaCoeffsNbr = nbrDeltaCoeffs_.cdata();
 
     const scalarField myP(interfacePressure());
+    scalarField nbrTface;
+    scalarField myGapWidth;
+    scalarField nbrGapWidth;
+    if (hConstant_ <= 0 && interface_->hasGap())
+    {
+        const bool widths = nbrField.hasGapWidth();
+        const scalarField nbrW
+        (
+            widths ? nbrField.interfaceGapWidth()() : scalarField(nbrPatch.size(), Zero)
+        );
+        const scalarField nbrTf(nbrField);
+        vectorField nbrGap(nbrPatch.size());
+        forAll(nbrGap, i)
+        {
+            nbrGap[i] = vector(nbrTf[i], nbrW[i], 0);
+        }
+        mpp.distribute(nbrGap);
+        nbrTface = nbrGap.component(vector::X);
+        nbrGapWidth = nbrGap.component(vector::Y);
+        if (hasGapWidth())
+        {
+            myGapWidth = interfaceGapWidth();
+        }
+    }
     try
     {
         if (hConstant_ > 0)
@@ -863,6 +1056,18 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
             in.pressure = myP.cdata();
             in.pressureNbr = nbrP.cdata();
             in.cellTemperatureNbr = nbrT.cdata();
+            if (interface_->hasGap())
+            {
+                // The gap's terms need both face temperatures and the widths
+                // both sides give: one more exchange.
+                in.faceTemperature = this->cdata();
+                in.faceTemperatureNbr = nbrTface.cdata();
+                if (hasGapWidth())
+                {
+                    in.gapWidth = myGapWidth.cdata();
+                    in.gapWidthNbr = nbrGapWidth.cdata();
+                }
+            }
             roughContact::couple(*interface_, in, couplingCache_, coupling_);
         }
     }
@@ -981,6 +1186,14 @@ void Foam::thermalContactResistanceFvPatchScalarField::write(Ostream& os) const
         {
             os.writeEntry("pressureField", pressureFieldName_);
         }
+        if (!gapFieldName_.empty())
+        {
+            os.writeEntry("gapField", gapFieldName_);
+        }
+        else if (gapWidth_ >= 0)
+        {
+            os.writeEntry("gap", gapWidth_);
+        }
     }
     temperatureCoupledBase::write(os);
 
@@ -989,6 +1202,10 @@ void Foam::thermalContactResistanceFvPatchScalarField::write(Ostream& os) const
     if (evaluated_)
     {
         report();
+        if (hConstant_ <= 0)
+        {
+            writeSeries();
+        }
     }
 }
 

@@ -108,6 +108,7 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
         os << bem.surface().nx() << " x " << bem.surface().ny() << " "
            << (bem.periodic() ? "periodic" : "non-periodic") << " " << bem.surface().source();
         bemSurface_ = os.str();
+        buildGap(spec);
         return;
     }
     for (const auto& [given, what] : {std::pair<bool, const char*>{spec.synthesize.has_value(), "synthesize"},
@@ -146,6 +147,37 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
     const std::unique_ptr<ConductanceLaw> law = makeConductanceLaw(conductanceLaw_, in);
     table_ = std::make_unique<ContactTable>(*model_, spec.minPressure.value_or(1e-9 * Ep),
                                             spec.maxPressure.value_or(Ep), spec.pointsPerDecade, law.get());
+    buildGap(spec);
+}
+
+void ContactInterface::buildGap(const InterfaceSpec& spec)
+{
+    if (!spec.gap) {
+        return;
+    }
+    std::function<double(double)> separation;
+    double sigma = 0.0;
+    double Hc = 0.0;
+    {
+        // The correlation's inputs: the surfaces' combined rms height and the microhardness.
+        std::optional<SurfaceRoughness> r;
+        for (const SurfaceSpec& s : spec.surfaces) {
+            r = r ? combined(*r, s.roughness()) : s.roughness();
+        }
+        sigma = r->sigma;
+        Hc = spec.microhardness ? *spec.microhardness
+             : spec.hardness    ? *spec.hardness
+                                : materials_.hardness("the gap's separation (the correlation of sigma and P/H_c)");
+    }
+    gap_.emplace(*spec.gap, std::move(separation), sigma, Hc, table_->pressures().front());
+}
+
+const InterfaceGap& ContactInterface::gap() const
+{
+    if (!gap_) {
+        throw ParameterError("gap", "the interface has none");
+    }
+    return *gap_;
 }
 
 FaceContact ContactInterface::face(double P, double k1, double k2) const
@@ -184,6 +216,9 @@ std::string ContactInterface::summary() const
         os << "no complete contact up to the table's end";
     } else {
         os << "complete contact at " << table_->completeContactPressure() << " Pa";
+    }
+    if (gap_) {
+        os << "; " << gap_->summary();
     }
     return os.str();
 }

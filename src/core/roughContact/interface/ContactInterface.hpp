@@ -6,6 +6,7 @@
 
 #include "roughContact/Error.hpp"
 #include "roughContact/interface/BoundaryElementTable.hpp"
+#include "roughContact/interface/InterfaceGap.hpp"
 #include "roughContact/io/ArealReader.hpp"
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/material/Materials.hpp"
@@ -84,6 +85,10 @@ struct InterfaceSpec {
     /// Loads of the boundary-element table per decade of pressure (log spaced from minPressure,
     /// default 1e-6 E', to maxPressure, default min(0.1 E', 0.95 H)).
     std::size_t bemPointsPerDecade = 6;
+
+    /// The gap beside the contact (gas, radiation: InterfaceGap.hpp); none: nothing crosses
+    /// where the surfaces do not touch.
+    std::optional<GapSpec> gap;
 };
 
 /// What a boundary condition needs at one face.
@@ -120,7 +125,9 @@ public:
     double completeContactPressure() const noexcept { return table_->completeContactPressure(); }
 
     /// True when the interface has a gap conductance (gas or radiation) beside the contact.
-    bool hasGap() const noexcept { return hasGap_; }
+    bool hasGap() const noexcept { return gap_.has_value(); }
+    /// The gap (ParameterError without one).
+    const InterfaceGap& gap() const;
 
     const ContactTable& table() const noexcept { return *table_; }
     /// The conductance law of the table's h column.
@@ -142,7 +149,10 @@ private:
     std::string conductanceLaw_;
     std::string modelName_;
     std::string bemSurface_; ///< boundaryElement: what was solved (for summary())
-    bool hasGap_ = false;
+    std::optional<InterfaceGap> gap_;
+
+    /// Builds gap_ from spec.gap (after the table).
+    void buildGap(const InterfaceSpec& spec);
 };
 
 } // namespace roughContact

@@ -22,10 +22,12 @@ void CouplingOutputs::resize(std::size_t n)
 
 namespace {
 
-void requireArrays(const CouplingInputs& in, bool contact)
+void requireArrays(const CouplingInputs& in, bool contact, bool gap)
 {
     const bool ok = in.kappa && in.kappaNbr && in.deltaCoeffs && in.deltaCoeffsNbr &&
-                    (contact ? in.pressure && in.pressureNbr && in.cellTemperatureNbr : in.faceTemperatureNbr != nullptr);
+                    (contact ? in.pressure && in.pressureNbr && in.cellTemperatureNbr : in.faceTemperatureNbr != nullptr) &&
+                    (!gap || (in.faceTemperature && in.faceTemperatureNbr)) &&
+                    (in.gapWidth == nullptr) == (in.gapWidthNbr == nullptr);
     if (in.n > 0 && !ok) {
         throw ParameterError("interface coupling", "an input array the coupling needs is missing");
     }
@@ -35,7 +37,8 @@ void requireArrays(const CouplingInputs& in, bool contact)
 
 void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCache& cache, CouplingOutputs& out)
 {
-    requireArrays(in, true);
+    const InterfaceGap* gap = iface.hasGap() ? &iface.gap() : nullptr;
+    requireArrays(in, true, gap != nullptr);
     const std::size_t n = in.n;
     out.resize(n);
     if (cache.pressure.size() != n) {
@@ -55,6 +58,10 @@ void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCac
                 cache.pressure[i] = P;
                 cache.areaFraction[i] = v.areaFraction;
                 cache.conductancePerConductivity[i] = v.conductancePerConductivity;
+                // The gap's separation at this pressure (touching faces short of complete
+                // contact; looked up with the table, cached with it).
+                cache.separation[i] =
+                    gap && P > 0.0 && P < complete ? gap->separation(P) : 0.0;
             }
             const double k1 = requirePositive("kappa", in.kappa[i]);
             const double k2 = requirePositive("neighbour kappa", in.kappaNbr[i]);
@@ -73,8 +80,20 @@ void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCac
                 state = FaceState::partial;
             }
             const double hc = ks * cache.conductancePerConductivity[i];
-            const double hg = 0.0;
-            const double hr = 0.0;
+            double hg = 0.0;
+            double hr = 0.0;
+            if (gap && state != FaceState::complete) {
+                const double T1 = requirePositive("face temperature", in.faceTemperature[i]);
+                const double T2 = requirePositive("neighbour face temperature", in.faceTemperatureNbr[i]);
+                double Y = cache.separation[i];
+                if (state == FaceState::apart) {
+                    Y = in.gapWidth ? nominalGapWidth(requireNonNegative("gap width", in.gapWidth[i]),
+                                                      requireNonNegative("neighbour gap width", in.gapWidthNbr[i]))
+                                    : gap->firstTouchSeparation();
+                }
+                hg = gap->gasConductance(Y, T1, T2);
+                hr = gap->radiativeConductance(T1, T2);
+            }
             const double h = hc + hg + hr;
 
             out.state[i] = state;
@@ -95,7 +114,7 @@ void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCac
 void coupleConstant(double h, const CouplingInputs& in, CouplingOutputs& out)
 {
     requirePositive("h", h);
-    requireArrays(in, false);
+    requireArrays(in, false, false);
     const std::size_t n = in.n;
     out.resize(n);
     for (std::size_t i = 0; i < n; ++i) {

@@ -63,6 +63,10 @@ inline int contactStateCode(FaceState s) { return s == FaceState::beyondTable ? 
 /// largest double, 0.5 a + 0.5 b does not.
 inline double nominalPressure(double P, double Pnbr) { return 0.5 * P + 0.5 * Pnbr; }
 
+/// The gap width of a face apart from the widths both sides give [m]: their mean, as for the
+/// pressure (both sides get the same h).
+inline double nominalGapWidth(double w, double wNbr) { return 0.5 * w + 0.5 * wNbr; }
+
 /// The arrays of one side's faces (n each). The neighbour's are mapped onto this side's faces.
 struct CouplingInputs {
     std::size_t n = 0;
@@ -75,9 +79,11 @@ struct CouplingInputs {
     const double* kappaNbr = nullptr;
     const double* deltaCoeffs = nullptr;        ///< 1/(face to cell centre) [1/m]
     const double* deltaCoeffsNbr = nullptr;
-    /// The separation of faces apart [m] (the condition's gap or gapField entry); null: the
-    /// interface's separation at first touch (InterfaceGap).
+    /// The separation of faces apart [m] that each side gives (the condition's gap or gapField
+    /// entry): a face apart takes their mean, nominalGapWidth. Both null: the interface's
+    /// separation at first touch (InterfaceGap). Only with a gap.
     const double* gapWidth = nullptr;
+    const double* gapWidthNbr = nullptr;
 };
 
 /// Per-face results (n each). Every array is written.
