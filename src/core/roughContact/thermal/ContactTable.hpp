@@ -32,18 +32,23 @@ class ConductanceLaw;
 /// multi-scale constriction sum has no separation), given to fromPoints by a boundary-element
 /// table. Y falls with P and reaches 0 at complete contact, where log Y would diverge, and is
 /// near linear in log P at light load (Persson's p ~ exp(-Y/u0)), so between points Y is
-/// interpolated linearly in log P (not log-log). A running minimum makes the column
-/// non-increasing (the loading path never opens the gap); on the laws' tables it has not been
-/// seen to act (testContactTable). Queries (meanSeparation):
+/// interpolated linearly in log P (not log-log; on persson's table within 2.1e-5 of the law
+/// between points). The table is not refined for Y. A running minimum makes the column
+/// non-increasing (the loading path never opens the gap); on the persson and multiscaleBarber
+/// tables of testSeparation it never acts (the column is the law's bit for bit). Queries
+/// (meanSeparation):
 ///   P <= 0                         NaN: the faces are apart, the gap is not the contact's; the
 ///                                  caller must handle that case (it has no finite Y);
 ///   0 < P < minPressure            the first interval's slope in log P (Y rises as P falls;
 ///                                  never below 0), exact for Persson's light-load law;
 ///   P beyond the last point but below complete contact: the last point's value, as the other
 ///                                  columns (a ceiling-ended table holds it as well);
-///   P >= completeContactPressure() 0: complete contact, the surfaces touch everywhere (the
-///                                  area model's complete contact: persson's own Y is still
-///                                  positive there, but vanishingly small; it is 0 here).
+///   P >= completeContactPressure() 0: complete contact, the surfaces touch everywhere. It is
+///                                  the area model's complete contact: a law's own Y need not
+///                                  vanish there, and the column then jumps to 0 as h_c/k_s
+///                                  jumps to +inf (persson on the Hurst-0.8 surface of
+///                                  testSeparation: from 2.9 um with jacksonGreen, 8 % of its
+///                                  Y at 1e-9 E', and from 0.3 um with hertz).
 class ContactTable {
 public:
     /// law: the conductance law of the h column (ConductanceLaw.hpp); none: the multi-scale
