@@ -4,6 +4,7 @@
 // checks, and ContactInterface's forwarding. The boundary-element column is tested in
 // testBoundaryElementTable.
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 #include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/material/Materials.hpp"
 #include "roughContact/models/ModelFactory.hpp"
@@ -79,6 +80,20 @@ TEST(Separation, MultiscaleBarberSatisfiesBarbersRelationWithItsOwnConductance)
             const double fromY = (hi - lo) / Ep / (law->meanSeparation(lo) - law->meanSeparation(hi));
             EXPECT_NEAR(fromY / law->perConductivity(P), 1.0, 2e-6) << area << " load " << load;
         }
+    }
+}
+
+TEST(Separation, MultiscaleBarberAtTheEndsOfTheAcceptedLoads)
+{
+    // With floating-point traps on (every test's main): finite and positive at the least load
+    // (panels down 34 decades), 0 at the greatest; a load between 0 and the least is refused.
+    for (const char* area : {"hertz", "jacksonGreen", "truncation"}) {
+        const Laws l(area);
+        const MultiscaleBarber b(l.model, l.s);
+        const double least = b.meanSeparation(limits::minimumLoad);
+        EXPECT_TRUE(std::isfinite(least) && least > b.meanSeparation(1e-9)) << area << " " << least;
+        EXPECT_EQ(b.meanSeparation(limits::maximumLoad), 0.0) << area;
+        EXPECT_THROW(b.meanSeparation(limits::minimumLoad / 10.0), ParameterError) << area;
     }
 }
 
