@@ -563,8 +563,17 @@ int run(const Options& o)
             if (a > 0.0) {
                 out << load / a; // F/(A_r E'), seed Eq. 34
             }
-            if (conductance) { // no mean separation in these models: empty
-                out << ",,";
+            if (conductance) {
+                // No mean separation in these models: the law's where it defines one
+                // (ConductanceLaw::meanSeparation: persson, multiscaleBarber), else empty.
+                out << ',';
+                if (law) {
+                    const double Y = law->meanSeparation(load * Ep);
+                    if (!std::isnan(Y)) {
+                        out << Y;
+                    }
+                }
+                out << ',';
                 if (law) {
                     out << law->perConductivity(load * Ep); // inf at complete contact
                 }
@@ -690,7 +699,8 @@ int main(int argc, char** argv)
         "add the columns separation and h_per_k: contact conductance over k_s = 2 k1 k2/(k1 + k2), in 1/m, "
         "from the --conductance-law (default: the multi-scale constriction resistances in series, inf at "
         "complete contact, for the multi-scale models; for persson its mean separation [m] and Barber's "
-        "h_c/k_s = -(1/E') dp/du); separation is empty for the other models");
+        "h_c/k_s = -(1/E') dp/du); separation [m] is the model's (persson) or the law's (persson, "
+        "multiscaleBarber: Barber-consistent with their h_per_k), empty where neither defines one");
     std::string lawNames;
     for (const std::string& n : conductanceLawNames()) {
         lawNames += (lawNames.empty() ? "" : ", ") + n;

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -75,7 +76,15 @@ TEST(BoundaryElementTable, PointsAreTheSolversAtTheirLoads)
         SCOPED_TRACE(k);
         EXPECT_EQ(p.areaFractions[k], curve[k].areaFraction);
         EXPECT_EQ(p.conductancesPerConductivity[k], curve[k].conductancePerConductivity);
+        EXPECT_EQ(p.separations[k], curve[k].meanSeparation); // the running minimum never acts here
     }
+    // The mean separation falls from near the highest point of the detrended heights (at light
+    // load only the summits touch, so the mean gap is nearly max z - mean z = max z) towards 0.
+    const ArealSurface solved = surface.detrended();
+    const double top = *std::max_element(solved.heights().begin(), solved.heights().end());
+    EXPECT_LT(p.separations.front(), top);
+    EXPECT_GT(p.separations.front(), 0.9 * top);
+    EXPECT_LT(p.separations.back(), 0.1 * p.separations.front());
     // And one load solved alone (no warm start) within the solver's tolerance.
     const BoundaryElementPoint alone = model.solve(t.loads()[8]);
     EXPECT_NEAR(p.areaFractions[8], alone.areaFraction, 1e-3 * alone.areaFraction);
@@ -89,12 +98,14 @@ TEST(BoundaryElementTable, RoundTripIsExactAndInterpolationIsLogLog)
     const BoundaryElementTable t(spec);
     const BoundaryElementTablePoints p = t.build();
     const std::string text = t.write(p);
-    EXPECT_EQ(text.rfind("# roughContact boundary-element table v1\n# key " + t.key() + "\n# inputs: ", 0), 0u);
+    EXPECT_EQ(text.rfind("# roughContact boundary-element table v2\n# key " + t.key() + "\n# inputs: ", 0), 0u);
+    EXPECT_NE(text.find("\npressure,area,h_per_k,separation\n"), std::string::npos);
     const BoundaryElementTableRead r = t.parse(text);
     ASSERT_EQ(r.status, Status::ok) << r.reason;
     EXPECT_EQ(r.points->pressures, p.pressures);
     EXPECT_EQ(r.points->areaFractions, p.areaFractions);
     EXPECT_EQ(r.points->conductancesPerConductivity, p.conductancesPerConductivity);
+    EXPECT_EQ(r.points->separations, p.separations); // bit for bit
     EXPECT_EQ(r.points->end, p.end);
     EXPECT_EQ(t.write(*r.points), text);
 
@@ -118,7 +129,13 @@ TEST(BoundaryElementTable, RoundTripIsExactAndInterpolationIsLogLog)
         EXPECT_NEAR(cached.conductancePerConductivity(P), h, 1e-12 * h);
         EXPECT_NEAR(cached.areaFraction(P), a, 1e-12 * a);
         EXPECT_EQ(cached.conductancePerConductivity(P), built.conductancePerConductivity(P));
+        // The separation linear in log P: Y0 + t (Y1 - Y0).
+        const double y = p.separations[k] + tt * (p.separations[k + 1] - p.separations[k]);
+        EXPECT_NEAR(cached.meanSeparation(P), y, 1e-12 * p.separations[k]);
+        EXPECT_EQ(cached.meanSeparation(P0), p.separations[k]);
     }
+    ASSERT_TRUE(cached.hasSeparation());
+    EXPECT_EQ(cached.meanSeparation(2e9), p.separations.back()); // held beyond, as the others
     // Beyond the last point (no complete contact reached): its values hold.
     EXPECT_NEAR(cached.conductancePerConductivity(2e9), p.conductancesPerConductivity.back(),
                 1e-14 * p.conductancesPerConductivity.back());
@@ -200,16 +217,36 @@ TEST(BoundaryElementTable, BadFilesAreRefusedWithTheReason)
     const std::size_t cut = good.rfind('\n', good.size() - 2);
     refused(good.substr(0, cut + 1), Status::corrupt, "do not make a whole table");
     // A number changed into text, a NaN, a non-monotone area.
-    const std::size_t row = good.find("pressure,area,h_per_k\n") + 22;
+    const std::string columns = "pressure,area,h_per_k,separation\n";
+    const std::size_t row = good.find(columns) + columns.size();
     std::string bad = good;
     bad.replace(row, 3, "abc");
-    refused(bad, Status::corrupt, "is not three finite numbers");
+    refused(bad, Status::corrupt, "is not four finite numbers");
     bad = good;
     bad.insert(good.find(',', row) + 1, "nan,");
-    refused(bad, Status::corrupt, "is not three finite numbers");
+    refused(bad, Status::corrupt, "is not four finite numbers");
+    // A row of the old three columns (no separation).
+    bad = good;
+    const std::size_t rowEnd = good.find('\n', row);
+    bad.erase(good.rfind(',', rowEnd), rowEnd - good.rfind(',', rowEnd));
+    refused(bad, Status::corrupt, "is not four finite numbers");
     BoundaryElementTablePoints p = t.build();
     p.areaFractions[3] = p.areaFractions[4] * 1.01;
     refused(t.write(p), Status::corrupt, "non-decreasing");
+    p = t.build();
+    p.separations[3] = p.separations[2] * 1.01;
+    refused(t.write(p), Status::corrupt, "point 4: the mean separation");
+    p = t.build();
+    p.separations[5] = -1e-12;
+    refused(t.write(p), Status::corrupt, "is negative");
+    // A file of the previous format (v1: no separation column, key of format version 2) is
+    // foreign, so a case rebuilds it; so is any other version's header.
+    {
+        std::string v1 = "# roughContact boundary-element table v1\n# key " + t.key() + good.substr(good.find("\n# inputs"));
+        v1.replace(v1.find(columns), columns.size(), "pressure,area,h_per_k\n");
+        refused(v1, Status::foreign, "is a table of format v1, not this version's");
+    }
+    refused("# roughContact boundary-element table v3\n", Status::foreign, "format v3");
     p = t.build();
     p.pressures[2] *= 1.000001;
     refused(t.write(p), Status::corrupt, "is not the table's load 3");
@@ -280,11 +317,14 @@ TEST(BoundaryElementTable, CompleteContactEndsTheTable)
     EXPECT_TRUE(std::isinf(ci.conductancePerConductivity(p.completeContactPressure)));
     EXPECT_EQ(ci.areaFraction(p.completeContactPressure), 1.0);
     EXPECT_FALSE(ci.heldAtTableEnd(p.completeContactPressure * 0.999));
+    EXPECT_EQ(ci.meanSeparation(p.completeContactPressure), 0.0);
+    EXPECT_EQ(ci.meanSeparation(p.completeContactPressure * 0.999), p.separations.back());
     // A file whose complete contact is not at the load after its last point is cut short.
     BoundaryElementTablePoints q = p;
     q.pressures.pop_back();
     q.areaFractions.pop_back();
     q.conductancesPerConductivity.pop_back();
+    q.separations.pop_back();
     EXPECT_EQ(t.parse(t.write(q)).status, Status::corrupt);
 }
 

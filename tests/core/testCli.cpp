@@ -214,7 +214,9 @@ struct StandinLaws {
 TEST(Cli, ConductanceLawColumnIsTheLibrarys)
 {
     // --conductance-law NAME: the h_per_k column is the library's law, built from the same
-    // surface (its sigma and m from the profile's heights), for every law, to 10 digits.
+    // surface (its sigma and m from the profile's heights), for every law, to 10 digits; the
+    // separation column the law's mean separation where it has one (persson, multiscaleBarber),
+    // else empty.
     const StandinLaws standinLaws;
     const ContactMaterials& mat = standinLaws.materials;
     const ConductanceLawInputs in = standinLaws.inputs();
@@ -225,12 +227,20 @@ TEST(Cli, ConductanceLawColumnIsTheLibrarys)
         ASSERT_EQ(r.status, 0) << name << ": " << r.err;
         const Csv csv = parseCsv(r.out);
         const int hi = column(csv, "h_per_k");
+        const int sep = column(csv, "separation");
         const auto law = makeConductanceLaw(name, in);
         ASSERT_EQ(csv.rows.size(), 3U);
         for (const auto& row : csv.rows) {
             const double load = std::stod(row.at(0));
             const double expected = law->perConductivity(load * mat.reducedModulus());
             EXPECT_NEAR(std::stod(row.at(hi)), expected, 1e-9 * expected) << name << " at " << load;
+            const double Y = law->meanSeparation(load * mat.reducedModulus());
+            if (name == "persson" || name == "multiscaleBarber") {
+                ASSERT_GT(Y, 0.0) << name;
+                EXPECT_NEAR(std::stod(row.at(sep)), Y, 1e-9 * Y) << name << " at " << load;
+            } else {
+                EXPECT_EQ(row.at(sep), "") << name;
+            }
         }
     }
     // The correlations work with any area model; the default law needs a multi-scale one.

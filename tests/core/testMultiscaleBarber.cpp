@@ -80,3 +80,40 @@ TEST(MultiscaleBarber, CompleteContactZeroAndLightLoad)
         previous = h;
     }
 }
+
+TEST(MultiscaleBarber, OneLevelSeparationIsTheClosedForm)
+{
+    // (B4) on one Hertz level: a = c load^(2/3), U = E_1 a (gamma + (1 - gamma) a^2), so
+    // dU/dl / l = (2/3) E_1 (gamma c l^(-4/3) + 3 (1 - gamma) c^3) and between two loads below
+    // complete contact
+    //     u(l1) - u(l2) = (2/3) E_1 [3 gamma c (l1^(-1/3) - l2^(-1/3)) + 3 (1 - gamma) c^3 (l2 - l1)].
+    // The quadrature of (B5) (Gauss-Kronrod to 1e-10 per panel) meets it to ~5e-15 (measured).
+    const double L = 1e-3;
+    const Spectrum s({4.0 / L}, {2e-7}, L);
+    const MultiscaleModel m(s, steel.reducedModulus(), makeAsperityModel("hertz", steel));
+    const MultiscaleBarber law(m, s);
+    const double E1 = law.binEnergies()[0];
+    const double gamma = 0.42;
+    const double c = m.areaFraction(1e-7) / std::pow(1e-7, 2.0 / 3.0);
+    ASSERT_NEAR(m.areaFraction(1e-8) / std::pow(1e-8, 2.0 / 3.0) / c, 1.0, 1e-9); // Hertz: a power law
+    const auto difference = [&](double l1, double l2) {
+        return 2.0 / 3.0 * E1 *
+               (3.0 * gamma * c * (std::pow(l1, -1.0 / 3.0) - std::pow(l2, -1.0 / 3.0)) +
+                3.0 * (1.0 - gamma) * c * c * c * (l2 - l1));
+    };
+    for (const auto& [l1, l2] : {std::pair<double, double>{1e-8, 1e-7}, {1e-8, 1e-6}, {3e-7, 1e-6}}) {
+        ASSERT_LT(m.areaFraction(l2), 1.0);
+        const double expected = difference(l1, l2);
+        EXPECT_NEAR((law.meanSeparation(l1) - law.meanSeparation(l2)) / expected, 1.0, 1e-10) << l1 << " " << l2;
+    }
+    // Complete contact: u = 0 there and beyond, positive just below; +inf at load 0.
+    const double lc = law.completeContactLoad();
+    ASSERT_TRUE(std::isfinite(lc));
+    EXPECT_EQ(m.areaFraction(lc), 1.0);
+    EXPECT_LT(m.areaFraction(lc * (1.0 - 1e-9)), 1.0);
+    EXPECT_EQ(law.meanSeparation(lc), 0.0);
+    EXPECT_EQ(law.meanSeparation(10.0 * lc), 0.0);
+    EXPECT_GT(law.meanSeparation(0.5 * lc), 0.0);
+    EXPECT_TRUE(std::isinf(law.meanSeparation(0.0)));
+    EXPECT_THROW(law.meanSeparation(-1.0), ParameterError);
+}

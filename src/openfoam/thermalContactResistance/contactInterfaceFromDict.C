@@ -356,11 +356,16 @@ roughContact::BoundaryElementTablePoints boundaryElementPoints
         List<scalar> P(points.pressures.size());
         List<scalar> A(points.areaFractions.size());
         List<scalar> H(points.conductancesPerConductivity.size());
+        List<scalar> Y(points.separations.size());
         forAll(P, i)
         {
             P[i] = points.pressures[i];
             A[i] = points.areaFractions[i];
             H[i] = points.conductancesPerConductivity[i];
+        }
+        forAll(Y, i)
+        {
+            Y[i] = points.separations[i];
         }
         // +inf (no complete contact) as -1: a stream need not carry inf.
         scalar complete =
@@ -370,11 +375,13 @@ roughContact::BoundaryElementTablePoints boundaryElementPoints
         Pstream::scatter(P);
         Pstream::scatter(A);
         Pstream::scatter(H);
+        Pstream::scatter(Y);
         Pstream::scatter(complete);
         Pstream::scatter(end);
         points.pressures.assign(P.begin(), P.end());
         points.areaFractions.assign(A.begin(), A.end());
         points.conductancesPerConductivity.assign(H.begin(), H.end());
+        points.separations.assign(Y.begin(), Y.end());
         points.completeContactPressure =
             complete < 0 ? std::numeric_limits<double>::infinity() : complete;
         points.end = roughContact::ContactTable::End(end);

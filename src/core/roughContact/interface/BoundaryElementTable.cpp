@@ -33,9 +33,12 @@ namespace {
 // Bumped whenever the meaning of a table changes for the same inputs (the solver, the
 // conductance, the file's layout): every older file is then foreign and rebuilt.
 // The version of what the table holds, in its key: 2 since the conductance of a non-periodic
-// patch has the patch's own constriction removed (BoundaryElement.hpp); a table of version 1
-// is foreign and rebuilt.
-constexpr std::uint64_t formatVersion = 2;
+// patch has the patch's own constriction removed (BoundaryElement.hpp); 3 since the file
+// carries the mean separation (header v2). A table of an older version is foreign and rebuilt
+// (an older header is reported as foreign too, before its key is read).
+constexpr std::uint64_t formatVersion = 3;
+constexpr const char* headerStem = "# roughContact boundary-element table v";
+constexpr const char* columns = "pressure,area,h_per_k,separation";
 // h_c/k_s beyond this is perfect contact for any mesh (as ContactTable's ceiling).
 constexpr double conductanceCeiling = 1e9;
 
@@ -156,7 +159,7 @@ ArealSurface solvedSurface(const InterfaceSpec& spec)
 ContactTable BoundaryElementTablePoints::table(double Eprime) const
 {
     return ContactTable::fromPoints(pressures, areaFractions, conductancesPerConductivity, completeContactPressure,
-                                    end, Eprime);
+                                    end, Eprime, separations);
 }
 
 BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
@@ -262,6 +265,7 @@ BoundaryElementTablePoints BoundaryElementTable::build(const Progress& progress)
     BoundaryElementTablePoints out;
     double area = 0.0;
     double h = 0.0;
+    double separation = std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < curve.size(); ++k) {
         const BoundaryElementPoint& p = curve[k];
         if (!(p.areaFraction < 1.0) || !std::isfinite(p.conductancePerConductivity)) {
@@ -275,11 +279,19 @@ BoundaryElementTablePoints BoundaryElementTable::build(const Progress& progress)
                << " 1/m at " << pressures_[k] << " Pa; the table needs positive values";
             throw ParameterError("boundary-element table", os.str());
         }
+        if (!(p.meanSeparation >= 0.0 && std::isfinite(p.meanSeparation))) {
+            std::ostringstream os;
+            os << "the solve gives a mean separation of " << p.meanSeparation << " m at " << pressures_[k]
+               << " Pa; the table needs finite values >= 0";
+            throw ParameterError("boundary-element table", os.str());
+        }
         area = std::max(area, p.areaFraction);
         h = std::max(h, p.conductancePerConductivity);
+        separation = std::min(separation, p.meanSeparation);
         out.pressures.push_back(pressures_[k]);
         out.areaFractions.push_back(area);
         out.conductancesPerConductivity.push_back(h);
+        out.separations.push_back(separation);
         if (h > conductanceCeiling) {
             out.end = ContactTable::End::conductanceCeiling;
             break;
@@ -299,10 +311,13 @@ std::string BoundaryElementTable::write(const BoundaryElementTablePoints& points
     std::string s;
     s += boundaryElementTableHeader;
     s += "\n# key " + key_ + "\n# inputs: " + inputs_ + "\n# end " + endName(points.end) + " " +
-         number(points.completeContactPressure) + "\npressure,area,h_per_k\n";
+         number(points.completeContactPressure) + "\n" + columns + "\n";
+    if (points.separations.size() != points.pressures.size()) {
+        throw ParameterError("boundary-element table", "the points have no mean separation column to write");
+    }
     for (std::size_t k = 0; k < points.pressures.size(); ++k) {
         s += number(points.pressures[k]) + "," + number(points.areaFractions[k]) + "," +
-             number(points.conductancesPerConductivity[k]) + "\n";
+             number(points.conductancesPerConductivity[k]) + "," + number(points.separations[k]) + "\n";
     }
     return s;
 }
@@ -325,6 +340,12 @@ BoundaryElementTableRead BoundaryElementTable::parse(const std::string& text) co
         for (std::string line; std::getline(in, line);) {
             lines.push_back(line);
         }
+        if (!lines.empty() && lines[0] != boundaryElementTableHeader && lines[0].rfind(headerStem, 0) == 0) {
+            r.status = BoundaryElementTableRead::Status::foreign;
+            r.reason = "it is a table of format " + lines[0].substr(std::string(headerStem).size() - 1) +
+                       ", not this version's (" + boundaryElementTableHeader + "; v2 added the mean separation)";
+            return r;
+        }
         if (lines.empty() || lines[0] != boundaryElementTableHeader) {
             return corrupt(std::string("the first line is not '") + boundaryElementTableHeader + "'");
         }
@@ -340,8 +361,8 @@ BoundaryElementTableRead BoundaryElementTable::parse(const std::string& text) co
             return r;
         }
         if (lines.size() < 5 || lines[2].rfind("# inputs: ", 0) != 0 || lines[3].rfind("# end ", 0) != 0 ||
-            lines[4] != "pressure,area,h_per_k") {
-            return corrupt("lines 3 to 5 are not '# inputs: ...', '# end ...' and 'pressure,area,h_per_k'");
+            lines[4] != columns) {
+            return corrupt(std::string("lines 3 to 5 are not '# inputs: ...', '# end ...' and '") + columns + "'");
         }
         BoundaryElementTablePoints p;
         {
@@ -368,15 +389,24 @@ BoundaryElementTableRead BoundaryElementTable::parse(const std::string& text) co
         }
         for (std::size_t i = 5; i < lines.size(); ++i) {
             const std::string& line = lines[i];
-            const std::size_t c1 = line.find(',');
-            const std::size_t c2 = c1 == std::string::npos ? c1 : line.find(',', c1 + 1);
-            double v[3];
-            if (c2 == std::string::npos || line.find(',', c2 + 1) != std::string::npos ||
-                !parseNumber(line.substr(0, c1), v[0]) || !parseNumber(line.substr(c1 + 1, c2 - c1 - 1), v[1]) ||
-                !parseNumber(line.substr(c2 + 1), v[2]) || !std::isfinite(v[0]) || !std::isfinite(v[1]) ||
-                !std::isfinite(v[2])) {
+            // Four comma-separated finite numbers.
+            double v[4];
+            bool good = true;
+            std::size_t from = 0;
+            for (std::size_t f = 0; f < 4 && good; ++f) {
+                const std::size_t comma = line.find(',', from);
+                const bool last = f == 3;
+                if (last != (comma == std::string::npos)) {
+                    good = false;
+                    break;
+                }
+                good = parseNumber(line.substr(from, last ? std::string::npos : comma - from), v[f]) &&
+                       std::isfinite(v[f]);
+                from = comma + 1;
+            }
+            if (!good) {
                 return corrupt("line " + std::to_string(i + 1) + " '" + line +
-                               "' is not three finite numbers P,area,h_per_k");
+                               "' is not four finite numbers P,area,h_per_k,separation");
             }
             const std::size_t k = i - 5;
             if (k >= pressures_.size() || v[0] != pressures_[k]) {
@@ -387,6 +417,7 @@ BoundaryElementTableRead BoundaryElementTable::parse(const std::string& text) co
             p.pressures.push_back(v[0]);
             p.areaFractions.push_back(v[1]);
             p.conductancesPerConductivity.push_back(v[2]);
+            p.separations.push_back(v[3]);
         }
         // Complete: every load, or up to the load of complete contact, or the ceiling.
         const std::size_t n = p.pressures.size();

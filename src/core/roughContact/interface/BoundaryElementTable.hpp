@@ -3,13 +3,13 @@
 // for large maps) and so kept in a small self-describing text file keyed by a hash of every
 // input that changes it, which a later run reads instead of solving again.
 //
-// The file (v1):
-//     # roughContact boundary-element table v1
+// The file (v2; v1 had no separation column and is read as foreign, i.e. rebuilt):
+//     # roughContact boundary-element table v2
 //     # key <64 hex digits: SHA-256 of the inputs, see key()>
 //     # inputs: <one human-readable line: surface, grid, periodic, E', hardness, loads, tolerance>
 //     # end <maxPressure|completeContact|conductanceCeiling> <complete-contact pressure [Pa] or inf>
-//     pressure,area,h_per_k
-//     <P [Pa]>,<A_r/A_n>,<h_c/k_s [1/m]>        one line per point, 17 significant digits
+//     pressure,area,h_per_k,separation
+//     <P [Pa]>,<A_r/A_n>,<h_c/k_s [1/m]>,<Y [m]>   one line per point, 17 significant digits
 #pragma once
 
 #include "roughContact/surface/ArealSurface.hpp"
@@ -33,6 +33,17 @@ struct BoundaryElementTablePoints {
     std::vector<double> pressures;                   ///< [Pa], increasing
     std::vector<double> areaFractions;               ///< A_r/A_n
     std::vector<double> conductancesPerConductivity; ///< h_c/k_s [1/m]
+    /// The mean separation Y [m] (BoundaryElementPoint::meanSeparation): the gap per cell
+    /// (0 in contact) averaged over the grid, the heights detrended (their least-squares plane
+    /// removed, so Y is measured from the mean plane of the solved map). Periodic: relative to
+    /// the mean displacement, the mean-plane separation of an interface of which the grid is one
+    /// period. Non-periodic (a measured map): the local gaps of the patch loaded on an unbounded
+    /// half-space, so the patch's own bowl-shaped deflection (less at its edges) is averaged in,
+    /// as its constriction is in the spots' conductance (BoundaryElement.hpp); no correction is
+    /// applied to Y. Measured on a 128 x 128 synthesized power law solved both ways: the same Y
+    /// to 0.1 % at p/E' = 1e-4 and 0.5 % at 1e-3, 14 % above the periodic Y at 1e-2. Empty:
+    /// none (ContactTable::fromPoints then makes no separation column).
+    std::vector<double> separations;
     /// The first load of the list at which the solve reports complete contact (A_r/A_n = 1 or
     /// h_c/k_s infinite): from there on the table gives complete contact; +inf: not reached.
     double completeContactPressure = std::numeric_limits<double>::infinity();
@@ -78,14 +89,16 @@ public:
     /// Solves the loads as one warm-started curve (BoundaryElementModel::curve); the table ends
     /// before the first load of complete contact (End::completeContact), after the first with
     /// h_c/k_s > 1e9 1/m (End::conductanceCeiling), or at the last load (End::maxPressure).
-    /// The values are the solve's (a running maximum keeps them non-decreasing should a solve
-    /// dip by its tolerance). ParameterError when fewer than 2 points lie below complete contact.
+    /// The values are the solve's (a running maximum keeps the area and h_c non-decreasing, a
+    /// running minimum the separation non-increasing, should a solve dip by its tolerance). ParameterError when fewer than 2 points lie below complete contact.
     BoundaryElementTablePoints build(const Progress& progress = {}) const;
 
     /// The file's text for points (17 significant digits: reading it back is exact).
+    /// ParameterError for points without their separations (every build() has them).
     std::string write(const BoundaryElementTablePoints& points) const;
     /// The points of a file's text, or why not: corrupt (bad header, number, count, order, a
-    /// NaN, a pressure not of this table's loads) or foreign (a key not this table's). Never throws.
+    /// NaN, a pressure not of this table's loads) or foreign (a key not this table's, or a file
+    /// of another format version, e.g. v1 without the separation column). Never throws.
     BoundaryElementTableRead parse(const std::string& text) const;
     /// parse() of a file; missing when it cannot be opened.
     BoundaryElementTableRead read(const std::string& path) const;
@@ -108,6 +121,6 @@ private:
 };
 
 /// The first line of a table file.
-inline constexpr const char* boundaryElementTableHeader = "# roughContact boundary-element table v1";
+inline constexpr const char* boundaryElementTableHeader = "# roughContact boundary-element table v2";
 
 } // namespace roughContact

@@ -107,6 +107,12 @@ public:
     double areaFraction(double P) const { return table_->areaFraction(P); }
     /// h_c/k_s [1/m] at P [Pa] (0 for P <= 0, +infinity beyond complete contact).
     double conductancePerConductivity(double P) const { return table_->conductancePerConductivity(P); }
+    /// True when the table carries the mean separation (ContactTable.hpp: the laws persson and
+    /// multiscaleBarber, and boundaryElement).
+    bool hasSeparation() const noexcept { return table_->hasSeparation(); }
+    /// The mean-plane separation Y [m] at P [Pa] (ContactTable::meanSeparation): NaN without
+    /// the column and for P <= 0 (faces apart: the caller's case), 0 beyond complete contact.
+    double meanSeparation(double P) const { return table_->meanSeparation(P); }
 
     /// A_r/A_n and h_c = k_s (h_c/k_s)(P) at the nominal pressure P [Pa] (finite; P <= 0: no
     /// contact) between solids of conductivities k1, k2 [W/(m K)] (finite, > 0), with

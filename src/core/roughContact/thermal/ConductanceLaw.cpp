@@ -9,6 +9,7 @@
 #include "roughContact/thermal/MultiscaleBarber.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace roughContact {
 
@@ -45,6 +46,10 @@ public:
     double perConductivity(double P) const override
     {
         return law_.conductancePerConductivity(checkPressure(P) / model_.reducedModulus());
+    }
+    double meanSeparation(double P) const override
+    {
+        return law_.meanSeparation(checkPressure(P) / model_.reducedModulus());
     }
 
 private:
@@ -100,6 +105,10 @@ public:
     {
         return model_.conductancePerConductivity(checkPressure(P) / model_.reducedModulus());
     }
+    double meanSeparation(double P) const override
+    {
+        return model_.meanSeparation(checkPressure(P) / model_.reducedModulus());
+    }
 
 private:
     PerssonModel model_;
@@ -114,6 +123,12 @@ const SurfaceRoughness& needRoughness(const std::string& law, const ConductanceL
 }
 
 } // namespace
+
+double ConductanceLaw::meanSeparation(double P) const
+{
+    checkPressure(P);
+    return std::numeric_limits<double>::quiet_NaN();
+}
 
 const std::vector<std::string>& conductanceLawNames()
 {

@@ -39,6 +39,14 @@ public:
     /// h_c/k_s [1/m] at the nominal pressure P [Pa] (finite, >= 0; 0 gives 0). +infinity where
     /// the law says the surfaces are in complete contact (nothing constricts the flow).
     virtual double perConductivity(double P) const = 0;
+    /// The mean-plane separation Y [m] of the two surfaces at the nominal pressure P [Pa]
+    /// (finite, >= 0 where defined; +inf at P = 0), the gap a gas-gap conductance k_g/(Y + M)
+    /// needs; NaN when the law defines none (this default: mikic, cooperMikicYovanovich,
+    /// jacksonBhavnaniFerguson). persson: PerssonModel::meanSeparation(P/E'); multiscaleBarber:
+    /// MultiscaleBarber::meanSeparation(P/E'), from the energy its conductance differentiates,
+    /// NaN when its model does not reach complete contact. Both are Barber-consistent with
+    /// perConductivity: h_c/k_s = -(1/E') dP/dY.
+    virtual double meanSeparation(double P) const;
 };
 
 /// What the laws are built from; each law takes what it needs and refuses (ParameterError

@@ -170,6 +170,22 @@ ContactTable::ContactTable(const MultiscaleModel& model, double minPressure, dou
     if (p_.size() < 2) {
         throw ParameterError("minimum pressure", "is within one table step of complete contact; lower it");
     }
+    // 4. The law's mean separation, when it has one, at the refined points (not refined on:
+    // linear in log P it is smooth where the area and h are), made non-increasing.
+    if (law != nullptr && !std::isnan(law->meanSeparation(p_.front()))) {
+        double y = std::numeric_limits<double>::infinity();
+        for (const double P : p_) {
+            const double raw = law->meanSeparation(P);
+            if (!(raw >= 0.0 && std::isfinite(raw))) {
+                std::ostringstream os;
+                os << "the law " << law->name() << " gives a mean separation of " << raw << " m at " << P
+                   << " Pa; the table needs finite values >= 0";
+                throw ParameterError("contact table", os.str());
+            }
+            y = std::min(y, raw);
+            separation_.push_back(y);
+        }
+    }
     index();
 }
 
@@ -191,7 +207,8 @@ void ContactTable::index()
 
 ContactTable ContactTable::fromPoints(std::vector<double> pressures, std::vector<double> areaFractions,
                                       std::vector<double> conductancesPerConductivity,
-                                      double completeContactPressure, End end, double Eprime)
+                                      double completeContactPressure, End end, double Eprime,
+                                      std::vector<double> separations)
 {
     requirePositive("reduced modulus E'", Eprime);
     const std::size_t n = pressures.size();
@@ -222,6 +239,30 @@ ContactTable ContactTable::fromPoints(std::vector<double> pressures, std::vector
     if (!(completeContactPressure > pressures.back())) {
         throw ParameterError("contact table", "the complete-contact pressure must lie above the last point");
     }
+    if (!separations.empty()) {
+        if (separations.size() != n) {
+            throw ParameterError("contact table", "the pressures and mean separations differ in number");
+        }
+        for (std::size_t k = 0; k < n; ++k) {
+            const double y = separations[k];
+            std::ostringstream os;
+            os.precision(17);
+            os << "point " << k + 1 << ": the mean separation " << y << " m ";
+            if (std::isnan(y)) {
+                os << "is NaN";
+            } else if (!std::isfinite(y)) {
+                os << "is not finite";
+            } else if (y < 0.0) {
+                os << "is negative";
+            } else if (k > 0 && y > separations[k - 1]) {
+                os << "exceeds the one before (" << separations[k - 1]
+                   << " m): it must be non-increasing in the pressure";
+            } else {
+                continue;
+            }
+            throw ParameterError("contact table", os.str());
+        }
+    }
     ContactTable t;
     t.Eprime_ = Eprime;
     t.pComplete_ = completeContactPressure;
@@ -229,6 +270,7 @@ ContactTable ContactTable::fromPoints(std::vector<double> pressures, std::vector
     t.p_ = std::move(pressures);
     t.area_ = std::move(areaFractions);
     t.h_ = std::move(conductancesPerConductivity);
+    t.separation_ = std::move(separations);
     t.index();
     return t;
 }
@@ -288,6 +330,26 @@ ContactTable::Values ContactTable::values(double P) const
     }
     const Position where = locate(P);
     return {std::min(1.0, at(logArea_, where)), at(logH_, where)};
+}
+
+double ContactTable::meanSeparation(double P) const
+{
+    if (std::isnan(P)) {
+        throw ParameterError("pressure", "is NaN");
+    }
+    if (separation_.empty() || P <= 0.0) {
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+    if (P >= pComplete_) {
+        return 0.0;
+    }
+    const Position where = locate(P);
+    const std::size_t j = where.j;
+    if (where.end) {
+        return separation_[j];
+    }
+    // Linear in log P; below the table the first interval's slope (t < 0), never below 0.
+    return std::max(0.0, separation_[j - 1] + where.t * (separation_[j] - separation_[j - 1]));
 }
 
 } // namespace roughContact

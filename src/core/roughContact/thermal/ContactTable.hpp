@@ -25,6 +25,30 @@ class ConductanceLaw;
 ///                                  conservative floor; choose maxPressure to cover the case);
 ///   P >= completeContactPressure() complete contact: area 1 and h_c/k_s = +infinity (no
 ///                                  constriction left).
+///
+/// The separation column (optional): the mean-plane separation Y [m] of the two surfaces, which
+/// a gas-gap conductance k_g/(Y + M) needs. Built from ConductanceLaw::meanSeparation at every
+/// point when the law defines one (persson, multiscaleBarber; none for the default table, whose
+/// multi-scale constriction sum has no separation), given to fromPoints by a boundary-element
+/// table. Y falls with P and reaches 0 at complete contact, where log Y would diverge, and is
+/// near linear in log P at light load (Persson's p ~ exp(-Y/u0)), so between points Y is
+/// interpolated linearly in log P (not log-log; on persson's table within 2.1e-5 of the law
+/// between points). The table is not refined for Y. A running minimum makes the column
+/// non-increasing (the loading path never opens the gap); on the persson and multiscaleBarber
+/// tables of testSeparation it never acts (the column is the law's bit for bit). Queries
+/// (meanSeparation):
+///   P <= 0                         NaN: the faces are apart, the gap is not the contact's; the
+///                                  caller must handle that case (it has no finite Y);
+///   0 < P < minPressure            the first interval's slope in log P (Y rises as P falls;
+///                                  never below 0), exact for Persson's light-load law;
+///   P beyond the last point but below complete contact: the last point's value, as the other
+///                                  columns (a ceiling-ended table holds it as well);
+///   P >= completeContactPressure() 0: complete contact, the surfaces touch everywhere. It is
+///                                  the area model's complete contact: a law's own Y need not
+///                                  vanish there, and the column then jumps to 0 as h_c/k_s
+///                                  jumps to +inf (persson on the Hurst-0.8 surface of
+///                                  testSeparation: from 2.9 um with jacksonGreen, 8 % of its
+///                                  Y at 1e-9 E', and from 0.3 um with hertz).
 class ContactTable {
 public:
     /// law: the conductance law of the h column (ConductanceLaw.hpp); none: the multi-scale
@@ -37,11 +61,13 @@ public:
     /// A table of precomputed points (e.g. a boundary-element curve, BoundaryElementTable.hpp),
     /// interpolated and queried exactly as the table above: pressures [Pa] strictly increasing
     /// and > 0, at least 2; A_r/A_n in (0, 1] and h_c/k_s > 0, finite, both non-decreasing;
-    /// completeContactPressure above the last pressure (+infinity: none); Eprime [Pa] > 0.
-    /// ParameterError naming what is wrong otherwise.
+    /// completeContactPressure above the last pressure (+infinity: none); Eprime [Pa] > 0;
+    /// separations [m] (optional; empty: no separation column): one per point, finite, >= 0
+    /// and non-increasing. ParameterError naming what is wrong otherwise.
     static ContactTable fromPoints(std::vector<double> pressures, std::vector<double> areaFractions,
                                    std::vector<double> conductancesPerConductivity,
-                                   double completeContactPressure, End end, double Eprime);
+                                   double completeContactPressure, End end, double Eprime,
+                                   std::vector<double> separations = {});
 
     /// A_r/A_n at the nominal pressure P [Pa].
     double areaFraction(double P) const;
@@ -55,6 +81,13 @@ public:
     };
     Values values(double P) const;
 
+    /// True when the table carries a mean separation (above).
+    bool hasSeparation() const noexcept { return !separation_.empty(); }
+    /// The mean-plane separation Y [m] at the nominal pressure P [Pa] by the rules above: NaN
+    /// for P <= 0 and for a table without the column; 0 from complete contact on.
+    /// ParameterError for a NaN P.
+    double meanSeparation(double P) const;
+
     /// The lowest pressure [Pa] of complete contact (A_r = A_n), to 1e-10 relative; +infinity
     /// when the model does not reach it below limits::maximumLoad E' (Limits.hpp).
     double completeContactPressure() const noexcept { return pComplete_; }
@@ -62,6 +95,8 @@ public:
     const std::vector<double>& pressures() const noexcept { return p_; }
     const std::vector<double>& areaFractions() const noexcept { return area_; }
     const std::vector<double>& conductancesPerConductivity() const noexcept { return h_; }
+    /// Y [m] at the points; empty without the column.
+    const std::vector<double>& separations() const noexcept { return separation_; }
     double reducedModulus() const noexcept { return Eprime_; }
 
     /// What ended the table: the maximum pressure asked for (then the values beyond it, up to
@@ -98,6 +133,7 @@ private:
     std::vector<double> h_;
     std::vector<double> logArea_;
     std::vector<double> logH_;
+    std::vector<double> separation_; ///< Y [m] (empty: none), interpolated linearly in log P
 };
 
 } // namespace roughContact

@@ -25,12 +25,33 @@
 // coarse levels close one after another (assumption 5) and the energy that still changes moves
 // to finer levels (h_c ~ load^1.3 on a Hurst 0.8 power law), where Persson's theory and the
 // boundary elements give h_c ~ load.
+// The mean separation. The same relation p = -dU_el/(A_n du) gives u itself: with
+// U = U_el/(A_n E') and load = p/E' it reads dU = -load du, so du = -dU/load and
+//     u(load) = int_{load}^{load_c} (dU/dl) dl / l,                                      (B4)
+// load_c the load of complete contact (every level at a_i = 1: U is constant beyond it, the
+// surfaces touch everywhere, u = 0). Assumptions: (i) the separation is 0 at complete contact
+// and the loading path is the model's monotone one (U non-decreasing in the load); (ii) (B4) is
+// a Stieltjes integral: U built on the traces is only piecewise smooth (a level closes, an
+// asperity law switches, truncation's area doubles), and a jump of U by dU at l adds dU/l to u
+// (the separation drops at once, h_c is infinite there); (iii) the model reaches complete
+// contact below limits::maximumLoad, else the part of (B4) above it is unknown and u is NaN.
+// So that jumps and kinks need no derivative, (B4) is integrated by parts,
+//     u(load) = U_c/load_c - U(load)/load + int_{load}^{load_c} U(l) dl / l^2,           (B5)
+// U_c = U(load_c), the last integral in t = ln l (integrand U e^-t, bounded) over panels of a
+// hundredth of a decade down from load_c by adaptive Gauss-Kronrod (15 points, relative 1e-10),
+// their sums kept (extended down lazily as lower loads are asked, under a lock) so that one u
+// costs one partial panel (10-point Gauss-Legendre: 11 traces, ~10 us). Barber's relation holds for u by construction: -(d load/du) =
+// load/(dU/d load), the conductance above; its central difference (step 1e-3) against the
+// difference of (B5) is met to O(1e-6) where U is smooth (testMultiscaleBarber).
 // What it rests on and how right it is: Barber's relation is exact for elastic contact; (B2) is
 // Yang & Persson's approximation; the multi-scale areas are the model's (2-3 times the exact ones
 // on the synthetic surfaces of docs/validation/fidelity.md), so this law is measured there, not
 // trusted: see README "How right each model is". Elastic contact only.
 #pragma once
 
+#include <cstddef>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 namespace roughContact {
@@ -49,11 +70,29 @@ public:
     double energy(double load) const;
     /// q_i V_i / 4 [m] of every spectrum level (index as LevelState::index).
     const std::vector<double>& binEnergies() const noexcept { return binEnergy_; }
+    /// u of (B4)-(B5) [m], the mean-plane separation at load = p/E' (> 0): non-increasing, 0
+    /// from completeContactLoad() on; +inf at load 0; NaN when the model does not reach
+    /// complete contact below limits::maximumLoad (assumption iii). Thread-safe.
+    double meanSeparation(double load) const;
+    /// load_c: the lowest load with A_r/A_n = 1 (bisection in log load to 1e-10 relative, as
+    /// ContactTable's), +inf when the model does not reach it below limits::maximumLoad.
+    double completeContactLoad() const;
 
 private:
     const MultiscaleModel& model_;
     double gamma_;
     std::vector<double> binEnergy_;
+    // (B5)'s panels, built lazily: load_c, U_c and the sums of int U e^-t dt from load_c down
+    // to the bottom of each panel.
+    struct Separation {
+        std::mutex lock;
+        bool started = false;
+        double loadC = 0.0;
+        double energyC = 0.0;
+        std::vector<double> below;
+    };
+    std::unique_ptr<Separation> separation_ = std::make_unique<Separation>();
+    void startSeparation() const; // with separation_->lock held
 };
 
 } // namespace roughContact
