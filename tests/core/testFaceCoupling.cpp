@@ -480,3 +480,18 @@ TEST(FaceCoupling, BadGapInputIsNamed)
     in.faceTemperature = nullptr;
     EXPECT_THROW(couple(ci, in, cache, out), ParameterError); // the gap needs the face temperatures
 }
+
+// Where the contact model carries a mean separation (here persson's), the gap takes it instead
+// of the correlation.
+TEST(FaceCoupling, TheGapTakesTheModelsSeparation)
+{
+    InterfaceSpec spec = withAirAndRadiation();
+    spec.conductanceLaw = "persson";
+    const ContactInterface ci(spec);
+    ASSERT_TRUE(ci.table().hasSeparation());
+    EXPECT_TRUE(ci.gap().separationFromModel());
+    EXPECT_EQ(ci.gap().separation(1e6), ci.table().meanSeparation(1e6));
+    const ContactInterface byCorrelation(withAirAndRadiation());
+    EXPECT_FALSE(byCorrelation.gap().separationFromModel());
+    EXPECT_NE(byCorrelation.gap().separation(1e6), ci.gap().separation(1e6));
+}

@@ -1,7 +1,7 @@
 # shellcheck shell=bash
 # tests/support/caseFunctions.sh: shared by the case tests under tests/cases (bash; source it).
 # Sets up the project's OpenFOAM environment and gives:
-#   copyCase SRC NAME   copy a tutorial (symlinks resolved) to $work/NAME, cleaned, and print
+#   copyCase SRC NAME   copy a tutorial as a user would (cp -r) to $work/NAME, cleaned, and print
 #                       its path
 #   runCase DIR         Allclean + Allrun of a case, output to DIR/log.Allrun; on failure the
 #                       log's tail goes to stderr
@@ -23,7 +23,7 @@ source "$top/etc/openfoam/environment"
 
 copyCase() { # SRC NAME
     local dest="$work/$2"
-    rm -rf "$dest" && cp -rL "$1" "$dest"
+    rm -rf "$dest" && cp -r "$1" "$dest"
     # A tutorial run in the source tree leaves results and logs; the copy starts clean.
     "$dest/Allclean" > /dev/null 2>&1 || true
     rm -f "$dest"/log.*

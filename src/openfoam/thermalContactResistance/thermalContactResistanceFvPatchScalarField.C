@@ -462,7 +462,7 @@ Foam::thermalContactResistanceFvPatchScalarField::summary() const
     ::roughContact::CouplingSummary s;
     if (coupling_.state.size() == size_t(size()))
     {
-        s.add(coupling_, patch().magSf().cdata(), conductance_.cdata());
+        s.add(coupling_, patch().magSf().cdata(), totalConductance_.cdata());
     }
     // Over all processors: sums, and the extremes where there are any.
     const label nPartialHere = label(s.partial + s.beyondTable);
@@ -640,6 +640,7 @@ thermalContactResistanceFvPatchScalarField
     contactPressure_(p.size(), Zero),
     contactState_(p.size(), Zero),
     gapConductance_(p.size(), Zero),
+    totalConductance_(p.size(), Zero),
     evaluated_(false),
     dictName_(iF.objectPath()),
     dictStart_(-1),
@@ -681,6 +682,7 @@ thermalContactResistanceFvPatchScalarField
     contactPressure_(p.size(), Zero),
     contactState_(p.size(), Zero),
     gapConductance_(p.size(), Zero),
+    totalConductance_(p.size(), Zero),
     evaluated_(false),
     dictName_(dict.name()),
     dictStart_(dict.startLineNumber()),
@@ -741,6 +743,7 @@ thermalContactResistanceFvPatchScalarField
     contactPressure_(ptf.contactPressure_, mapper),
     contactState_(ptf.contactState_, mapper),
     gapConductance_(ptf.gapConductance_, mapper),
+    totalConductance_(ptf.totalConductance_, mapper),
     evaluated_(ptf.evaluated_),
     dictName_(ptf.dictName_),
     dictStart_(ptf.dictStart_),
@@ -791,6 +794,7 @@ thermalContactResistanceFvPatchScalarField
     contactPressure_(ptf.contactPressure_),
     contactState_(ptf.contactState_),
     gapConductance_(ptf.gapConductance_),
+    totalConductance_(ptf.totalConductance_),
     evaluated_(ptf.evaluated_),
     dictName_(ptf.dictName_),
     dictStart_(ptf.dictStart_),
@@ -832,6 +836,7 @@ thermalContactResistanceFvPatchScalarField
     contactPressure_(ptf.contactPressure_),
     contactState_(ptf.contactState_),
     gapConductance_(ptf.gapConductance_),
+    totalConductance_(ptf.totalConductance_),
     evaluated_(ptf.evaluated_),
     dictName_(ptf.dictName_),
     dictStart_(ptf.dictStart_),
@@ -912,6 +917,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::autoMap
     contactPressure_.autoMap(m);
     contactState_.autoMap(m);
     gapConductance_.autoMap(m);
+    totalConductance_.autoMap(m);
     coupling_ = {};
     couplingCache_ = {};
     nbrDeltaCoeffs_.clear();
@@ -937,6 +943,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::rmap
     contactPressure_.rmap(tiptf.contactPressure_, addr);
     contactState_.rmap(tiptf.contactState_, addr);
     gapConductance_.rmap(tiptf.gapConductance_, addr);
+    totalConductance_.rmap(tiptf.totalConductance_, addr);
     coupling_ = {};
     couplingCache_ = {};
     nbrDeltaCoeffs_.clear();
@@ -1099,11 +1106,15 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
     bool beyondTable = false;
     forAll(conductance_, facei)
     {
+        const scalar kDelta = myKappa[facei]*myDeltaCoeffs[facei];
+        const scalar kDeltaNbr = nbrKappa[facei]*nbrDeltaCoeffs_[facei];
         conductance_[facei] = roughContact::shownConductance
         (
-            out.conductance[facei],
-            myKappa[facei]*myDeltaCoeffs[facei],
-            nbrKappa[facei]*nbrDeltaCoeffs_[facei]
+            out.contactConductance[facei], kDelta, kDeltaNbr
+        );
+        totalConductance_[facei] = roughContact::shownConductance
+        (
+            out.conductance[facei], kDelta, kDeltaNbr
         );
         areaFraction_[facei] = out.areaFraction[facei];
         contactPressure_[facei] = out.pressure[facei];

@@ -158,7 +158,11 @@ void ContactInterface::buildGap(const InterfaceSpec& spec)
     std::function<double(double)> separation;
     double sigma = 0.0;
     double Hc = 0.0;
-    {
+    if (table_->hasSeparation()) {
+        // The model's own mean separation (boundaryElement, persson, multiscaleBarber).
+        const ContactTable* table = table_.get(); // owned by this, which is not copied
+        separation = [table](double P) { return table->meanSeparation(P); };
+    } else {
         // The correlation's inputs: the surfaces' combined rms height and the microhardness.
         std::optional<SurfaceRoughness> r;
         for (const SurfaceSpec& s : spec.surfaces) {
