@@ -478,7 +478,7 @@ Foam::thermalContactResistanceFvPatchScalarField::summary() const
         {
             &s.area, &s.touchingArea, &s.partialArea, &s.pressureArea,
             &s.areaFractionArea, &s.areaFractionPartialArea,
-            &s.hTouchingArea, &s.hPartialArea, &s.hAllArea
+            &s.hTouchingArea, &s.hPartialArea, &s.hAllArea, &s.gapAllArea
         }
     )
     {
