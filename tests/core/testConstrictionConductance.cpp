@@ -1,4 +1,4 @@
-// The multi-scale constriction conductance (physics.md §5) and the pressure table the
+// The multi-scale constriction conductance (docs/theory.md §5.2) and the pressure table the
 // boundary condition interpolates: closed forms for one and two levels, Holm's limit, the
 // limits at no and at complete contact, and the table's error against the direct solve.
 #include "roughContact/io/ProfileReader.hpp"
@@ -123,7 +123,7 @@ TEST(ConstrictionConductance, LimitsOnTheStandin)
         for (double load = 1e-8; m->areaFraction(load) < 1.0; load *= 1.5) {
             const double h = constrictionConductancePerConductivity(*m, load);
             EXPECT_TRUE(std::isfinite(h)) << load;
-            if (name != "jgh") { // the seed's jgh area can dip by 0.4 % (physics.md)
+            if (name != "jgh") { // the seed's jgh area can dip by 0.4 %, docs/theory.md §3.2
                 EXPECT_GE(h, previous) << load;
             }
             previous = h;

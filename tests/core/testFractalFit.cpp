@@ -1,4 +1,4 @@
-// Fit of the Weierstrass-Mandelbrot D and G to a spectrum's PSD (physics.md §4, Majumdar & Tien
+// Fit of the Weierstrass-Mandelbrot D and G to a spectrum's PSD (docs/theory.md §4.3, Majumdar & Tien
 // 1990).
 #include "roughContact/Error.hpp"
 #include "roughContact/surface/FractalFit.hpp"
@@ -13,7 +13,7 @@
 using namespace roughContact;
 
 namespace {
-// W-M one-sided PSD S(f) = G^(2(D-1)) / (2 ln(1.5) f^(5-2D)) (physics.md §4), written here
+// W-M one-sided PSD S(f) = G^(2(D-1)) / (2 ln(1.5) f^(5-2D)) (docs/theory.md §4.3), written here
 // independently of Spectrum::fractal.
 double wmPsd(double D, double G, double f)
 {

@@ -1,4 +1,4 @@
-// Greenwood-Williamson with Hertz and Jackson-Green summits (physics.md §4, seed §3.1), against
+// Greenwood-Williamson with Hertz and Jackson-Green summits (docs/theory.md §4.2, seed §3.1), against
 // closed forms and against an independent quadrature (Boost tanh-sinh / exp-sinh, where the
 // code uses adaptive Gauss-Kronrod).
 #include "roughContact/Error.hpp"
@@ -45,7 +45,7 @@ double Fn(double n, double h)
     return q.integrate([&](double t) { return std::pow(t, n) * phi(t + h); }, 1e-13);
 }
 
-// F_1(h) = phi(h) - h Q(h), Q(h) = erfc(h/sqrt 2)/2 (physics.md §4).
+// F_1(h) = phi(h) - h Q(h), Q(h) = erfc(h/sqrt 2)/2 (docs/theory.md §4.2).
 double F1closed(double h)
 {
     return phi(h) - h * 0.5 * std::erfc(h / std::sqrt(2.0));
@@ -361,7 +361,7 @@ TEST(GreenwoodWilliamson, rejectsBadParameters)
 
 TEST(GreenwoodWilliamson, fromSpectrumUsesMcCoolParametersAndScanArea)
 {
-    // Two sinusoids; McCool's parameters by hand (physics.md §4).
+    // Two sinusoids; McCool's parameters by hand (docs/theory.md §4.1).
     const double L = 400e-6;
     const std::vector<double> f{2.5e3, 4e4};
     const std::vector<double> b{0.3e-6, 0.02e-6};

@@ -61,7 +61,7 @@ TEST(JacksonGreen, areaContinuousAndForceJumpsSlightlyAt1point9)
     const double jump = jg.forceRatio(at) / jg.forceRatio(below) - 1.0;
     std::printf("force jump at 1.9 w_c: %.4g %%\n", 100.0 * jump);
     // Eq. 16 at w* = 1.9 against Hertz: +0.06 % for nu = 0.32 (+0.5 % for nu = 0.3, the
-    // figure physics.md §3 quotes; negative above nu ~ 0.33, see the test below).
+    // figure docs/theory.md §3.4 quotes; negative above nu ~ 0.33, see the test below).
     EXPECT_GT(jump, 0.0);
     EXPECT_LT(jump, 0.01);
     // Inside the jump the loading path holds w at 1.9 w_c: same area for every load there.

@@ -41,7 +41,7 @@ TEST(JohnsonGreenwoodHigginson, lightLoadLimitAgainstHertz)
     const Hertz h(Ep);
     const double pbar = 1e-6 * JohnsonGreenwoodHigginson(Ep).completeContactPressure(level);
     const double hertz = h.areaRatio(pbar, level);
-    // Seed form: 2^(2/3) x Hertz (physics.md §3). At x = 1e-6 the blend's correction terms
+    // Seed form: 2^(2/3) x Hertz (docs/theory.md §3.2). At x = 1e-6 the blend's correction terms
     // are x^1.51 ~ 1e-9 relative and x^(1.04 - 2/3) ~ 6e-3 relative: hence 1e-2.
     const double seed = JohnsonGreenwoodHigginson(Ep).areaRatio(pbar, level);
     EXPECT_NEAR(seed / hertz, std::cbrt(4.0), 1e-2 * std::cbrt(4.0));

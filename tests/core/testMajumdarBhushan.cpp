@@ -1,5 +1,5 @@
 // Majumdar-Bhushan fractal contact (Majumdar & Bhushan, ASME J. Tribol. 113 (1991) 1-11;
-// physics.md §4): closed forms against numerical integration of the spot distribution.
+// docs/theory.md §4.4): closed forms against numerical integration of the spot distribution.
 #include "roughContact/Error.hpp"
 #include "roughContact/models/MajumdarBhushan.hpp"
 
@@ -26,8 +26,8 @@ constexpr double H = 2.84 * Sy; // seed §3.1
 
 // MB's geometry of a spot of (truncated) area a: interference delta = G^(D-1) a^((2-D)/2),
 // tip radius R = a^(D/2) / (pi^2 G^(D-1)) (MB 1991). Hertz from the contact area a = pi r^2:
-// F = (4/3) E' r^3 / R. Together: (4 sqrt(pi)/3) E' G^(D-1) a^((3-D)/2), the form physics.md
-// quotes; here it is assembled from the geometry so that the coefficient is checked too.
+// F = (4/3) E' r^3 / R. Together: (4 sqrt(pi)/3) E' G^(D-1) a^((3-D)/2), the form docs/theory.md
+// §4.4 quotes; here it is assembled from the geometry so that the coefficient is checked too.
 double tipRadius(double D, double G, double a)
 {
     return std::pow(a, D / 2.0) / (pi * pi * std::pow(G, D - 1.0));

@@ -1,4 +1,4 @@
-// McCool's spectral moments and summit parameters (McCool, Wear 107 (1986) 37-60; physics.md §4).
+// McCool's spectral moments and summit parameters (McCool, Wear 107 (1986) 37-60; docs/theory.md §4.1).
 // Every expected value is computed here from the sinusoids' amplitudes and frequencies, never by
 // the code under test.
 #include "roughContact/Error.hpp"
@@ -27,7 +27,7 @@ struct Wave {
 
 // <z^2>, <z'^2>, <z''^2> of z = sum beta cos(2 pi f x + phase) for distinct f: cross terms
 // average out over whole periods, each term leaves beta^2/2 times (2 pi f)^(2j) (the j-th
-// derivative multiplies the amplitude by 2 pi f). Angular wavenumber, as physics.md §4 states.
+// derivative multiplies the amplitude by 2 pi f). Angular wavenumber, as docs/theory.md §4.1 states.
 SpectralMoments momentsByHand(const std::vector<Wave>& waves)
 {
     SpectralMoments m{0, 0, 0};
@@ -77,7 +77,7 @@ TEST(SpectralMoments, zeroAmplitudeLevelsCarryNothing)
 TEST(SpectralMoments, mcCoolParametersOfAFewSinusoids)
 {
     const SpectralMoments m = momentsByHand(threeWaves);
-    // McCool (1986), as quoted in physics.md §4.
+    // McCool (1986), as docs/theory.md §4.1 gives them.
     const double eta = m.m4 / (6.0 * pi * std::sqrt(3.0) * m.m2);
     const double R = 0.375 * std::sqrt(pi / m.m4);
     const double alpha = m.m0 * m.m4 / (m.m2 * m.m2);

@@ -1,4 +1,4 @@
-// FFT spectrum of a profile and spectrum algebra (seed §2.1, physics.md §1).
+// FFT spectrum of a profile and spectrum algebra (seed §2.1, docs/theory.md §1.2).
 #include "roughContact/Error.hpp"
 #include "roughContact/surface/Profile.hpp"
 #include "roughContact/surface/Spectrum.hpp"

@@ -116,7 +116,7 @@ TEST(Standin, MultiscaleIsFarLessSensitiveToSamplingThanGW)
     // multi-scale area very little (the low levels set it, seed Fig. 5). "Far less": the
     // multi-scale change in ln(area) is under a third of GW's. Measured on the stand-in:
     // GW 1.59; hertz 0.17, jghConsistent 0.21, jacksonGreen 0.02, truncation 0.00 and the
-    // seed's jgh 0.42 (its area drop at the Eq. 9/10 switch, physics.md, makes it the most
+    // seed's jgh 0.42 (its area drop at the Eq. 9/10 switch, docs/theory.md §3.2, makes it the most
     // sensitive multi-scale form).
     const Profile fine = standin();
     const Profile coarse = fine.subsampled(10);

@@ -46,7 +46,7 @@ TEST(Truncation, areaDoublesAndForceJumpsAtCriticalInterference)
     const double below = std::nextafter(wc, 0.0);
     // Area: pi R w_c elastic, 2 pi R w_c truncated (seed §3.1: "a discontinuity").
     EXPECT_NEAR(t.area(wc, R) / t.area(below, R), 2.0, 1e-14);
-    // Force: H 2 pi R w_c over F_c = 8.52 / C (physics.md §3 algebra).
+    // Force: H 2 pi R w_c over F_c = 8.52 / C (docs/theory.md §3.5).
     const double C = t.onset().C();
     EXPECT_NEAR(t.force(wc, R) / t.force(below, R), 3.0 * 2.84 / C, 1e-12);
     // On the loading path the area jumps at F_c and then holds until F = H 2 pi R w_c.

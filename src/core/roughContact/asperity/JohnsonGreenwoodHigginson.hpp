@@ -13,7 +13,7 @@ namespace roughContact {
 ///   Abar = A1 (1 - x^1.51) + A2 x^1.04 for x < 0.8     (Eq. 9), Abar = A2 for x >= 0.8 (Eq. 10)
 /// and A_i = N_i Abar with N_i = eta_i A_{i-1}, eta_i = 2 f^2.
 ///
-/// Two forms (physics.md §3):
+/// Two forms (docs/theory.md §3.2):
 /// - Form::seed (`jgh`, the default): p* = 2 pi E' beta f (Eq. 6) and Eq. 7 per asperity, as
 ///   the seed writes them. Its light-load limit is 2^(2/3) = 1.59 x Hertz, and Eq. 9 at
 ///   x = 0.8 exceeds Eq. 10 by 21 % (the area drops as the load crosses 0.8 p*).

@@ -1,5 +1,5 @@
 // Hertz up to the critical interference, then the fully plastic truncation model
-// (seed §3.1; Abbott & Firestone; physics.md §3).
+// (seed §3.1; Abbott & Firestone; docs/theory.md §3.5).
 #pragma once
 
 #include "roughContact/material/Materials.hpp"

@@ -15,7 +15,7 @@ public:
     double interferenceRatio() const noexcept { return kappa_; }
     /// w_c = (pi C S_y / (2 E'))^2 R (seed Eq. 11).
     double interference(double R) const noexcept { return kappa_ * R; }
-    /// F_c = (4/3) (R/E')^2 (pi C S_y / 2)^3 (seed Eq. 13, read as physics.md §3 says).
+    /// F_c = (4/3) (R/E')^2 (pi C S_y / 2)^3 (seed Eq. 13, read as docs/theory.md §3.3 explains).
     double force(double R) const noexcept;
     /// A_c = pi^3 (C S_y R / (2 E'))^2 = pi R w_c (seed Eq. 14).
     double area(double R) const noexcept;

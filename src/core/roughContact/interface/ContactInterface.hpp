@@ -116,7 +116,8 @@ public:
 
     /// A_r/A_n and h_c = k_s (h_c/k_s)(P) at the nominal pressure P [Pa] (finite; P <= 0: no
     /// contact) between solids of conductivities k1, k2 [W/(m K)] (finite, > 0), with
-    /// k_s = 2 k1 k2/(k1 + k2) (physics.md §5). ParameterError on a NaN or infinite pressure or a bad k.
+    /// k_s = 2 k1 k2/(k1 + k2) (docs/theory.md §5.1). ParameterError on a NaN or infinite pressure or
+    /// a bad k.
     FaceContact face(double P, double k1, double k2) const;
     /// The last pressure [Pa] the table resolves: above it and below complete contact the
     /// table returns its last values (a floor), so a boundary condition should say so.

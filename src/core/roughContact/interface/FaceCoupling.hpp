@@ -10,7 +10,7 @@
 //              ContactInterface::heldAtTableEnd) or complete (P >= complete contact)
 //   A_r/A_n, h_c = k_s (h_c/k_s)(P)  from the interface's table (ContactInterface), 0 apart,
 //              +inf at complete contact; k_s = 2 k1 k2/(k1 + k2)
-//   h        = h_c + h_g + h_r       (docs/theory.md "Interface conductance"), the gap terms
+//   h        = h_c + h_g + h_r       (docs/theory.md §5.12, "Interface conductance"), the gap terms
 //              (interface/InterfaceGap.hpp) where the interface has a gap, 0 otherwise; at
 //              complete contact there is no gap left and h = +inf
 //   w        = coupledValueFraction(h, kappa1 delta1, kappa2 delta2)  (thermal/InterfaceCoupling)

@@ -1,4 +1,4 @@
-// Elastic and plastic properties of a contact pair (physics.md §1, seed Table 1).
+// Elastic and plastic properties of a contact pair (docs/theory.md §1.7, seed Table 1).
 #pragma once
 
 #include <optional>
@@ -25,7 +25,7 @@ void checkMaterial(const Material& m, const std::string& which);
 inline constexpr double hardnessPerYieldStrength = 2.84;
 
 /// What the contact models need of the pair:
-/// - E' from 1/E' = (1-nu1^2)/E1 + (1-nu2^2)/E2 (physics.md §1),
+/// - E' from 1/E' = (1-nu1^2)/E1 + (1-nu2^2)/E2 (docs/theory.md §1.7),
 /// - the yield strength S_y, Poisson's ratio nu and modulus E of the material that yields
 ///   first (seed Eq. 12: C uses "the Poisson ratio of the material that yields first";
 ///   Eq. 18: e_y = S_y/E).

@@ -59,7 +59,7 @@ GreenwoodWilliamson::GreenwoodWilliamson(const SummitParameters& summits, double
         throw ParameterError("model name", "must not be empty");
     }
     // Where the asperity law jumps or kinks, in t = w / sigma_s, so that no quadrature panel
-    // straddles them (physics.md §3-4): Jackson-Green at w = 1.9 w_c (force jump, area kink)
+    // straddles them (docs/theory.md §3-4): Jackson-Green at w = 1.9 w_c (force jump, area kink)
     // and at complete contact a/R = 1 (area and force stop growing); truncation at w_c (area
     // doubles, force jumps).
     const double R = summits_.R;
@@ -80,7 +80,7 @@ GreenwoodWilliamson::GreenwoodWilliamson(const SummitParameters& summits, double
 std::unique_ptr<GreenwoodWilliamson> GreenwoodWilliamson::fromSpectrum(
     const Spectrum& spectrum, const ContactMaterials& materials, bool jacksonGreen)
 {
-    const SummitParameters p = mcCoolParameters(spectrum); // physics.md §4
+    const SummitParameters p = mcCoolParameters(spectrum); // docs/theory.md §4.1
     const double Ep = materials.reducedModulus();
     if (jacksonGreen) {
         const std::string name = "greenwoodWilliamsonJG";
@@ -98,7 +98,7 @@ std::unique_ptr<GreenwoodWilliamson> GreenwoodWilliamson::fromSpectrum(
 double GreenwoodWilliamson::logIntegral(Quantity q, double h) const
 {
     requireFinite("separation h", h);
-    // eta int_h^inf Q((s-h) sigma_s, R) phi(s) ds with t = s - h (physics.md §4). The largest
+    // eta int_h^inf Q((s-h) sigma_s, R) phi(s) ds with t = s - h (docs/theory.md §4.2). The largest
     // Gaussian weight on t >= 0 is phi(hp), hp = max(h, 0); it is taken out analytically:
     // phi(t + h) / phi(hp) = exp(-((t+h)^2 - hp^2) / 2) <= 1, so nothing underflows at light
     // loads (large h) and ln of the result is exact in the factor.
@@ -155,12 +155,12 @@ double GreenwoodWilliamson::logIntegral(Quantity q, double h) const
 
 double GreenwoodWilliamson::areaFractionAt(double h) const
 {
-    return std::exp(logIntegral(Quantity::area, h)); // A_r/A_n, physics.md §4
+    return std::exp(logIntegral(Quantity::area, h)); // A_r/A_n, docs/theory.md §4.2
 }
 
 double GreenwoodWilliamson::loadAt(double h) const
 {
-    return std::exp(logIntegral(Quantity::force, h)) / Eprime_; // F/(A_n E'), physics.md §4
+    return std::exp(logIntegral(Quantity::force, h)) / Eprime_; // F/(A_n E'), docs/theory.md §4.2
 }
 
 double GreenwoodWilliamson::solveSeparation(double load, double* saturated) const

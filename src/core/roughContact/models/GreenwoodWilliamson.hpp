@@ -1,5 +1,5 @@
 // Greenwood-Williamson: Gaussian summits of one radius R with a spherical-asperity law
-// (Greenwood & Williamson 1966; seed §3.1; physics.md §4).
+// (Greenwood & Williamson 1966; seed §3.1; docs/theory.md §4.2).
 #pragma once
 
 #include "roughContact/asperity/SphericalAsperity.hpp"
@@ -18,7 +18,7 @@ class Spectrum;
 /// Summit heights z are Gaussian with standard deviation sigma_s (s = z / sigma_s standard
 /// normal, density phi); the flat sits at h = d / sigma_s above the mean summit height. A summit
 /// of height s carries the asperity law's area A(w, R) and force F(w, R) at w = (s - h) sigma_s
-/// (physics.md §4):
+/// (docs/theory.md §4.2):
 ///   A_r/A_n   = eta int_h^inf A((s-h) sigma_s, R) phi(s) ds,
 ///   F/(A_n E') = eta/E' int_h^inf F((s-h) sigma_s, R) phi(s) ds.
 /// With Hertz these are pi beta F_1(h) and (4/3) beta (sigma_s/R)^(1/2) F_3/2(h),

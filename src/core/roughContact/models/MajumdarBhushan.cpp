@@ -26,7 +26,7 @@ MajumdarBhushan::MajumdarBhushan(const FractalParameters& fractal, double nomina
         throw ParameterError("fractal dimension D", "must lie strictly between 1 and 2");
     }
     requirePositive("fractal roughness G", fractal_.G);
-    // a_c = G^2 / (K phi/2)^(2/(D-1)), phi = S_y/E, K = H/S_y (physics.md §4), with MB's
+    // a_c = G^2 / (K phi/2)^(2/(D-1)), phi = S_y/E, K = H/S_y (docs/theory.md §4.4), with MB's
     // composite modulus E = E'. In logarithms: (K phi/2)^(2/(D-1)) under- or overflows for D
     // near 1.
     const double phi = Sy_ / Eprime_;
@@ -42,7 +42,7 @@ double MajumdarBhushan::realArea(double aL) const
         throw ParameterError("largest spot area a_L", "must be >= 0");
     }
     const double D = fractal_.D;
-    return D * aL / (2.0 - D); // A_r = int_0^a_L a n(a) da (physics.md §4)
+    return D * aL / (2.0 - D); // A_r = int_0^a_L a n(a) da (docs/theory.md §4.4)
 }
 
 double MajumdarBhushan::load(double aL) const
@@ -50,18 +50,18 @@ double MajumdarBhushan::load(double aL) const
     const double Ar = realArea(aL);
     const double D = fractal_.D;
     const double G = fractal_.G;
-    const double E = Eprime_; // MB's E is the composite modulus (physics.md §4)
+    const double E = Eprime_; // MB's E is the composite modulus (docs/theory.md §4.4)
     if (aL == 0.0) {
         return 0.0;
     }
     const double logAL = std::log(aL);
     if (logAL <= logAc_) {
-        return H_ * Ar; // every spot plastic: F = H A_r (physics.md §4)
+        return H_ * Ar; // every spot plastic: F = H A_r (docs/theory.md §4.4)
     }
     const double l = logAL - logAc_; // ln(a_L / a_c) > 0
-    // Plastic spots a < a_c: H [D/(2-D)] a_L^(D/2) a_c^((2-D)/2) (physics.md §4).
+    // Plastic spots a < a_c: H [D/(2-D)] a_L^(D/2) a_c^((2-D)/2) (docs/theory.md §4.4).
     const double plastic = H_ * D / (2.0 - D) * std::exp(0.5 * D * logAL + 0.5 * (2.0 - D) * logAc_);
-    // Elastic spots a_c < a < a_L (physics.md §4):
+    // Elastic spots a_c < a < a_L (docs/theory.md §4.4):
     // D != 1.5: (4 sqrt(pi)/3) E G^(D-1) [D/(3-2D)] a_L^(D/2) [a_L^x - a_c^x], x = (3-2D)/2;
     // D = 1.5:  sqrt(pi) E G^(1/2) a_L^(3/4) ln(a_L/a_c).
     // [a_L^x - a_c^x] / x = a_c^x expm1(x l) / x, the same closed form without the
@@ -83,7 +83,7 @@ double MajumdarBhushan::largestSpot(double F) const
 {
     requirePositive("contact force F", F);
     const double D = fractal_.D;
-    // All spots plastic while F <= F(a_c) = H D a_c/(2-D): a_L = F (2-D)/(H D) (physics.md §4).
+    // All spots plastic while F <= F(a_c) = H D a_c/(2-D): a_L = F (2-D)/(H D) (docs/theory.md §4.4).
     const double logFc = std::log(H_ * D / (2.0 - D)) + logAc_;
     if (std::log(F) <= logFc) {
         return F * (2.0 - D) / (H_ * D);

@@ -1,5 +1,5 @@
 // Majumdar-Bhushan fractal contact (Majumdar & Bhushan, ASME J. Tribol. 113 (1991) 1-11;
-// seed §3.1; physics.md §4).
+// seed §3.1; docs/theory.md §4.4).
 #pragma once
 
 #include "roughContact/material/Materials.hpp"
@@ -13,7 +13,7 @@ namespace roughContact {
 /// n(a) = (D/2) a_L^(D/2) a^(-(D/2+1)) up to the largest spot a_L, so A_r = D a_L/(2-D).
 /// A spot is plastic (load H a) below the critical area a_c = G^2/(K phi/2)^(2/(D-1)) and
 /// elastic (load (4 sqrt(pi)/3) E G^(D-1) a^((3-D)/2)) above it; phi = S_y/E, H = 2.84 S_y,
-/// K = H/S_y (physics.md §4). E is MB's composite modulus, i.e. E' here.
+/// K = H/S_y (docs/theory.md §4.4). E is MB's composite modulus, i.e. E' here.
 class MajumdarBhushan final : public ContactModel {
 public:
     /// fractal D in (1, 2), G [m] > 0; nominalArea A_n [m^2]; Eprime [Pa]; Sy [Pa].
@@ -26,11 +26,11 @@ public:
 
     /// Largest spot area a_L [m^2] carrying the total force F [N] (> 0).
     double largestSpot(double F) const;
-    /// A_r = D a_L / (2 - D) [m^2] (physics.md §4).
+    /// A_r = D a_L / (2 - D) [m^2] (docs/theory.md §4.4).
     double realArea(double aL) const;
-    /// Total force F [N] when the largest spot is a_L [m^2] (physics.md §4, closed forms).
+    /// Total force F [N] when the largest spot is a_L [m^2] (docs/theory.md §4.4, closed forms).
     double load(double aL) const;
-    /// a_c = G^2 / (K phi/2)^(2/(D-1)) [m^2] (physics.md §4).
+    /// a_c = G^2 / (K phi/2)^(2/(D-1)) [m^2] (docs/theory.md §4.4).
     double criticalArea() const noexcept { return ac_; }
     /// H = 2.84 S_y [Pa] (seed §3.1).
     double hardness() const noexcept { return H_; }

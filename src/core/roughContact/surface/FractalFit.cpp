@@ -30,9 +30,9 @@ FractalParameters fitFractal(const Spectrum& spectrum, double fmin, double fmax)
         const double f = spectrum.frequency(i);
         const double beta = spectrum.amplitude(i);
         if (f < fmin || f > fmax || !(beta > 0.0)) {
-            continue; // outside the band, or a level that carries nothing (physics.md §1)
+            continue; // outside the band, or a level that carries nothing (docs/theory.md §1.2)
         }
-        // One-sided PSD S = beta^2 / (2 df), df = 1/L (physics.md §4; Spectrum::fractal).
+        // One-sided PSD S = beta^2 / (2 df), df = 1/L (docs/theory.md §4.3; Spectrum::fractal).
         x.push_back(std::log(f));
         y.push_back(std::log(0.5 * beta * beta * L));
     }
@@ -56,14 +56,14 @@ FractalParameters fitFractal(const Spectrum& spectrum, double fmin, double fmax)
     const double c = coef[0] - s * xMean;
 
     FractalParameters p{};
-    p.D = 0.5 * (5.0 + s); // slope -(5 - 2D) of the W-M PSD (physics.md §4)
+    p.D = 0.5 * (5.0 + s); // slope -(5 - 2D) of the W-M PSD (docs/theory.md §4.3)
     if (!std::isfinite(p.D) || !(p.D > 1.0 && p.D < 2.0)) {
         std::ostringstream os;
         os << "the fitted PSD slope " << s << " gives D = " << p.D
            << ", outside (1, 2): not a W-M fractal in this band";
         throw ParameterError("fractal dimension D", os.str());
     }
-    // Intercept: ln S(1) = 2 (D-1) ln G - ln(2 ln gamma), gamma = 1.5 (physics.md §4).
+    // Intercept: ln S(1) = 2 (D-1) ln G - ln(2 ln gamma), gamma = 1.5 (docs/theory.md §4.3).
     const double lnGamma = std::log(1.5);
     p.G = std::exp((c + std::log(2.0 * lnGamma)) / (2.0 * (p.D - 1.0)));
     requirePositive("fractal roughness G", p.G);

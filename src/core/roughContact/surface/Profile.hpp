@@ -1,4 +1,4 @@
-// A measured line profile z(x) on a uniform grid (physics.md §1).
+// A measured line profile z(x) on a uniform grid (docs/theory.md §1.1).
 #pragma once
 
 #include <cstddef>
@@ -16,7 +16,7 @@ public:
     const std::vector<double>& heights() const noexcept { return z_; }
     double spacing() const noexcept { return dx_; }
     std::size_t size() const noexcept { return z_.size(); }
-    /// Scan length L = N dx (physics.md §1).
+    /// Scan length L = N dx (docs/theory.md §1.1).
     double length() const noexcept { return dx_ * static_cast<double>(z_.size()); }
     const std::string& source() const noexcept { return source_; }
 

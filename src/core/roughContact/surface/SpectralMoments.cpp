@@ -14,7 +14,7 @@ constexpr double pi = 3.14159265358979323846;
 
 SpectralMoments spectralMoments(const Spectrum& spectrum)
 {
-    // m_n = sum_k (2 pi f_k)^n beta_k^2 / 2 in angular wavenumber (physics.md §4, McCool 1986):
+    // m_n = sum_k (2 pi f_k)^n beta_k^2 / 2 in angular wavenumber (docs/theory.md §4.1, McCool 1986):
     // z = sum beta cos(k x + phase), k = 2 pi f, so <z^2>, <z'^2>, <z''^2> weight beta^2/2 by
     // k^0, k^2, k^4. Cycles instead of radians would scale eta and R by (2 pi)^2.
     SpectralMoments m{0.0, 0.0, 0.0};
@@ -34,10 +34,10 @@ SummitParameters mcCoolParameters(const SpectralMoments& m)
     requirePositive("spectral moment m2", m.m2);
     requirePositive("spectral moment m4", m.m4);
     SummitParameters p{};
-    p.eta = m.m4 / (6.0 * pi * std::sqrt(3.0) * m.m2); // physics.md §4 (McCool 1986)
-    p.R = 0.375 * std::sqrt(pi / m.m4);                // physics.md §4 (McCool 1986)
-    p.alpha = m.m0 * m.m4 / (m.m2 * m.m2);             // physics.md §4 (McCool 1986)
-    const double sigmaS2 = (1.0 - 0.8968 / p.alpha) * m.m0; // physics.md §4 (McCool 1986)
+    p.eta = m.m4 / (6.0 * pi * std::sqrt(3.0) * m.m2); // docs/theory.md §4.1 (McCool 1986)
+    p.R = 0.375 * std::sqrt(pi / m.m4);                // docs/theory.md §4.1 (McCool 1986)
+    p.alpha = m.m0 * m.m4 / (m.m2 * m.m2);             // docs/theory.md §4.1 (McCool 1986)
+    const double sigmaS2 = (1.0 - 0.8968 / p.alpha) * m.m0; // docs/theory.md §4.1 (McCool 1986)
     if (!(sigmaS2 > 0.0) || !std::isfinite(sigmaS2)) {
         std::ostringstream os;
         os << "summit height variance (1 - 0.8968/alpha) m0 must be positive, got " << sigmaS2

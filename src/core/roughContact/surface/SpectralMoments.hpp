@@ -1,12 +1,12 @@
 // McCool's spectral moments and the Greenwood-Williamson summit parameters derived from them
-// (McCool, Wear 107 (1986) 37-60; seed §3.2; physics.md §4).
+// (McCool, Wear 107 (1986) 37-60; seed §3.2; docs/theory.md §4.1).
 #pragma once
 
 namespace roughContact {
 
 class Spectrum;
 
-/// Profile spectral moments in angular wavenumber (physics.md §4):
+/// Profile spectral moments in angular wavenumber (docs/theory.md §4.1):
 /// m0 = <z^2> [m^2], m2 = <z'^2> [-], m4 = <z''^2> [1/m^2].
 struct SpectralMoments {
     double m0;
@@ -14,15 +14,15 @@ struct SpectralMoments {
     double m4;
 };
 
-/// m_n = sum_k (2 pi f_k)^n beta_k^2 / 2 (physics.md §4), the mean squares of z, z', z'' of the
+/// m_n = sum_k (2 pi f_k)^n beta_k^2 / 2 (docs/theory.md §4.1), the mean squares of z, z', z'' of the
 /// sum of sinusoids beta_k cos(2 pi f_k x + phase_k). Every level is weighted beta^2/2, the
-/// Nyquist level of an even-length profile included (physics.md §4 prescribes it for every
-/// level), so m0 equals Spectrum::variance(), not Spectrum::profileVariance().
+/// Nyquist level of an even-length profile included (docs/theory.md §4.1 weights every
+/// level so), so m0 equals Spectrum::variance(), not Spectrum::profileVariance().
 /// Levels with beta_k = 0 contribute nothing.
 SpectralMoments spectralMoments(const Spectrum& spectrum);
 
 /// Gaussian-summit parameters of an isotropic surface from its profile moments (McCool 1986,
-/// physics.md §4).
+/// docs/theory.md §4.1).
 struct SummitParameters {
     double eta;    ///< summit density m4 / (6 pi sqrt(3) m2) [1/m^2]
     double R;      ///< mean summit radius 0.375 sqrt(pi / m4) [m]
@@ -30,7 +30,7 @@ struct SummitParameters {
     double alpha;  ///< bandwidth parameter m0 m4 / m2^2 [-]
 };
 
-/// McCool's summit parameters (physics.md §4) from the moments.
+/// McCool's summit parameters (docs/theory.md §4.1) from the moments.
 /// ParameterError (naming the moment) when a moment is not finite and positive, and when
 /// sigma_s^2 = (1 - 0.8968/alpha) m0 <= 0, i.e. alpha <= 0.8968. The moments of any spectrum
 /// obey m2^2 <= m0 m4 (Cauchy-Schwarz), so alpha >= 1 (= 1 for a single level) and the

@@ -1,4 +1,4 @@
-// The surface as frequency levels f_i with amplitudes beta_i (seed §2.1, physics.md §1).
+// The surface as frequency levels f_i with amplitudes beta_i (seed §2.1, docs/theory.md §1.2).
 #pragma once
 
 #include <cstddef>
@@ -23,7 +23,7 @@ public:
                                      double length, std::string source, bool nyquist);
 
     /// FFT (FFTW) of the profile after removing its mean and linear tilt: f_k = k/L,
-    /// beta_k = 2|Z_k|/N for 0 < k < N/2 and |Z_{N/2}|/N at Nyquist (physics.md §1).
+    /// beta_k = 2|Z_k|/N for 0 < k < N/2 and |Z_{N/2}|/N at Nyquist (docs/theory.md §1.2).
     static Spectrum fromProfile(const Profile& profile);
 
     /// Power law beta = b_m f^-m at the levels f_i = i/L with fmin <= f_i <= fmax
@@ -31,12 +31,12 @@ public:
     static Spectrum powerLaw(double bm, double m, double fmin, double fmax, double length = 0.0);
 
     /// Weierstrass-Mandelbrot (Majumdar-Bhushan) surface of fractal dimension D and roughness
-    /// G [m]: one-sided PSD S(f) = G^(2(D-1)) / (2 ln(gamma) f^(5-2D)), gamma = 1.5 (physics.md
-    /// §4), sampled at f_i = i/L, fmin <= f_i <= fmax: beta_i^2 = 2 S(f_i) / L.
+    /// G [m]: one-sided PSD S(f) = G^(2(D-1)) / (2 ln(gamma) f^(5-2D)), gamma = 1.5
+    /// (docs/theory.md §4.3), sampled at f_i = i/L, fmin <= f_i <= fmax: beta_i^2 = 2 S(f_i) / L.
     static Spectrum fractal(double D, double G, double fmin, double fmax, double length = 0.0);
 
     /// Equivalent surface of two rough surfaces in contact: their powers add level by level
-    /// (physics.md §1). On different frequency grids each level's power is spread over its
+    /// (docs/theory.md §1.5). On different frequency grids each level's power is spread over its
     /// frequency bin and re-binned onto f_k = k/L, L the longer scan, so the total variance is
     /// conserved exactly.
     static Spectrum combine(const Spectrum& a, const Spectrum& b);
@@ -51,7 +51,7 @@ public:
     double nominalArea() const noexcept { return length_ * length_; }
     const std::string& source() const noexcept { return source_; }
 
-    /// Sum of beta_i^2/2: the variance of the sinusoids (physics.md §1). For a spectrum from
+    /// Sum of beta_i^2/2: the variance of the sinusoids (docs/theory.md §1.2). For a spectrum from
     /// an even-length profile the Nyquist level is a cosine sampled at its crests, whose
     /// variance is beta^2 rather than beta^2/2; profileVariance() accounts for that.
     double variance() const;
