@@ -12,6 +12,7 @@
 #include "roughContact/surface/SurfaceChecksum.hpp"
 #include "roughContact/thermal/InterfaceCoupling.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <fstream>
@@ -1099,32 +1100,39 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
     }
 
     const roughContact::CouplingOutputs& out = coupling_;
-    this->refValue() = scalarField(UList<scalar>(coupling_.refValue.data(), size()));
-    this->valueFraction() =
-        scalarField(UList<scalar>(coupling_.valueFraction.data(), size()));
-    bool apart = false;
-    bool beyondTable = false;
-    forAll(conductance_, facei)
+    std::copy(out.refValue.begin(), out.refValue.end(), this->refValue().begin());
+    std::copy
+    (
+        out.valueFraction.begin(), out.valueFraction.end(),
+        this->valueFraction().begin()
+    );
+    const bool apart = out.apart > 0;
+    const bool beyondTable = out.beyondTable > 0;
+
+    // The output fields, where a write will read them: at write times (and
+    // once at the first evaluation).
+    const bool output = db().time().writeTime() || !evaluated_;
+    if (output)
     {
-        const scalar kDelta = myKappa[facei]*myDeltaCoeffs[facei];
-        const scalar kDeltaNbr = nbrKappa[facei]*nbrDeltaCoeffs_[facei];
-        conductance_[facei] = roughContact::shownConductance
-        (
-            out.contactConductance[facei], kDelta, kDeltaNbr
-        );
-        totalConductance_[facei] = roughContact::shownConductance
-        (
-            out.conductance[facei], kDelta, kDeltaNbr
-        );
-        areaFraction_[facei] = out.areaFraction[facei];
-        contactPressure_[facei] = out.pressure[facei];
-        contactState_[facei] = roughContact::contactStateCode(out.state[facei]);
-        gapConductance_[facei] =
-            out.gapConductance[facei] + out.radiativeConductance[facei];
-        apart = apart || out.state[facei] == roughContact::FaceState::apart;
-        beyondTable =
-            beyondTable
-         || out.state[facei] == roughContact::FaceState::beyondTable;
+        forAll(conductance_, facei)
+        {
+            const scalar kDelta = myKappa[facei]*myDeltaCoeffs[facei];
+            const scalar kDeltaNbr = nbrKappa[facei]*nbrDeltaCoeffs_[facei];
+            conductance_[facei] = roughContact::shownConductance
+            (
+                out.contactConductance[facei], kDelta, kDeltaNbr
+            );
+            totalConductance_[facei] = roughContact::shownConductance
+            (
+                out.conductance[facei], kDelta, kDeltaNbr
+            );
+            areaFraction_[facei] = out.areaFraction[facei];
+            contactPressure_[facei] = out.pressure[facei];
+            contactState_[facei] =
+                roughContact::contactStateCode(out.state[facei]);
+            gapConductance_[facei] =
+                out.gapConductance[facei] + out.radiativeConductance[facei];
+        }
     }
 
     if (hConstant_ <= 0)
@@ -1156,8 +1164,11 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
 
     mixedFvPatchScalarField::updateCoeffs();
 
+    if (output)
+    {
+        storeOutput();
+    }
     evaluated_ = true;
-    storeOutput();
 
     UPstream::msgType() = oldTag;
 }

@@ -35,12 +35,33 @@ void requireArrays(const CouplingInputs& in, bool contact, bool gap)
 
 } // namespace
 
+namespace {
+
+/// The per-face checks of the conductivities and cell distances, each named: called only when
+/// the fast test in couple() fails, to throw the error that names what is wrong.
+[[noreturn]] void badFace(const CouplingInputs& in, std::size_t i)
+{
+    requirePositive("kappa", in.kappa[i]);
+    requirePositive("neighbour kappa", in.kappaNbr[i]);
+    requirePositive("deltaCoeffs", in.deltaCoeffs[i]);
+    requirePositive("neighbour deltaCoeffs", in.deltaCoeffsNbr[i]);
+    requirePositive("kappa*deltaCoeffs", in.kappa[i] * in.deltaCoeffs[i]);
+    requirePositive("neighbour kappa*deltaCoeffs", in.kappaNbr[i] * in.deltaCoeffsNbr[i]);
+    throw ParameterError("interface coupling", "bad face"); // not reached
+}
+
+inline bool positiveFinite(double x) { return x > 0.0 && x < std::numeric_limits<double>::infinity(); }
+
+} // namespace
+
 void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCache& cache, CouplingOutputs& out)
 {
     const InterfaceGap* gap = iface.hasGap() ? &iface.gap() : nullptr;
     requireArrays(in, true, gap != nullptr);
     const std::size_t n = in.n;
     out.resize(n);
+    out.apart = 0;
+    out.beyondTable = 0;
     if (cache.pressure.size() != n) {
         // NaN never equals a pressure: every face is looked up on the first call.
         cache.pressure.assign(n, std::numeric_limits<double>::quiet_NaN());
@@ -50,6 +71,9 @@ void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCac
     }
     const ContactTable& table = iface.table();
     const double complete = iface.completeContactPressure();
+    // ContactInterface::heldAtTableEnd(P), its constant part hoisted.
+    const bool tableCut = table.end() == ContactTable::End::maxPressure;
+    const double tableEnd = iface.tableEnd();
     for (std::size_t i = 0; i < n; ++i) {
         try {
             const double P = requireFinite("nominal pressure", nominalPressure(in.pressure[i], in.pressureNbr[i]));
@@ -63,19 +87,26 @@ void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCac
                 cache.separation[i] =
                     gap && P > 0.0 && P < complete ? gap->separation(P) : 0.0;
             }
-            const double k1 = requirePositive("kappa", in.kappa[i]);
-            const double k2 = requirePositive("neighbour kappa", in.kappaNbr[i]);
-            const double ks = harmonicMeanConductivity(k1, k2);
-            const double kDelta = k1 * requirePositive("deltaCoeffs", in.deltaCoeffs[i]);
-            const double kDeltaNbr = k2 * requirePositive("neighbour deltaCoeffs", in.deltaCoeffsNbr[i]);
+            const double k1 = in.kappa[i];
+            const double k2 = in.kappaNbr[i];
+            const double kDelta = k1 * in.deltaCoeffs[i];
+            const double kDeltaNbr = k2 * in.deltaCoeffsNbr[i];
+            // One test on the fast path (finite kDelta > 0 with finite k > 0 implies finite
+            // deltaCoeffs > 0); the named error otherwise.
+            if (!(positiveFinite(k1) && positiveFinite(k2) && positiveFinite(kDelta) && positiveFinite(kDeltaNbr))) {
+                badFace(in, i);
+            }
+            const double ks = 2.0 * k1 * k2 / (k1 + k2); // harmonicMeanConductivity, checked above
 
             FaceState state;
             if (P <= 0.0) {
                 state = FaceState::apart;
+                ++out.apart;
             } else if (P >= complete) {
                 state = FaceState::complete;
-            } else if (iface.heldAtTableEnd(P)) {
+            } else if (tableCut && P > tableEnd) {
                 state = FaceState::beyondTable;
+                ++out.beyondTable;
             } else {
                 state = FaceState::partial;
             }
@@ -95,6 +126,9 @@ void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCac
                 hr = gap->radiativeConductance(T1, T2);
             }
             const double h = hc + hg + hr;
+            // coupledValueFraction(h, kDelta, kDeltaNbr) (thermal/InterfaceCoupling.hpp), its
+            // checks done above: the same operations, so the same bits.
+            const double hEff = std::isinf(h) ? kDeltaNbr : h * kDeltaNbr / (h + kDeltaNbr);
 
             out.state[i] = state;
             out.pressure[i] = P;
@@ -103,7 +137,7 @@ void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCac
             out.gapConductance[i] = hg;
             out.radiativeConductance[i] = hr;
             out.conductance[i] = h;
-            out.valueFraction[i] = coupledValueFraction(h, kDelta, kDeltaNbr);
+            out.valueFraction[i] = hEff / (hEff + kDelta);
             out.refValue[i] = in.cellTemperatureNbr[i];
         } catch (const ParameterError& e) {
             throw FaceError(i, e);
@@ -117,6 +151,8 @@ void coupleConstant(double h, const CouplingInputs& in, CouplingOutputs& out)
     requireArrays(in, false, false);
     const std::size_t n = in.n;
     out.resize(n);
+    out.apart = 0;
+    out.beyondTable = 0;
     for (std::size_t i = 0; i < n; ++i) {
         try {
             const double kDelta =

@@ -97,6 +97,8 @@ struct CouplingOutputs {
     std::vector<double> conductance;          ///< h = h_c + h_g + h_r, +inf at complete contact
     std::vector<double> valueFraction;        ///< the mixed condition's w
     std::vector<double> refValue;             ///< the mixed condition's reference temperature [K]
+    std::size_t apart = 0;                    ///< faces apart (couple(); 0 in coupleConstant)
+    std::size_t beyondTable = 0;              ///< faces beyond the table (couple())
 
     void resize(std::size_t n);
 };
