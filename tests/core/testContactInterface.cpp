@@ -16,8 +16,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace roughContact;
@@ -57,9 +59,20 @@ TEST(ContactInterface, EqualsTheHandBuiltModel)
         const double h = constrictionConductancePerConductivity(m, load);
         EXPECT_NEAR(ci.conductancePerConductivity(P), h, 0.005 * h);
     }
-    // Copper (S_y 0.07 GPa) yields first: complete contact comes at a lower pressure than with
-    // steel's S_y.
-    EXPECT_LT(ci.table().completeContactPressure(), 1e9);
+    // Copper (S_y 0.07 GPa) yields first: the pair takes copper's S_y, E and nu (whichever side
+    // it is on), so complete contact comes at a lower pressure than when copper had steel's
+    // S_y. (Was: `< 1e9`, which any S_y between them and either order satisfied.)
+    EXPECT_EQ(mat.yieldStrength("jacksonGreen"), 0.07e9);
+    EXPECT_EQ(ContactMaterials::pair(copper, steel).yieldStrength("jacksonGreen"), 0.07e9);
+    InterfaceSpec swapped = steelOnCopper();
+    std::swap(swapped.side1, swapped.side2);
+    EXPECT_EQ(ContactInterface(swapped).completeContactPressure(), ci.completeContactPressure());
+    InterfaceSpec hardCopper = steelOnCopper();
+    hardCopper.side2.Sy = 0.2e9; // steel's
+    const double hardComplete = ContactInterface(hardCopper).completeContactPressure();
+    std::printf("complete contact: copper S_y %.4g Pa, with steel's S_y %.4g Pa\n",
+                ci.completeContactPressure(), hardComplete);
+    EXPECT_LT(ci.completeContactPressure(), hardComplete);
     EXPECT_NE(ci.summary().find("jacksonGreen"), std::string::npos);
 }
 
