@@ -54,7 +54,9 @@ void checkProperties(const Spectrum& s)
         const double drop = worstDrop(*m, 1e-9, 10.0, 121);
         if (name == "jgh") {
             // The seed's JGH form (Eq. 9 at pbar/p* = 0.8 is 1.208x Eq. 10) drops the area where
-            // a level switches between them (physics.md); measured <= 0.4 % on these surfaces.
+            // a level switches between them (physics.md): 9.55 % for one level, damped by the
+            // finer partial levels (testMultiscaleModel, which pins the one-level step and
+            // uses the same empirical 1 % on its surface); measured <= 0.4 % on these surfaces.
             // Its corrected sibling jghConsistent is checked strictly with the others.
             EXPECT_LT(drop, 0.01);
         } else {
