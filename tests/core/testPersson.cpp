@@ -14,7 +14,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -273,21 +272,27 @@ TEST(PerssonModel, RefusesBadInput)
     EXPECT_THROW(PerssonModel(flat, Ep), ParameterError);
 }
 
-TEST(PerssonModel, CurveOfAThousandLevelsIsFast)
+TEST(PerssonModel, AThousandLevelsKeepTheClosedForms)
 {
+    // 1000 levels through the factory (its speed is the benchmark's business, not a test's:
+    // was a wall-clock assertion, < 5 s, and sum of separations > 0). The rms gradient is the
+    // 0.1 the spectrum was scaled to (linear in the amplitudes: rounding, 1e-12); the light-load
+    // area is (P3) sqrt(8/pi) p/(E' h') to 1e-10 (as in LightLoadAreaAndCompleteContact), and
+    // the separation's slope in ln p is -u0 (P7) to 1e-4 (as in
+    // SeparationFollowsTheExponentialLawAtLightLoad).
     const Spectrum s = powerLawSpectrum(1, 1000, 0.1);
-    const auto start = std::chrono::steady_clock::now();
     const auto model = makeContactModel("persson", s, ContactMaterials::fromReducedModulus(Ep, std::nullopt, std::nullopt));
     const auto* m = dynamic_cast<const PerssonModel*>(model.get());
     ASSERT_NE(m, nullptr);
-    double sum = 0.0;
-    for (int i = 0; i < 20; ++i) {
-        sum += m->evaluate(1e-6 * std::pow(10.0, 5.0 * i / 19.0)).meanSeparation;
+    EXPECT_NEAR(m->rmsGradient(), 0.1, 1e-12);
+    for (double load : {1e-9, 1e-7}) {
+        const double expected = std::sqrt(8.0 / pi) * load / m->rmsGradient();
+        EXPECT_NEAR(m->areaFraction(load), expected, 1e-10 * expected) << load;
+        const double d = 0.01;
+        const double slope =
+            (m->meanSeparation(load * std::exp(d)) - m->meanSeparation(load * std::exp(-d))) / (2.0 * d);
+        EXPECT_NEAR(slope, -m->lightLoadDecayLength(), 1e-4 * m->lightLoadDecayLength()) << load;
     }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("persson: 1000 levels, construction and 20 loads: %.3f s\n", seconds);
-    EXPECT_GT(sum, 0.0);
-    EXPECT_LT(seconds, 5.0); // generous: a shared, loaded machine
 }
 
 TEST(PerssonModel, AgainstTheBoundaryElementReference)
