@@ -182,9 +182,18 @@ TEST(PerssonModel, LightLoadAreaAndCompleteContact)
     EXPECT_EQ(zero.conductancePerConductivity, 0.0);
     // Near complete contact u falls like exp(-(sqrt(2) load/h')^2) and h_c/k_s rises like its
     // inverse; finite within double range (to load ~ 19 h'), +inf beyond and u = 0, no trap.
+    // There h_c/k_s is still Barber's relation -load/(du/d ln p) (as in the test below), by a
+    // central difference with step 1e-6 in ln p: d ln u/d ln p ~ -4 (load/h')^2 = -400, so the
+    // truncation is (1e-6 x 400)^2/6 ~ 3e-8; 1e-6 relative. (Was: only "finite".)
     const PerssonPoint near = m.evaluate(10.0 * h);
     EXPECT_GT(near.meanSeparation, 0.0);
-    EXPECT_TRUE(std::isfinite(near.conductancePerConductivity));
+    {
+        const double load = 10.0 * h;
+        const double d = 1e-6;
+        const double dudlnp =
+            (m.meanSeparation(load * std::exp(d)) - m.meanSeparation(load * std::exp(-d))) / (2.0 * d);
+        EXPECT_NEAR(near.conductancePerConductivity, -load / dudlnp, -1e-6 * load / dudlnp);
+    }
     const PerssonPoint far = m.evaluate(1e4);
     EXPECT_EQ(far.areaFraction, 1.0);
     EXPECT_EQ(far.meanSeparation, 0.0);
