@@ -139,10 +139,26 @@ TEST(ContactInterface, OtherSurfaceKinds)
     spec.surfaces.front().length = 5e-4;
     const ContactInterface p(spec);
     EXPECT_EQ(p.surface().size(), 1000U); // f = i/L for i = 1..1000
+    // The levels are the ones described (was: only the count, and area > 0 for the fractal):
+    // beta_i = b_m f_i^-m, f_i = i/L (Spectrum.hpp); a pow and a product, 1e-14.
+    for (std::size_t i : {1u, 10u, 1000u}) {
+        const double fi = double(i) / 5e-4;
+        const double beta = 1e-7 * std::pow(2e3, 1.2) * std::pow(fi, -1.2);
+        EXPECT_NEAR(p.surface().frequencies()[i - 1], fi, 1e-14 * fi) << i;
+        EXPECT_NEAR(p.surface().amplitudes()[i - 1], beta, 1e-14 * beta) << i;
+    }
     spec.surfaces.front().kind = SurfaceSpec::Kind::fractal;
     spec.surfaces.front().parameters = {1.5, 1e-10, 2e3, 2e6};
     const ContactInterface f(spec);
     EXPECT_GT(f.areaFraction(1e6), 0.0);
+    // Weierstrass-Mandelbrot: beta_i^2 = 2 S(f_i)/L, S(f) = G^(2(D-1))/(2 ln 1.5 f^(5-2D)); with
+    // D = 1.5, beta_i = sqrt(G/(ln 1.5 f_i^2 L)). A pow, a log and a sqrt: 1e-14.
+    ASSERT_EQ(f.surface().size(), 1000U);
+    for (std::size_t i : {1u, 10u, 1000u}) {
+        const double fi = double(i) / 5e-4;
+        const double beta = std::sqrt(1e-10 / (std::log(1.5) * fi * fi * 5e-4));
+        EXPECT_NEAR(f.surface().amplitudes()[i - 1], beta, 1e-14 * beta) << i;
+    }
 }
 
 TEST(ContactInterface, RefusesBadDescriptions)
