@@ -595,7 +595,12 @@ TEST(BoundaryElementModel, APatchsConductanceLessItsOwnConstrictionIsTheInterfac
     const BoundaryElementModel periodic(arealOf(h, n, L, "random"), Ep, periodicOptions);
     const BoundaryElementModel patch(arealOf(h, n, L, "random"), Ep);
     EXPECT_TRUE(std::isinf(periodic.patchConductancePerConductivity()));
-    EXPECT_TRUE(std::isfinite(patch.patchConductancePerConductivity()));
+    // The bonded square patch: within 3 % above the disc of equal area, h A_n = 2 k_s sqrt(A_n/pi)
+    // (Holm), 2/(L sqrt(pi)) = 11284 1/m, as SpotConductance's bonded square (measured 1.0185 at
+    // 128^2). (Was: only "finite".)
+    const double disc = 2.0 / (L * std::sqrt(pi));
+    EXPECT_GT(patch.patchConductancePerConductivity() / disc, 1.0);
+    EXPECT_LT(patch.patchConductancePerConductivity() / disc, 1.03);
     for (double load : {3e-4, 2e-3}) {
         const BoundaryElementPoint a = periodic.solve(load);
         const BoundaryElementPoint b = patch.solve(load);
@@ -628,7 +633,14 @@ TEST(BoundaryElementModel, CompleteContactAndHardnessLimits)
     EXPECT_EQ(full.conductancePerConductivity, std::numeric_limits<double>::infinity());
     const BoundaryElementPoint part = model.solve(0.25 * pStar / Ep);
     EXPECT_NEAR(part.areaFraction, 1.0 / 3.0, 2.0 / double(n));
-    EXPECT_TRUE(std::isfinite(part.conductancePerConductivity));
+    // Its conductance (was: only "finite"): Westergaard's mean gap at x = p/p* is
+    // D (1 - x + x ln x), so du/dp = (D/p*) ln x = (L/(pi E')) ln x, and Barber's relation
+    // h_c/k_s = -(1/E') dp/du gives pi/(L ln(1/x)) = pi/(2 L ln(1/sin(pi a/L))): with
+    // sin(pi a/L) = 1/2 at x = 1/4, pi/(2 L ln 2) = 22662 1/m. The contact's edges are resolved
+    // to a cell: half a cell (a/L +- 1/128) moves the closed form by 7.85/128 = 6 %; measured
+    // +1.8 % (the bonded square's +1.8 % below has the same cause); bound 3 %.
+    const double strips = pi / (2.0 * L * std::log(2.0));
+    EXPECT_NEAR(part.conductancePerConductivity / strips, 1.0, 0.03) << part.conductancePerConductivity;
     o.hardness = 0.1 * pStar;
     const BoundaryElementModel soft(ArealSurface(ridge(n, n, D), n, n, L / n, L / n, "ridge"), Ep, o);
     EXPECT_EQ(soft.solve(0.2 * pStar / Ep).areaFraction, 1.0);

@@ -16,8 +16,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace roughContact;
@@ -57,9 +59,20 @@ TEST(ContactInterface, EqualsTheHandBuiltModel)
         const double h = constrictionConductancePerConductivity(m, load);
         EXPECT_NEAR(ci.conductancePerConductivity(P), h, 0.005 * h);
     }
-    // Copper (S_y 0.07 GPa) yields first: complete contact comes at a lower pressure than with
-    // steel's S_y.
-    EXPECT_LT(ci.table().completeContactPressure(), 1e9);
+    // Copper (S_y 0.07 GPa) yields first: the pair takes copper's S_y, E and nu (whichever side
+    // it is on), so complete contact comes at a lower pressure than when copper had steel's
+    // S_y. (Was: `< 1e9`, which any S_y between them and either order satisfied.)
+    EXPECT_EQ(mat.yieldStrength("jacksonGreen"), 0.07e9);
+    EXPECT_EQ(ContactMaterials::pair(copper, steel).yieldStrength("jacksonGreen"), 0.07e9);
+    InterfaceSpec swapped = steelOnCopper();
+    std::swap(swapped.side1, swapped.side2);
+    EXPECT_EQ(ContactInterface(swapped).completeContactPressure(), ci.completeContactPressure());
+    InterfaceSpec hardCopper = steelOnCopper();
+    hardCopper.side2.Sy = 0.2e9; // steel's
+    const double hardComplete = ContactInterface(hardCopper).completeContactPressure();
+    std::printf("complete contact: copper S_y %.4g Pa, with steel's S_y %.4g Pa\n",
+                ci.completeContactPressure(), hardComplete);
+    EXPECT_LT(ci.completeContactPressure(), hardComplete);
     EXPECT_NE(ci.summary().find("jacksonGreen"), std::string::npos);
 }
 
@@ -126,10 +139,26 @@ TEST(ContactInterface, OtherSurfaceKinds)
     spec.surfaces.front().length = 5e-4;
     const ContactInterface p(spec);
     EXPECT_EQ(p.surface().size(), 1000U); // f = i/L for i = 1..1000
+    // The levels are the ones described (was: only the count, and area > 0 for the fractal):
+    // beta_i = b_m f_i^-m, f_i = i/L (Spectrum.hpp); a pow and a product, 1e-14.
+    for (std::size_t i : {1u, 10u, 1000u}) {
+        const double fi = double(i) / 5e-4;
+        const double beta = 1e-7 * std::pow(2e3, 1.2) * std::pow(fi, -1.2);
+        EXPECT_NEAR(p.surface().frequencies()[i - 1], fi, 1e-14 * fi) << i;
+        EXPECT_NEAR(p.surface().amplitudes()[i - 1], beta, 1e-14 * beta) << i;
+    }
     spec.surfaces.front().kind = SurfaceSpec::Kind::fractal;
     spec.surfaces.front().parameters = {1.5, 1e-10, 2e3, 2e6};
     const ContactInterface f(spec);
     EXPECT_GT(f.areaFraction(1e6), 0.0);
+    // Weierstrass-Mandelbrot: beta_i^2 = 2 S(f_i)/L, S(f) = G^(2(D-1))/(2 ln 1.5 f^(5-2D)); with
+    // D = 1.5, beta_i = sqrt(G/(ln 1.5 f_i^2 L)). A pow, a log and a sqrt: 1e-14.
+    ASSERT_EQ(f.surface().size(), 1000U);
+    for (std::size_t i : {1u, 10u, 1000u}) {
+        const double fi = double(i) / 5e-4;
+        const double beta = std::sqrt(1e-10 / (std::log(1.5) * fi * fi * 5e-4));
+        EXPECT_NEAR(f.surface().amplitudes()[i - 1], beta, 1e-14 * beta) << i;
+    }
 }
 
 TEST(ContactInterface, RefusesBadDescriptions)

@@ -54,15 +54,19 @@ void checkProperties(const Spectrum& s)
         const double drop = worstDrop(*m, 1e-9, 10.0, 121);
         if (name == "jgh") {
             // The seed's JGH form (Eq. 9 at pbar/p* = 0.8 is 1.208x Eq. 10) drops the area where
-            // a level switches between them (docs/theory.md §3.2); measured <= 0.4 % on these surfaces.
+            // a level switches between them (docs/theory.md §3.2): 9.55 % for one level, damped by the
+            // finer partial levels (testMultiscaleModel, which pins the one-level step and
+            // uses the same empirical 1 % on its surface); measured <= 0.4 % on these surfaces.
             // Its corrected sibling jghConsistent is checked strictly with the others.
             EXPECT_LT(drop, 0.01);
         } else {
             EXPECT_EQ(drop, 0.0);
         }
-        // Far beyond any complete contact the models report complete contact (or stay below
-        // it for the purely elastic GW-Hertz, whose integral is capped at 1).
-        EXPECT_LE(m->areaFraction(1e3), 1.0);
+        // Far beyond any complete contact every model reports complete contact, exactly 1: at
+        // F = 1000 A_n E' the mean pressure exceeds every level's p* (2 pi E' b f, with slopes
+        // b f far below 1000/(2 pi)) and any hardness (~3 S_y = 3e-3 E'), and GW's summits
+        // flattened cover more than A_n. (Was: <= 1, which every model's cap satisfies at any load.)
+        EXPECT_EQ(m->areaFraction(1e3), 1.0);
         EXPECT_THROW(m->areaFraction(-1e-5), std::invalid_argument);
         EXPECT_THROW(m->areaFraction(std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
         EXPECT_THROW(m->areaFraction(std::numeric_limits<double>::infinity()), std::invalid_argument);

@@ -7,6 +7,7 @@
 #include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/interface/FaceCoupling.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
+#include "roughContact/thermal/GapConductance.hpp"
 #include "roughContact/thermal/InterfaceCoupling.hpp"
 
 #include <gtest/gtest.h>
@@ -392,8 +393,12 @@ TEST(FaceCoupling, TheGapAddsGasAndRadiation)
     EXPECT_EQ(out.state[1], FaceState::partial);
     const double ks = harmonicMeanConductivity(50.0, 50.0);
     EXPECT_EQ(out.contactConductance[1], ks * ci.conductancePerConductivity(1e6));
+    // Y is that correlation (testGapConductance pins it against the normal quantile) at the
+    // stand-in's sigma = 0.115 um (exact to 1e-12, testStandinTrends) and H_c = 2.84 x 0.07 GPa;
+    // Y is proportional to sigma: 1e-10. (Was: Y > 0, and the gap term with this same Y.)
     const double Y = ci.gap().separation(1e6);
-    EXPECT_GT(Y, 0.0);
+    const double expectedY = gapSeparationCorrelation(1e6, 0.115e-6, 2.84 * 0.07e9);
+    EXPECT_NEAR(Y, expectedY, 1e-10 * expectedY);
     EXPECT_NEAR(out.gapConductance[1], 0.0262 / (Y + 246.4e-9), 1e-3 * 0.0262 / (Y + 246.4e-9));
     EXPECT_EQ(out.conductance[1], out.contactConductance[1] + out.gapConductance[1] + out.radiativeConductance[1]);
 

@@ -284,15 +284,25 @@ TEST(GreenwoodWilliamson, jacksonGreenIsHertzBelowYield)
     }
 }
 
-TEST(GreenwoodWilliamson, jacksonGreenCarriesLessAreaThanHertzAtTheSameLoadOnlyBeyondYield)
+TEST(GreenwoodWilliamson, jacksonGreenSummitsCarryMoreAreaAtLowerPressureThanHertz)
 {
     // Physics sanity: at a given separation the JG summits, once plastic, carry more area than
-    // Hertz (Eq. 15's factor (w/1.9w_c)^B > 1) and less force per area.
+    // Hertz (Eq. 15's factor (w/1.9w_c)^B > 1) and less force per area, and so at a given load
+    // more area too (measured 9.7x, 11x, 15x at loads 1e-9, 1e-6, 1e-3). With seed Table 1,
+    // 1.9 w_c = 1.9 (pi C S_y/(2 E'))^2 R = 1.0e-3 sigma_s: nearly every contacting summit has
+    // yielded at any load, so the difference shows at every load. (Was named
+    // ...CarriesLessAreaThanHertzAtTheSameLoadOnlyBeyondYield: the opposite of what it checked
+    // and of what the model does.) The values themselves are pinned by
+    // jacksonGreenAgainstIndependentQuadrature.
     const GreenwoodWilliamson hz = hertzModel();
     const GreenwoodWilliamson jg(table1, 1e-6, Ep, jgLaw(), "greenwoodWilliamsonJG");
     for (double h : {-1.0, 0.0, 2.0}) {
         EXPECT_GT(jg.areaFractionAt(h), hz.areaFractionAt(h));
         EXPECT_LT(jg.loadAt(h) / jg.areaFractionAt(h), hz.loadAt(h) / hz.areaFractionAt(h));
+    }
+    for (double load : {1e-9, 1e-6, 1e-3}) {
+        std::printf("load %g: JG/Hertz area %.6f\n", load, jg.areaFraction(load) / hz.areaFraction(load));
+        EXPECT_GT(jg.areaFraction(load), hz.areaFraction(load)) << load;
     }
 }
 

@@ -105,16 +105,43 @@ TEST(MultiscaleModel, areaBetweenZeroAndNominalAndNeverDecreasingWithLoad)
             previous = std::max(previous, a);
         }
         if (asperity->name() == "jgh") {
-            // The seed's JGH form drops by up to 9.5 % where a level crosses p/p* = 0.8
-            // (Eq. 9 > 1 is capped at complete contact, then Eq. 10 = 0.905): a documented
-            // inconsistency of the seed, absent from jghConsistent.
+            // The seed's JGH form drops where a level crosses pbar/p* = 0.8: Eq. 9 > 1 is capped
+            // at complete contact, then Eq. 10 gives 1 - 3 (0.2)/(2 pi) = 0.9045, a 9.55 % step
+            // of that level's area (pinned exactly by the one-level test below). In the final
+            // area the step is damped by the partial levels finer than the switching one: each
+            // takes about the cube root of the area it is given (A_k ~ F^(2/3) A_{k-1}^(1/3),
+            // seed Eq. 26), so after m of them the drop is about 1 - 0.9045^(3^-m): 3.3 %,
+            // 1.1 %, 0.37 % for m = 1, 2, 3. How many there are depends on the surface, so the
+            // bound is empirical: measured 0.42 % here and <= 0.4 % on the surfaces of
+            // testContactModels, which uses the same 1 %. It fails if the switch moves to 0.85
+            // (5.5 % here). (Was: 9.55 %, the undamped one-level step, 23 times the measured
+            // drop, while testContactModels allowed 1 % for the same quantity.)
             std::printf("jgh (seed form): %zu drops, worst %.3g %%\n", drops, 100 * worstDrop);
-            EXPECT_LE(worstDrop, 1.0 - (1.0 - 3.0 / (2.0 * pi) * 0.2) + 1e-12);
+            EXPECT_GE(drops, 1u) << "the seed form's drop is what this documents";
+            EXPECT_LT(worstDrop, 0.01);
         } else {
             EXPECT_EQ(drops, 0u) << asperity->name() << " worst drop " << worstDrop;
         }
         EXPECT_EQ(m.areaFraction(0.0), 0.0);
     }
+}
+
+TEST(MultiscaleModel, seedJghDropOfOneLevelIsEquation10AtPoint8)
+{
+    // One level: A_r/A_n is that level's ratio at pbar = load E' (seed Eq. 2 with i = 1). With
+    // p* = 2 pi E' b f (seed Eq. 6), just below pbar = 0.8 p* Eq. 9 exceeds 1 (1.208 x Eq. 10)
+    // and the area is complete contact, 1; at and above 0.8 p* it is Eq. 10,
+    // 1 - 3 (1 - x)/(2 pi): at x = 0.8 (1 + 1e-9) 1 - 0.6/(2 pi) + 3 (0.8e-9)/(2 pi), i.e. a
+    // drop of 0.6/(2 pi) = 9.549 % to 4e-10; 1e-9 covers it and the rounding of x.
+    const double L = 1e-3;
+    const double f = 1.0 / L;
+    const double b = 1e-7;
+    const MultiscaleModel m(Spectrum({f}, {b}, L), Ep, std::make_shared<JohnsonGreenwoodHigginson>(Ep));
+    const double switchLoad = 0.8 * 2.0 * pi * b * f; // 0.8 p*/E'
+    const double before = m.areaFraction(switchLoad * (1.0 - 1e-9));
+    const double after = m.areaFraction(switchLoad * (1.0 + 1e-9));
+    EXPECT_EQ(before, 1.0);
+    EXPECT_NEAR(1.0 - after / before, 0.6 / (2.0 * pi), 1e-9);
 }
 
 TEST(MultiscaleModel, completeContactAtVeryHighLoad)
