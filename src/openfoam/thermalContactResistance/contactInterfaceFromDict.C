@@ -372,12 +372,18 @@ roughContact::BoundaryElementTablePoints boundaryElementPoints
             std::isinf(points.completeContactPressure)
           ? -1 : points.completeContactPressure;
         label end = label(points.end);
+#if OPENFOAM >= 2212
+        // Pstream::scatter is deprecated from v2412 (since 2024-01); broadcast
+        // (from v2206) sends the master's values to all the same way
+        Pstream::broadcasts(UPstream::worldComm, P, A, H, Y, complete, end);
+#else
         Pstream::scatter(P);
         Pstream::scatter(A);
         Pstream::scatter(H);
         Pstream::scatter(Y);
         Pstream::scatter(complete);
         Pstream::scatter(end);
+#endif
         points.pressures.assign(P.begin(), P.end());
         points.areaFractions.assign(A.begin(), A.end());
         points.conductancesPerConductivity.assign(H.begin(), H.end());

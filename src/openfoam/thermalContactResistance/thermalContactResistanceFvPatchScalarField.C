@@ -621,10 +621,16 @@ thermalContactResistanceFvPatchScalarField
 )
 :
     mixedFvPatchScalarField(p, iF),
+#if OPENFOAM >= 2212
+    // The word-based constructor was removed in v2212; as the stock
+    // turbulentTemperatureCoupledBaffleMixed: the default method (fluidThermo)
+    temperatureCoupledBase(patch()),
+#else
     temperatureCoupledBase
     (
         patch(), "undefined", "undefined", "undefined-K", "undefined-alpha"
     ),
+#endif
     TnbrName_("undefined-Tnbr"),
     contactName_(),
     hConstant_(-1),
@@ -909,6 +915,10 @@ void Foam::thermalContactResistanceFvPatchScalarField::autoMap
 )
 {
     mixedFvPatchScalarField::autoMap(m);
+#if OPENFOAM >= 2112
+    // kappaMethod function (v2112): its PatchFunction1 is mapped by the base
+    temperatureCoupledBase::autoMap(m);
+#endif
     if (pressure_.valid())
     {
         pressure_->autoMap(m);
@@ -933,6 +943,9 @@ void Foam::thermalContactResistanceFvPatchScalarField::rmap
 )
 {
     mixedFvPatchScalarField::rmap(ptf, addr);
+#if OPENFOAM >= 2112
+    temperatureCoupledBase::rmap(ptf, addr);
+#endif
     const auto& tiptf =
         refCast<const thermalContactResistanceFvPatchScalarField>(ptf);
     if (pressure_.valid() && tiptf.pressure_.valid())
