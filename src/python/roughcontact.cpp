@@ -163,6 +163,7 @@ file content, ParameterError ("NAME: message") for a bad parameter; both derive 
 PYBIND11_MODULE(roughcontact, m)
 {
     m.doc() = moduleDoc;
+    m.attr("__version__") = ROUGHCONTACT_VERSION; // the CMake project's version
 
     // ---- errors
     inputErrorType = PyErr_NewExceptionWithDoc(
