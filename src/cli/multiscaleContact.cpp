@@ -1,7 +1,9 @@
 // multiscaleContact: real contact area of rough surfaces against load, from the command line.
 // The interface is fixed (issue 2): scripts rely on --profile/--spectrum, --model, the
-// material options, --loads/--load-range, --levels and the CSV columns load and area.
+// material options, --loads/--load-range, --levels and the CSV columns load and area. --pressures
+// (nominal pressures in Pa, each the load P/E') adds a first column nominal_pressure [Pa].
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 #include "roughContact/io/ArealReader.hpp"
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/io/SpectrumReader.hpp"
@@ -62,6 +64,7 @@ struct Options {
     std::vector<double> Sy;
     std::vector<std::string> loads; // as given: "1e-5,1e-4" (split here, so "" is an error)
     std::string loadRange;
+    std::vector<std::string> pressures; // --pressures: nominal pressures F/A_n [Pa], as given
     std::optional<double> D;
     std::optional<double> G;
     std::string fitRange;
@@ -92,8 +95,36 @@ std::vector<double> splitNumbers(const std::string& text, char sep, const std::s
     return out;
 }
 
-std::vector<double> loadsOf(const Options& o)
+// The loads F/(A_n E') to compute: --loads, --load-range, or --pressures [Pa] divided by E' (Ep);
+// `given` (optional) receives the --pressures as given, one per load.
+std::vector<double> loadsOf(const Options& o, double Ep, std::vector<double>* given = nullptr)
 {
+    if (!o.pressures.empty()) {
+        std::vector<double> out;
+        for (const std::string& text : o.pressures) {
+            for (double P : splitNumbers(text, ',', "--pressures")) {
+                if (P < 0.0) {
+                    std::ostringstream os;
+                    os << "the nominal pressure F/A_n must be >= 0 Pa, got " << P;
+                    throw ParameterError("--pressures", os.str());
+                }
+                const double load = P / Ep;
+                try {
+                    out.push_back(checkLoad(load));
+                } catch (const ParameterError&) {
+                    std::ostringstream os;
+                    os << P << " Pa is the load F/(A_n E') = " << load << " with E' = " << Ep
+                       << " Pa; loads must be 0 or within [" << limits::minimumLoad << ", " << limits::maximumLoad
+                       << "]";
+                    throw ParameterError("--pressures", os.str());
+                }
+                if (given != nullptr) {
+                    given->push_back(P);
+                }
+            }
+        }
+        return out;
+    }
     if (!o.loadRange.empty()) {
         const std::vector<double> r = splitNumbers(o.loadRange, ':', "--load-range");
         if (r.size() != 3) {
@@ -244,6 +275,10 @@ SurfaceRoughness roughnessOf(const Options& o)
 
 ContactMaterials materialsOf(const Options& o)
 {
+    if (!o.pressures.empty() && !o.Eprime && o.E.empty()) {
+        throw ParameterError("--pressures", "needs E' [Pa] to turn the pressures into loads F/(A_n E'): give "
+                                            "--E (with --nu) or --Eprime");
+    }
     if (o.Eprime) {
         if (o.nu.size() > 1 || o.Sy.size() > 1) {
             throw ParameterError("--Eprime",
@@ -357,7 +392,8 @@ int runBoundaryElement(const Options& o)
     BoundaryElementOptions bo;
     bo.periodic = periodic;
     bo.hardness = hardnessOf(o, materials, "boundaryElement --hardness-from-yield");
-    const std::vector<double> loads = loadsOf(o);
+    std::vector<double> pressures; // --pressures [Pa]: the first column
+    const std::vector<double> loads = loadsOf(o, materials.reducedModulus(), &pressures);
     const BoundaryElementModel model(surface, materials.reducedModulus(), bo);
     const auto start = std::chrono::steady_clock::now();
     const auto seconds = [&] {
@@ -381,8 +417,12 @@ int runBoundaryElement(const Options& o)
         });
     std::ostringstream out;
     out.precision(10);
-    out << "load,area,pressure,separation,h_per_k,iterations,residual\n";
-    for (const BoundaryElementPoint& p : points) {
+    out << (pressures.empty() ? "" : "nominal_pressure,") << "load,area,pressure,separation,h_per_k,iterations,residual\n";
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const BoundaryElementPoint& p = points[i];
+        if (!pressures.empty()) {
+            out << pressures[i] << ',';
+        }
         out << p.load << ',' << p.areaFraction << ',';
         if (p.areaFraction > 0.0) {
             out << p.load / p.areaFraction;
@@ -456,7 +496,8 @@ int run(const Options& o)
         }
         mo.fractal = fitFractal(spectrum, r[0], r[1]);
     }
-    const std::vector<double> loads = loadsOf(o);
+    std::vector<double> pressures; // --pressures [Pa]: the first column
+    const std::vector<double> loads = loadsOf(o, materials.reducedModulus(), &pressures);
     const auto model = makeContactModel(o.model, spectrum, materials, mo);
 
     // The whole CSV is made before any of it is printed: an error half way leaves stdout empty.
@@ -468,9 +509,14 @@ int run(const Options& o)
             throw ParameterError("--levels", "the per-level trace exists for the multi-scale models only");
         }
         const double An = spectrum.nominalArea();
-        out << "load,level,frequency,amplitude,eta,radius,asperities,asperity_force,area,complete\n";
-        for (double load : loads) {
+        out << (pressures.empty() ? "" : "nominal_pressure,")
+            << "load,level,frequency,amplitude,eta,radius,asperities,asperity_force,area,complete\n";
+        for (std::size_t i = 0; i < loads.size(); ++i) {
+            const double load = loads[i];
             for (const LevelState& s : ms->trace(load)) {
+                if (!pressures.empty()) {
+                    out << pressures[i] << ',';
+                }
                 out << load << ',' << s.index + 1 << ',' << s.frequency << ',' << s.amplitude << ','
                           << s.density << ',' << s.radius << ',' << s.asperities << ',' << s.asperityForce
                     << ',' << s.area / An << ',' << (s.complete ? 1 : 0) << '\n';
@@ -541,13 +587,17 @@ int run(const Options& o)
             }
         }
     }
-    out << "load,area,pressure" << (conductance ? ",separation,h_per_k" : "");
+    out << (pressures.empty() ? "" : "nominal_pressure,") << "load,area,pressure" << (conductance ? ",separation,h_per_k" : "");
     for (const auto& [name, l] : every) {
         out << ",h_per_k_" << name;
     }
     out << '\n';
     const double Ep = materials.reducedModulus();
-    for (double load : loads) {
+    for (std::size_t i = 0; i < loads.size(); ++i) {
+        const double load = loads[i];
+        if (!pressures.empty()) {
+            out << pressures[i] << ',';
+        }
         if (persson != nullptr && conductance) {
             // Persson's theory: the mean separation [m] and Barber's h_c/k_s = -(1/E') dp/du
             // (Persson.hpp), or the named law's; u = inf at load 0, h_per_k = inf beyond double range.
@@ -596,7 +646,8 @@ int main(int argc, char** argv)
         "multiscaleContact: real contact area A_r/A_n of a rough surface against a flat, or of two rough\n"
         "surfaces, as a function of the load F/(A_n E'), by the multi-scale model of Jackson & Streator\n"
         "(2006) and the models it is compared with. Prints CSV on stdout: load,area,pressure with\n"
-        "load = F/(A_n E'), area = A_r/A_n and pressure = F/(A_r E'); errors go to stderr, exit 1.",
+        "load = F/(A_n E'), area = A_r/A_n and pressure = F/(A_r E') (with --pressures, a first column\n"
+        "nominal_pressure = F/A_n [Pa]); errors go to stderr, exit 1.",
         "multiscaleContact"};
     Options o;
 
@@ -689,6 +740,12 @@ int main(int argc, char** argv)
     auto* loads = app.add_option("--loads", o.loads, "loads F/(A_n E'), comma separated: 0, or 1e-30 to 1e4");
     auto* range = app.add_option("--load-range", o.loadRange, "MIN:MAX:N, N loads log spaced");
     loads->excludes(range);
+    auto* pressures = app.add_option("--pressures", o.pressures,
+                                     "nominal pressures F/A_n [Pa], comma separated, instead of --loads: each is "
+                                     "the load P/E' (E' from --E/--nu or --Eprime); the output gains a first "
+                                     "column nominal_pressure [Pa]");
+    pressures->excludes(loads);
+    pressures->excludes(range);
 
     app.add_option("--D", o.D, "Majumdar-Bhushan fractal dimension (default: fitted to the spectrum)");
     app.add_option("--G", o.G, "Majumdar-Bhushan fractal roughness [m] (default: fitted)");
@@ -717,8 +774,8 @@ int main(int argc, char** argv)
 
     try {
         app.parse(argc, argv);
-        if (o.loads.empty() && o.loadRange.empty()) {
-            throw CLI::RequiredError("--loads or --load-range");
+        if (o.loads.empty() && o.loadRange.empty() && o.pressures.empty()) {
+            throw CLI::RequiredError("--loads, --load-range or --pressures");
         }
     } catch (const CLI::ParseError& e) {
         // CLI11 prints the message (or the help); its own codes (104-114) become the README's 1.

@@ -100,7 +100,7 @@ TEST(Cli, HelpDocumentsEveryOptionAndModel)
     const CommandResult r = run("--help");
     EXPECT_EQ(r.status, 0);
     for (const char* opt : {"--profile", "--units", "--spectrum", "--length", "--power-law", "--fractal",
-                            "--model", "--E", "--nu", "--Eprime", "--Sy", "--loads", "--load-range",
+                            "--model", "--E", "--nu", "--Eprime", "--Sy", "--loads", "--load-range", "--pressures",
                             "--levels", "--stride", "--areal", "--dy", "--direction", "--fill-invalid",
                             "--conductance-law", "--vickers", "--hardness-from-yield"}) {
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
@@ -551,4 +551,79 @@ TEST(Cli, BoundaryElementIsTheLibrarys)
     expectError(p + " --synthesize 64 --model boundaryElement --Eprime 2e11 --hardness-from-yield --loads 1e-4",
                 {"S_y"});
     expectError(p + " --synthesize 64 --model boundaryElement" + steel + " --loads 1e-4 --levels", {"--levels"});
+}
+
+TEST(Cli, PressuresAreTheLoadsAtPOverEprime)
+{
+    // --pressures P [Pa] computes the load P/E' and prints the same row as --loads P/E', after a
+    // first column nominal_pressure holding P. E' from --E/--nu (the library's) and from --Eprime.
+    const double Ep = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9}).reducedModulus();
+    const std::vector<double> P = {0.0, 1e4, 3e5, 1e6, 2.5e7};
+    std::ostringstream ps;
+    std::ostringstream ls;
+    ls.precision(17);
+    for (std::size_t k = 0; k < P.size(); ++k) {
+        ps << (k ? "," : "") << P[k];
+        ls << (k ? "," : "") << P[k] / Ep;
+    }
+    for (const std::string& model : {std::string("jacksonGreen"), std::string("persson")}) {
+        SCOPED_TRACE(model);
+        const std::string common = "--profile '" + standin + "' --model " + model + steel + " --conductance";
+        const CommandResult a = run(common + " --pressures " + ps.str());
+        const CommandResult b = run(common + " --loads " + ls.str());
+        ASSERT_EQ(a.status, 0) << a.err;
+        ASSERT_EQ(b.status, 0) << b.err;
+        const Csv ca = parseCsv(a.out);
+        const Csv cb = parseCsv(b.out);
+        ASSERT_EQ(ca.header.size(), cb.header.size() + 1);
+        EXPECT_EQ(ca.header[0], "nominal_pressure");
+        ASSERT_EQ(ca.rows.size(), P.size());
+        ASSERT_EQ(cb.rows.size(), P.size());
+        for (std::size_t k = 0; k < P.size(); ++k) {
+            EXPECT_DOUBLE_EQ(std::stod(ca.rows[k][0]), P[k]);
+            const std::vector<std::string> rest(ca.rows[k].begin() + 1, ca.rows[k].end());
+            EXPECT_EQ(rest, cb.rows[k]) << "row " << k;
+        }
+    }
+    // --Eprime: E' given.
+    const CommandResult c = run("--profile '" + standin + "' --model hertz --Eprime 2e11 --pressures 2e6,2e7");
+    const CommandResult d = run("--profile '" + standin + "' --model hertz --Eprime 2e11 --loads 1e-5,1e-4");
+    ASSERT_EQ(c.status, 0) << c.err;
+    ASSERT_EQ(d.status, 0) << d.err;
+    const Csv cc = parseCsv(c.out);
+    const Csv cd = parseCsv(d.out);
+    ASSERT_EQ(cc.rows.size(), 2U);
+    for (std::size_t k = 0; k < 2; ++k) {
+        EXPECT_EQ(std::vector<std::string>(cc.rows[k].begin() + 1, cc.rows[k].end()), cd.rows[k]);
+    }
+    // boundaryElement too (a small synthesized surface).
+    const std::string bem = "--profile '" + standin + "' --synthesize 16 --model boundaryElement --Eprime 2e11";
+    const CommandResult e = run(bem + " --pressures 2e6,2e7");
+    const CommandResult f = run(bem + " --loads 1e-5,1e-4");
+    ASSERT_EQ(e.status, 0) << e.err;
+    ASSERT_EQ(f.status, 0) << f.err;
+    const Csv ce = parseCsv(e.out);
+    const Csv cf = parseCsv(f.out);
+    ASSERT_EQ(ce.rows.size(), 2U);
+    EXPECT_EQ(ce.header[0], "nominal_pressure");
+    for (std::size_t k = 0; k < 2; ++k) {
+        EXPECT_EQ(std::vector<std::string>(ce.rows[k].begin() + 1, ce.rows[k].end()), cf.rows[k]);
+    }
+    // The per-level trace carries the column as well.
+    const CommandResult t = run("--profile '" + standin + "' --model hertz --Eprime 2e11 --pressures 2e6 --levels");
+    ASSERT_EQ(t.status, 0) << t.err;
+    EXPECT_EQ(t.out.rfind("nominal_pressure,load,level,", 0), 0U) << t.out.substr(0, 80);
+}
+
+TEST(Cli, PressuresErrors)
+{
+    const std::string surface = "--profile '" + standin + "' --model hertz";
+    expectError(surface + " --pressures 1e6", {"--pressures", "--E", "--Eprime"});
+    expectError(surface + " --Eprime 2e11 --pressures 1e6 --loads 1e-5", {"--loads", "--pressures"});
+    expectError(surface + " --Eprime 2e11 --pressures 1e6 --load-range 1e-5:1e-4:3", {"--pressures"});
+    expectError(surface + " --Eprime 2e11 --pressures=-1", {"--pressures", ">= 0 Pa"});
+    expectError(surface + " --Eprime 2e11 --pressures 1e6,oops", {"--pressures", "'oops' is not a finite number"});
+    expectError(surface + " --Eprime 2e11 --pressures 1e6,", {"--pressures", "empty item"});
+    expectError(surface + " --Eprime 2e11 --pressures 1e20", {"--pressures", "1e+20 Pa", "E' = 2e+11 Pa"});
+    expectError(surface + " --Eprime 2e11", {"--loads, --load-range or --pressures"});
 }

@@ -1,0 +1,119 @@
+"""ContactInterface from Python: the table the OpenFOAM condition interpolates, from keyword
+arguments; its values at its own pressures are the model's and the law's there."""
+import math
+
+import numpy as np
+import pytest
+
+import roughcontact as rc
+from conftest import STANDIN, STEEL
+
+STEEL_M = rc.Material(**STEEL)
+
+
+@pytest.fixture(scope="module")
+def interface():
+    return rc.ContactInterface(surfaces=[rc.SurfaceSpec.profile(STANDIN)], side1=STEEL_M, side2=STEEL_M,
+                               model="jacksonGreen")
+
+
+def test_table_is_the_model_and_the_law(interface):
+    pair = rc.ContactMaterials.pair(STEEL_M, STEEL_M)
+    assert interface.reduced_modulus == pytest.approx(pair.reduced_modulus, rel=1e-15)
+    assert interface.model_name == "jacksonGreen"
+    assert interface.conductance_law == rc.default_conductance_law()
+    P = interface.table_pressures
+    assert P.dtype == np.float64 and P.ndim == 1 and len(P) > 10 and np.all(np.diff(P) > 0)
+    np.testing.assert_allclose(interface.area_fraction(P), interface.table_area_fractions, rtol=1e-12)
+    np.testing.assert_allclose(interface.conductance_per_conductivity(P),
+                               interface.table_conductances_per_conductivity, rtol=1e-12)
+    model = rc.Model("jacksonGreen", interface.surface, pair)
+    law = rc.ConductanceLaw(rc.default_conductance_law(), model=model)
+    some = P[::37]
+    np.testing.assert_allclose(interface.table_area_fractions[::37], model.area_fraction(some), rtol=1e-12)
+    np.testing.assert_allclose(interface.table_conductances_per_conductivity[::37],
+                               law.conductance_per_conductivity(some), rtol=1e-12)
+
+
+def test_queries(interface):
+    assert interface.area_fraction(0.0) == 0.0 and interface.conductance_per_conductivity(-1.0) == 0.0
+    P = np.array([[1e4, 1e5], [1e6, 1e7]])
+    a = interface.area_fraction(P)
+    assert a.shape == (2, 2) and a[1, 1] == interface.area_fraction(1e7)
+    k1, k2 = 50.0, 16.0
+    ks = 2 * k1 * k2 / (k1 + k2)
+    np.testing.assert_allclose(interface.conductance(P, k1, k2), ks * interface.conductance_per_conductivity(P),
+                               rtol=1e-14)
+    assert not interface.has_separation
+    assert np.all(np.isnan(interface.mean_separation(P)))
+    assert interface.table_separations.shape == (0,)
+    assert "jacksonGreen" in interface.summary()
+    assert interface.table_end == interface.table_pressures[-1]
+    assert interface.complete_contact_pressure > 0
+
+
+def test_keywords_and_laws():
+    ci = rc.ContactInterface(surfaces=[rc.SurfaceSpec.power_law(1e-4, 1.0, 1e3, 1e5)], side1=STEEL_M,
+                             side2=STEEL_M, model="hertz", conductance="persson", min_pressure=1e3,
+                             max_pressure=1e8, points_per_decade=10)
+    assert ci.conductance_law == "persson" and ci.has_separation
+    assert ci.table_pressures[0] == pytest.approx(1e3)
+    assert ci.table_separations.shape == ci.table_pressures.shape
+    model = rc.Model("persson", ci.surface, rc.ContactMaterials.pair(STEEL_M, STEEL_M))
+    P = ci.table_pressures[:5]
+    np.testing.assert_allclose(ci.conductance_per_conductivity(P), model.conductance_per_conductivity(P), rtol=1e-9)
+    two = rc.ContactInterface(surfaces=[rc.SurfaceSpec.profile(STANDIN), rc.SurfaceSpec.profile(STANDIN)],
+                              side1=STEEL_M, side2=STEEL_M, model="hertz")
+    assert two.surface.variance() == pytest.approx(2 * rc.SurfaceSpec.profile(STANDIN).read_spectrum().variance(),
+                                                   rel=1e-12)
+
+
+def test_boundary_element_interface():
+    ci = rc.ContactInterface(surfaces=[rc.SurfaceSpec.profile(STANDIN)], side1=STEEL_M, side2=STEEL_M,
+                             model="boundaryElement", synthesize=16, seed=2, bem_points_per_decade=2)
+    assert ci.model_name == "boundaryElement" and ci.has_separation
+    assert np.all(np.diff(ci.table_area_fractions) >= 0)
+
+
+def test_errors():
+    with pytest.raises(rc.ParameterError) as e:
+        rc.ContactInterface(surfaces=[rc.SurfaceSpec.profile(STANDIN)], side1=STEEL_M, side2=STEEL_M, model="nope")
+    assert e.value.parameter == "model" and "unknown multi-scale model 'nope'" in str(e.value)
+    with pytest.raises(rc.InputError, match="cannot open the file for reading"):
+        rc.ContactInterface(surfaces=[rc.SurfaceSpec.profile("/nonexistent.csv")], side1=STEEL_M, side2=STEEL_M)
+    with pytest.raises(rc.ParameterError, match="^surfaces: "):
+        rc.ContactInterface(surfaces=[], side1=STEEL_M, side2=STEEL_M)
+    with pytest.raises(TypeError):
+        rc.ContactInterface([rc.SurfaceSpec.profile(STANDIN)], STEEL_M, STEEL_M)  # keywords only
+
+
+def _described(doc):
+    """pybind11 puts the signature first: a docstring must say more than that."""
+    lines = [l for l in (doc or "").strip().splitlines() if l.strip()]
+    return len(lines) > 1 or (len(lines) == 1 and "(" not in lines[0].split()[0])
+
+
+def test_version():
+    assert rc.__version__.count(".") == 2
+
+
+def test_docstrings():
+    # Every function, class, method and property of the module has its own docstring.
+    assert "Pa" in rc.__doc__
+    missing = []
+    for name in dir(rc):
+        if name.startswith("_"):
+            continue
+        obj = getattr(rc, name)
+        if isinstance(obj, str):
+            continue
+        if not _described(obj.__doc__):
+            missing.append(name)
+        if isinstance(obj, type) and not issubclass(obj, Exception):
+            for member, value in vars(obj).items():
+                if member.startswith("_"):
+                    continue
+                doc = value.__doc__ if isinstance(value, property) else getattr(getattr(obj, member), "__doc__", None)
+                if not _described(doc):
+                    missing.append(f"{name}.{member}")
+    assert missing == []

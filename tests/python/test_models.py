@@ -1,0 +1,138 @@
+"""Models and conductance laws from Python: the same numbers as multiscaleContact at the same
+input (parsed from its CSV), vectorized calls equal to scalar calls, SI pressures = loads times E'."""
+import math
+
+import numpy as np
+import pytest
+
+import roughcontact as rc
+from conftest import STANDIN, STEEL, STEEL_ARGS
+
+LOADS = [1e-6, 1e-5, 1e-4, 1e-3]
+
+
+@pytest.fixture(scope="module")
+def spectrum():
+    return rc.Spectrum.from_profile(rc.read_profile(STANDIN))
+
+
+@pytest.fixture(scope="module")
+def steel():
+    return rc.ContactMaterials.against_rigid_flat(rc.Material(**STEEL))
+
+
+def test_names():
+    assert rc.model_names()[:5] == rc.multiscale_model_names()
+    assert "persson" in rc.model_names() and "jacksonGreen" in rc.multiscale_model_names()
+    assert rc.conductance_law_names() == [
+        "jacksonBhavnaniFerguson", "multiscaleBarber", "persson", "mikic", "cooperMikicYovanovich"]
+    assert rc.default_conductance_law() in rc.conductance_law_names()
+
+
+def test_reduced_modulus(steel):
+    assert steel.reduced_modulus == pytest.approx(179.52e9 / (1 - 0.32 ** 2), rel=1e-15)
+    a, b = rc.Material(200e9, 0.3), rc.Material(100e9, 0.25)
+    pair = rc.ContactMaterials.pair(a, b)
+    assert pair.reduced_modulus == pytest.approx(1 / ((1 - 0.09) / 200e9 + (1 - 0.0625) / 100e9), rel=1e-15)
+    assert rc.ContactMaterials.from_reduced_modulus(2e11).reduced_modulus == 2e11
+
+
+@pytest.mark.parametrize("name", rc.model_names())
+def test_area_equals_the_cli(cli, spectrum, steel, name):
+    r = cli("--profile", STANDIN, "--model", name, *STEEL_ARGS, "--loads", ",".join(map(repr, LOADS)))
+    assert r.status == 0, r.err
+    area = r.columns()["area"]
+    model = rc.Model(name, spectrum, rc.Material(**STEEL))
+    assert model.name == name
+    Ep = steel.reduced_modulus
+    got = model.area_fraction(np.array(LOADS) * Ep)
+    np.testing.assert_allclose(got, area, rtol=1e-9)
+    np.testing.assert_allclose(model.area_fraction_at_load(LOADS), area, rtol=1e-9)
+
+
+def test_pressures_equal_the_cli_pressures_option(cli, spectrum, steel):
+    P = [1e4, 1e5, 1e6, 1e7]
+    r = cli("--profile", STANDIN, "--model", "jacksonGreen", *STEEL_ARGS, "--pressures", ",".join(map(repr, P)),
+            "--conductance")
+    assert r.status == 0, r.err
+    c = r.columns()
+    np.testing.assert_array_equal(c["nominal_pressure"], P)
+    model = rc.Model("jacksonGreen", spectrum, steel)
+    np.testing.assert_allclose(model.area_fraction(P), c["area"], rtol=1e-9)
+    law = rc.ConductanceLaw("jacksonBhavnaniFerguson", model=model)
+    np.testing.assert_allclose(law.conductance_per_conductivity(P), c["h_per_k"], rtol=1e-9)
+
+
+@pytest.mark.parametrize("law_name", ["jacksonBhavnaniFerguson", "multiscaleBarber", "persson", "mikic"])
+def test_conductance_laws_equal_the_cli(cli, spectrum, steel, law_name):
+    r = cli("--profile", STANDIN, "--model", "jacksonGreen", *STEEL_ARGS, "--loads", ",".join(map(repr, LOADS)),
+            "--conductance-law", law_name)
+    assert r.status == 0, r.err
+    c = r.columns()
+    model = rc.Model("jacksonGreen", spectrum, steel)
+    roughness = rc.profile_roughness(rc.read_profile(STANDIN)) if law_name == "mikic" else None
+    law = rc.ConductanceLaw(law_name, model=model, roughness=roughness)
+    assert law.name == law_name
+    P = np.array(LOADS) * steel.reduced_modulus
+    np.testing.assert_allclose(law.conductance_per_conductivity(P), c["h_per_k"], rtol=1e-9)
+    sep = law.mean_separation(P)
+    if c["separation"][0] is None:
+        assert np.all(np.isnan(sep))
+    else:
+        np.testing.assert_allclose(sep, c["separation"], rtol=1e-9)
+
+
+def test_persson_own_conductance_equals_the_cli(cli, spectrum, steel):
+    r = cli("--profile", STANDIN, "--model", "persson", *STEEL_ARGS, "--loads", ",".join(map(repr, LOADS)),
+            "--conductance")
+    assert r.status == 0, r.err
+    c = r.columns()
+    model = rc.Model("persson", spectrum, steel)
+    P = np.array(LOADS) * steel.reduced_modulus
+    np.testing.assert_allclose(model.conductance_per_conductivity(P), c["h_per_k"], rtol=1e-9)
+    np.testing.assert_allclose(model.mean_separation(P), c["separation"], rtol=1e-9)
+
+
+def test_vectorized_equals_scalar(spectrum, steel):
+    model = rc.Model("jacksonGreen", spectrum, steel)
+    P = np.logspace(3, 8, 6).reshape(2, 3)
+    a = model.area_fraction(P)
+    assert isinstance(a, np.ndarray) and a.shape == (2, 3) and a.dtype == np.float64
+    for idx in np.ndindex(P.shape):
+        s = model.area_fraction(float(P[idx]))
+        assert isinstance(s, float)
+        assert s == a[idx]
+    assert isinstance(model.area_fraction(np.float64(1e6)), float)
+    np.testing.assert_array_equal(model.area_fraction(list(P.ravel())), a.ravel())
+    assert model.area_fraction(np.array([])).shape == (0,)
+    # Integers are pressures too; P = 0 is no contact.
+    assert model.area_fraction(0) == 0.0
+    law = rc.ConductanceLaw("jacksonBhavnaniFerguson", model=model)
+    h = law.conductance_per_conductivity(P)
+    assert h.shape == (2, 3)
+    assert law.conductance_per_conductivity(float(P[1, 2])) == h[1, 2]
+
+
+def test_persson_only_methods(spectrum, steel):
+    with pytest.raises(rc.ParameterError, match="persson only"):
+        rc.Model("hertz", spectrum, steel).mean_separation(1e6)
+
+
+def test_boundary_element_equals_the_cli(cli, spectrum):
+    r = cli("--profile", STANDIN, "--synthesize", "16,3", "--model", "boundaryElement", "--Eprime", "2e11",
+            "--loads", "1e-5,1e-4")
+    assert r.status == 0, r.err
+    c = r.columns()
+    surface = rc.synthesize_isotropic(spectrum, 16, 3)
+    bem = rc.BoundaryElement(surface, rc.ContactMaterials.from_reduced_modulus(2e11), periodic=True)
+    assert bem.reduced_modulus == 2e11
+    curve = bem.curve([2e6, 2e7])
+    for key in ("pressure", "load", "area_fraction", "mean_separation", "conductance_per_conductivity"):
+        assert curve[key].shape == (2,) and curve[key].dtype == np.float64
+    np.testing.assert_allclose(curve["load"], [1e-5, 1e-4], rtol=1e-15)
+    np.testing.assert_allclose(curve["area_fraction"], c["area"], rtol=1e-9)
+    np.testing.assert_allclose(curve["mean_separation"], c["separation"], rtol=1e-9)
+    np.testing.assert_allclose(curve["conductance_per_conductivity"], c["h_per_k"], rtol=1e-9)
+    assert math.isinf(bem.patch_conductance_per_conductivity)
+    # area_fraction solves each pressure from scratch: the same contact set up to the tolerance.
+    np.testing.assert_allclose(bem.area_fraction([2e6, 2e7]), c["area"], rtol=1e-6)

@@ -1,0 +1,147 @@
+"""Surfaces from Python: profiles, spectra, areal maps and synthesis; numpy shapes and dtypes;
+closed forms; the same numbers as the C++ readers (through the CLI's --info-free paths)."""
+import math
+
+import numpy as np
+import pytest
+
+import roughcontact as rc
+from conftest import DEKTAK, STANDIN, X3P
+
+
+def test_read_profile_dektak_in_metres():
+    p = rc.read_profile(DEKTAK)
+    assert isinstance(p.heights, np.ndarray)
+    assert p.heights.dtype == np.float64 and p.heights.shape == (len(p),)
+    # The export's first rows: "0.0,-0.00933" and "0.2,-0.00760" in um (its header says so).
+    assert p.heights[0] == pytest.approx(-0.00933e-6, rel=1e-12)
+    assert p.heights[1] == pytest.approx(-0.00760e-6, rel=1e-12)
+    # Length 1500 um at 0.156 um/sample (the export's header).
+    assert p.length == pytest.approx(1500e-6, rel=2e-3)
+    assert p.spacing == pytest.approx(0.15625e-6, rel=1e-3)
+    assert p.source == DEKTAK
+
+
+def test_read_profile_units_and_spacing(tmp_path):
+    f = tmp_path / "z.txt"
+    z = np.sin(np.arange(16) * 0.7)
+    f.write_text("\n".join(f"{v!r}" for v in z) + "\n")
+    p = rc.read_profile(str(f), units="um", spacing=0.5)
+    np.testing.assert_array_equal(p.heights, z * 1e-6)
+    assert p.spacing == pytest.approx(0.5e-6, rel=1e-15)
+
+
+def test_profile_from_numpy_round_trips():
+    z = np.linspace(-1e-6, 1e-6, 32) ** 2
+    p = rc.Profile(z, 1e-6)
+    np.testing.assert_array_equal(p.heights, z)
+    assert p.length == pytest.approx(32e-6)
+    assert p.rms() == pytest.approx(math.sqrt(np.mean(z * z)), rel=1e-14)
+    # Integer and list input are converted.
+    assert rc.Profile(list(range(10)), 1.0).heights.dtype == np.float64
+    # detrended: mean and tilt removed (least squares), as numpy's polyfit does.
+    x = np.arange(32.0)
+    fit = np.polyval(np.polyfit(x, z, 1), x)
+    np.testing.assert_allclose(p.detrended().heights, z - fit, atol=1e-13 * np.abs(z).max())
+
+
+def test_spectrum_from_profile_is_parseval():
+    p = rc.read_profile(STANDIN)
+    s = rc.Spectrum.from_profile(p)
+    assert s.frequencies.dtype == np.float64 and s.amplitudes.shape == (len(s),)
+    np.testing.assert_allclose(s.frequencies, np.arange(1, len(s) + 1) / p.length, rtol=1e-14)
+    z = p.detrended().heights
+    assert s.profile_variance() == pytest.approx(np.mean(z * z), rel=1e-10)
+    assert s.length == pytest.approx(p.length)
+
+
+def test_power_law_closed_form():
+    bm, m, L = 1e-9, 1.2, 1e-3
+    s = rc.Spectrum.power_law(bm, m, 1e3, 1e5, L)
+    i = np.arange(1, 101)
+    f = i / L
+    np.testing.assert_allclose(s.frequencies, f, rtol=1e-14)
+    np.testing.assert_allclose(s.amplitudes, bm * f ** -m, rtol=1e-13)
+    # rms = sqrt(sum beta^2/2), the sum in closed form: bm^2 L^(2m)/2 sum i^(-2m).
+    rms = math.sqrt(bm * bm * L ** (2 * m) / 2 * np.sum(i ** (-2.0 * m)))
+    assert math.sqrt(s.variance()) == pytest.approx(rms, rel=1e-13)
+    # length defaults to 1/fmin
+    assert rc.Spectrum.power_law(bm, m, 1e3, 1e5).length == pytest.approx(1e-3)
+
+
+def test_fractal_closed_form():
+    D, G, L = 1.5, 1e-10, 1e-3
+    s = rc.Spectrum.fractal(D, G, 1e3, 1e4, L)
+    f = s.frequencies
+    S = G ** (2 * (D - 1)) / (2 * math.log(1.5) * f ** (5 - 2 * D))
+    np.testing.assert_allclose(s.amplitudes ** 2, 2 * S / L, rtol=1e-12)
+
+
+def test_spectrum_read_and_construct(tmp_path):
+    f = tmp_path / "s.txt"
+    f.write_text("# f beta\n1000 1e-8\n2000 5e-9\n3000 2e-9\n")
+    s = rc.Spectrum.read(str(f))
+    np.testing.assert_array_equal(s.frequencies, [1000.0, 2000.0, 3000.0])
+    np.testing.assert_array_equal(s.amplitudes, [1e-8, 5e-9, 2e-9])
+    assert s.length == pytest.approx(1e-3)
+    t = rc.Spectrum(s.frequencies, s.amplitudes, 2e-3)
+    assert t.length == 2e-3 and t.variance() == pytest.approx(s.variance())
+    c = rc.Spectrum.combine(s, s)
+    assert c.variance() == pytest.approx(2 * s.variance(), rel=1e-12)
+
+
+def test_areal_surface_layout():
+    ny, nx = 10, 12
+    z = np.random.default_rng(1).normal(size=(ny, nx)) * 1e-7
+    a = rc.ArealSurface(z, 1e-6, 2e-6)
+    assert (a.nx, a.ny) == (nx, ny)
+    assert a.heights.shape == (ny, nx) and a.heights.dtype == np.float64
+    np.testing.assert_array_equal(a.heights, z)
+    np.testing.assert_array_equal(a.row(3).heights, z[3, :])
+    np.testing.assert_array_equal(a.column(5).heights, z[:, 5])
+    assert a.length_x == pytest.approx(nx * 1e-6) and a.length_y == pytest.approx(ny * 2e-6)
+    assert a.rms() == pytest.approx(math.sqrt(np.mean(z * z)), rel=1e-13)
+    with pytest.raises(TypeError):
+        rc.ArealSurface(z.ravel(), 1e-6)
+
+
+def test_read_areal_x3p():
+    a = rc.read_areal(X3P)
+    assert (a.nx, a.ny) == (650, 650)
+    assert a.heights.shape == (650, 650)
+    assert np.all(np.isfinite(a.heights))
+    s = a.detrended().line_scan_spectrum("x")
+    assert len(s) > 0 and s.length == pytest.approx(a.length_x)
+
+
+def test_read_areal_matrix(tmp_path):
+    z = np.arange(80, dtype=float).reshape(8, 10) % 7
+    f = tmp_path / "m.txt"
+    f.write_text("\n".join(" ".join(repr(v) for v in row) for row in z) + "\n")
+    a = rc.read_areal(str(f), units="nm", dx=2.0)
+    np.testing.assert_allclose(a.heights, z * 1e-9, rtol=1e-15)
+    assert a.dx == pytest.approx(2e-9) and a.dy == pytest.approx(2e-9)
+
+
+def test_synthesize_isotropic():
+    s = rc.Spectrum.from_profile(rc.read_profile(STANDIN))
+    a = rc.synthesize_isotropic(s, 32, 7)
+    assert a.heights.shape == (32, 32)
+    assert a.dx == pytest.approx(s.length / 32)
+    b = rc.synthesize_isotropic(s, 32, 7)
+    np.testing.assert_array_equal(a.heights, b.heights)
+    c = rc.synthesize_isotropic(s, 32, 8)
+    assert not np.array_equal(a.heights, c.heights)
+    # The moduli are fixed: the same variance for every seed (ArealSynthesis.hpp).
+    assert a.rms() == pytest.approx(c.rms(), rel=1e-10)
+    assert abs(np.mean(a.heights)) < 1e-12 * a.rms() * 1e3
+
+
+def test_roughness():
+    p = rc.read_profile(STANDIN)
+    r = rc.profile_roughness(p)
+    z = p.detrended().heights
+    assert r.sigma == pytest.approx(math.sqrt(np.mean(z * z)), rel=1e-12)
+    assert r.mean_absolute_slope == pytest.approx(np.mean(np.abs(np.diff(z))) / p.spacing, rel=1e-10)
+    c = rc.combined_roughness(r, r)
+    assert c.sigma == pytest.approx(math.sqrt(2) * r.sigma)
