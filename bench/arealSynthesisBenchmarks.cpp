@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Isotropic synthesis of an areal surface (ArealSynthesis.hpp) from the stand-in profile's
 // spectrum: the 2-D spectrum on the grid, the random phases and FFTW's c2r transform.
 #include "roughContact/io/ProfileReader.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Boundary-element benchmarks (issue 9 targets, medians on one core: a 512 x 512 periodic
 // elastic load point from a cold start to relative residual 1e-8 in at most 0.5 s, 1024 x 1024
 // in at most 3 s; a 20-load curve at 512 x 512 with warm starts in at most 5 s), and how the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Load-curve benchmarks on the 2454-point stand-in profile (issue target: a 100-point jacksonGreen
 // curve well under 50 ms on one core). The model is built once outside the timed loop, as the
 // CLI does; construction is timed separately. Registered for every model name the factory knows.

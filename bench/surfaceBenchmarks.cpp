@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Surface benchmarks (issue target: Spectrum::fromProfile of a 10^6-point profile under 0.5 s),
 // and reading a 10^6-point profile file written as syntheticProfile writes it.
 #include "roughContact/io/ProfileReader.hpp"

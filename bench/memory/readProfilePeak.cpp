@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reads one profile file and prints its size and spacing: run it under /usr/bin/time -v to see
 // the reader's peak memory (maximum resident set size) on a large file.
 #include "roughContact/io/ProfileReader.hpp"

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """profileCurve.py: a measured profile's real contact area and contact conductance against the
 nominal pressure, from Python (docs/python.md).
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # foamEntry.awk: print the numbers of one entry of an OpenFOAM ascii dictionary or field file,
 # one per line, at full written precision (foamDictionary rounds to 6 digits).
 #   awk -v entry=boundaryField.bottom_to_top.value -f foamEntry.awk FILE

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // multiscaleContact: real contact area of rough surfaces against load, from the command line.
 // The interface is fixed (issue 2): scripts rely on --profile/--spectrum, --model, the
 // material options, --loads/--load-range, --levels and the CSV columns load and area. --pressures

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // syntheticProfile: writes a seeded Gaussian power-law profile as CSV "x,z" in metres
 // (the documented generator of the stand-in for the seed's measured profile).
 #include "roughContact/surface/SyntheticProfile.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Python module roughcontact: a thin pybind11 binding of the core. Every number is computed
 // by the core; this file only converts (numpy arrays in and out, SI units: pressures in Pa,
 // lengths in m, dimensionless loads F/(A_n E') where a name says "load") and translates the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Areal surfaces (height maps): layout, detrending, line scans and their averaged spectrum.
 #include "roughContact/Error.hpp"
 #include "roughContact/surface/ArealSurface.hpp"

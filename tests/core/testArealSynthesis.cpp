@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Isotropic synthesis of an areal surface from a line-scan spectrum (ArealSynthesis.hpp): the
 // Abel pair, its closed form for a power law, and the synthesized surface against its input.
 #include "roughContact/Error.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The boundary-element contact solver held to exact solutions: Love's rectangle, the periodic
 // half-space's Fourier multiplier, Westergaard's sinusoidal ridge (partial and complete
 // contact), Hertz, the complete contact of a bisinusoid, Holm's conductance of one spot,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The boundary-element pressure table of `model boundaryElement`: its points are the solver's,
 // its file reads back exactly, its key follows every input, a bad file is refused with the
 // reason, and ContactInterface interpolates it as any ContactTable.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The command-line tool multiscaleContact: its fixed interface, that its numbers are the
 // library's, and its error paths (stderr, non-zero exit, nothing on stdout).
 #include "RunCommand.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The conductance laws by name (ConductanceLaw.hpp): every name builds, each law is the formula
 // it names (the functions tested on their own in testConstrictionConductance, testCorrelations),
 // and a missing input or an unknown name is an error that says what is missing or what is known.

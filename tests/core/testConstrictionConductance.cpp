@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The multi-scale constriction conductance (docs/theory.md §5.2) and the pressure table the
 // boundary condition interpolates: closed forms for one and two levels, Holm's limit, the
 // limits at no and at complete contact, and the table's error against the direct solve.

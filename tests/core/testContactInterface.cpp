@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The boundary condition's entry point: an interface built from a plain description gives the
 // same numbers as building the pieces by hand, and refuses bad descriptions clearly.
 #include "RunCommand.hpp"

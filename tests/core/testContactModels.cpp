@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Properties every contact model must have, through the factory users select them by:
 // A_r/A_n is 0 at no load, finite, within [0, 1] and never decreases with load, from the
 // lightest load to far beyond complete contact, on a measured-like surface and on a power law;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The published thermal contact conductance correlations (docs/correlations.md): Mikic's elastic
 // law (Mikic.hpp), the Cooper-Mikic-Yovanovich plastic law (CooperMikicYovanovich.hpp) and the
 // Song-Yovanovich microhardness (Microhardness.hpp). Every expected number is written out from

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Inputs at and beyond the edges of what the core accepts (roughContact/Limits.hpp). This test
 // runs, like every core test, with the floating-point traps OpenFOAM runs with
 // (support/trappingMain.cpp): an overflow, a division by zero or a NaN anywhere below kills it.

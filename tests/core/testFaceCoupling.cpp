@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The per-face coupling the boundary condition calls once per evaluation (interface/FaceCoupling):
 // the rule for the two sides' pressures, the face states, the same numbers as the interface's
 // own face() and the mixed-condition arithmetic (bit for bit, cached or not), conservation

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fit of the Weierstrass-Mandelbrot D and G to a spectrum's PSD (docs/theory.md §4.3, Majumdar & Tien
 // 1990).
 #include "roughContact/Error.hpp"

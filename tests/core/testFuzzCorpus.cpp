@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fuzz corpus (tests/fuzz/corpus/<target>/: seeds and every input that ever made a fuzz
 // target fail) replayed through the fuzz targets' own checks (tests/fuzz/ReaderChecks.hpp), so
 // the regressions run in the ordinary build too, without clang.

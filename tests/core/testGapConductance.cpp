@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The gas-gap and radiation conductances (thermal/GapConductance.hpp) and the gas table
 // (thermal/Gas.hpp). Every expected number is written out from the formula and the tabulated
 // source numbers, computed independently (python3, double precision), never by the code under

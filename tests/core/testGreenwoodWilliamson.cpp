@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Greenwood-Williamson with Hertz and Jackson-Green summits (docs/theory.md §4.2, seed §3.1), against
 // closed forms and against an independent quadrature (Boost tanh-sinh / exp-sinh, where the
 // code uses adaptive Gauss-Kronrod).

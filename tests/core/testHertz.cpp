@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hertz asperity (seed Eq. 20).
 #include "roughContact/asperity/Hertz.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The coupled mixed condition's arithmetic (thermal/InterfaceCoupling): three resistances in
 // series, the same flux on both sides at every iteration, the jump q/h across the interface,
 // and the two limits (complete contact = the stock perfect coupling, no contact = adiabatic).

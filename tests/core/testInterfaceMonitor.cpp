@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The interface's time series and table as the boundary condition writes them
 // (interface/InterfaceMonitor): the columns, the area-weighted means from a summary worked by
 // hand, an empty field (never NaN) where no face counts, and the table's rows.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // JGH sinusoidal asperity level (seed Eqs. 6-10), seed form and consistent form.
 #include "roughContact/asperity/Hertz.hpp"
 #include "roughContact/asperity/JohnsonGreenwoodHigginson.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Majumdar-Bhushan fractal contact (Majumdar & Bhushan, ASME J. Tribol. 113 (1991) 1-11;
 // docs/theory.md §4.4): closed forms against numerical integration of the spot distribution.
 #include "roughContact/Error.hpp"

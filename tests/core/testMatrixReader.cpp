@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading height maps from text matrices (io/MatrixReader): layout (rows along y, columns along
 // x), separators, comments, spacings and units, and every error naming the file and line.
 #include "roughContact/Error.hpp"

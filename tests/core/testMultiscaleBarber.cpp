@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Barber's relation on the elastic energy of the multi-scale levels (MultiscaleBarber.hpp):
 // the bins hold the whole 2-D variance, one level gives the closed form, the law is +inf at
 // complete contact and rises with the load.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The multi-scale framework (seed §2.1) against the closed forms of seed §2.3.
 #include "roughContact/asperity/Hertz.hpp"
 #include "roughContact/asperity/JacksonGreen.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Persson's theory (models/Persson.hpp) held to its closed forms: the separation kernel against
 // the exponential integral and a brute-force quadrature, the spectrum conversion (P1) against the
 // IsotropicSpectrum's variance and slope, the light-load area sqrt(8/pi) p/(E' h'), complete

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading measured profiles (io/ProfileReader): layouts, units, the uniform-grid check, every
 // error (naming file and line), and the real Dektak export tests/data/io/dektak-1.csv.
 #include "roughContact/Error.hpp"

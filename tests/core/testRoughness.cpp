@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // sigma and the mean absolute slope m of profiles, areal surfaces and spectra, and of two
 // surfaces together (Roughness.hpp, docs/correlations.md). Expected values come from the
 // closed forms of the test surfaces, with the discretisation error of each stated.

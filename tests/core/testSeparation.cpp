@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The mean-plane separation Y carried through the pressure table (ContactTable.hpp): the laws
 // that define it (ConductanceLaw::meanSeparation: persson, multiscaleBarber), the table's column
 // (the law's at its points, linear in log P between, the stated rules outside), fromPoints'

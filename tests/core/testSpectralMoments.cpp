@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // McCool's spectral moments and summit parameters (McCool, Wear 107 (1986) 37-60; docs/theory.md §4.1).
 // Every expected value is computed here from the sinusoids' amplitudes and frequencies, never by
 // the code under test.

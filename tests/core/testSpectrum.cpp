@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // FFT spectrum of a profile and spectrum algebra (seed §2.1, docs/theory.md §1.2).
 #include "roughContact/Error.hpp"
 #include "roughContact/surface/Profile.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading spectrum tables (io/SpectrumReader): frequency [1/m] and amplitude [m] columns, the
 // default scan length L = 1/f_min, and every error (naming file and line).
 #include "roughContact/Error.hpp"

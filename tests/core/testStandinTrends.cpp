@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The trends the seed reports that must hold on our stand-in for its measured profile
 // (data/standin-2454.csv, made by syntheticProfile with its defaults): the shipped file is the
 // generator's output, multi-scale log-log slopes are ~1 (seed §3.2: 1.00), and the multi-scale

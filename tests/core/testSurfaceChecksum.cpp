@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The surface checksum a run records (SurfaceChecksum.hpp): FNV-1a over the IEEE bytes of the
 // levels and the length.
 #include "roughContact/surface/Spectrum.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tokenising of table files (io/TableReader, the internal layer under the profile and
 // spectrum readers): separators, comments, the header, line numbers and every error.
 #include "roughContact/Error.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hertz + fully plastic truncation asperity (seed §3.1).
 #include "roughContact/asperity/Hertz.hpp"
 #include "roughContact/asperity/Truncation.hpp"

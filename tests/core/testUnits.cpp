@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Length units of input files (io/Units): names, conversion factors, errors.
 #include "roughContact/Error.hpp"
 #include "roughContact/io/Units.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading X3P (ISO 25178-72) height maps (io/X3pReader): small archives built here with libzip
 // (main.xml written as text, data little-endian byte by byte, MD5 by OpenSSL) for each data
 // type, binary and inline data, every error (named after the file), invalid points with and

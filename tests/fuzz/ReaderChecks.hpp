@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the fuzz targets (tests/fuzz/fuzz*.cpp) and the corpus replay (tests/core/testFuzzCorpus.cpp)
 // check of one input: the reader either returns sound data or throws InputError/ParameterError
 // with a short, printable message. Anything else is a bug, described by the returned text.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target: the X3P reader on arbitrary input (tests/fuzz/ReaderChecks.hpp says what
 // the first bytes choose and what is checked); any bug aborts. Run it with tests/fuzz/run.
 #include "ReaderChecks.hpp"

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Writes the seed X3P files of the fuzz corpus tests/fuzz/corpus/x3pReader/ (each a first
 option byte, 'f' for fillInvalid or '-' for none, then the zip; tests/fuzz/ReaderChecks.hpp).
 Tiny (8 x 8 points) valid files of each layout, so that the fuzzer starts past the checksums:

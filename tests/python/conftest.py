@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Shared paths of the Python tests (tests/python, run by CTest with the label python).
 
 CTest sets PYTHONPATH to the module's directory (<build>/python), ROUGHCONTACT_SOURCE_DIR and

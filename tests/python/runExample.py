@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """runExample.py SCRIPT PNG: runs a documentation example (docs/python/) with --output PNG under
 the Agg backend and checks only that it wrote a PNG file (the CTest test python.example.*)."""
 import os

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Errors from Python: the core's InputError and ParameterError as roughcontact.InputError and
 roughcontact.ParameterError (subclasses of ValueError) with the same message as the C++ what(),
 which multiscaleContact prints after 'multiscaleContact: error: '."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """ContactInterface from Python: the table the OpenFOAM condition interpolates, from keyword
 arguments; its values at its own pressures are the model's and the law's there."""
 import math

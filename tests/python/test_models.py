@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Models and conductance laws from Python: the same numbers as multiscaleContact at the same
 input (parsed from its CSV), vectorized calls equal to scalar calls, SI pressures = loads times E'."""
 import math

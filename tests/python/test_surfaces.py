@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Surfaces from Python: profiles, spectra, areal maps and synthesis; numpy shapes and dtypes;
 closed forms; the same numbers as the C++ readers (through the CLI's --info-free paths)."""
 import math

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // EXPECT_THROW of a roughContact::ParameterError whose parameter() names `entry`: a test that an
 // error says which entry is wrong, not only that there is one.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Run a shell command and capture its stdout, stderr and exit status (for the CLI tests).
 #pragma once
 

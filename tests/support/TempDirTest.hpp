@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A GoogleTest fixture with a fresh directory per test under the system temp directory,
 // removed afterwards, and a helper to write files into it (for the input-layer tests).
 #pragma once

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # shellcheck shell=bash
 # tests/support/boundaryElementCase.sh: shared by the boundaryElement case tests (source it after
 # caseFunctions.sh). Gives

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # shellcheck shell=bash
 # tests/support/caseFunctions.sh: shared by the case tests under tests/cases (bash; source it).
 # Sets up the project's OpenFOAM environment and gives:

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # shellcheck shell=bash
 # shellcheck disable=SC2034,SC2154
 # (sourced: top and work come from caseFunctions.sh, variantPrefix from the sourcing test; bT,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The main() of every core test: floating-point traps on, as OpenFOAM runs a solver
 // (FOAM_SIGFPE: overflow, invalid operation and division by zero raise SIGFPE). A core function
 // that overflows, divides by zero or makes a NaN on any path a test reaches kills that test

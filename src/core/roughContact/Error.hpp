@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Errors of the core. Every failure on bad input names where it came from:
 // InputError a file and line, ParameterError the parameter. Nothing returns NaN.
 // Checks test std::isfinite/std::isnan before any ordered comparison: `x > 0` raises the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Floating-point traps. OpenFOAM runs a solver with overflow, invalid-operation and
 // division-by-zero traps on (FOAM_SIGFPE), so a core function called from the boundary
 // condition must not raise those flags on any input: a NaN or an overflow there is a SIGFPE,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The ranges the core accepts: one place for each. Outside them a computation would leave the
 // range of a double (an overflow, or an underflow to 0 that a later division turns into an
 // infinity) or the input has no physical meaning; either way the core refuses it with a

@@ -1,3 +1,8 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Part of roughContact, licensed GPL-3.0-or-later (LICENSE). This OpenFOAM glue builds on
+// OpenFOAM (Copyright OpenCFD Ltd. and The OpenFOAM Foundation; GPL-3.0-or-later): the
+// coupled-baffle arithmetic and structure follow compressible::
+// turbulentTemperatureCoupledBaffleMixedFvPatchScalarField and temperatureCoupledBase.
 #include "contactInterfaceFromDict.H"
 
 #include "error.H"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The contact law of one frequency level of the multi-scale framework (seed §2.2).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hertz: an elastic sphere against a rigid flat (seed Eq. 20).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Jackson-Green elasto-plastic hemisphere against a rigid flat (seed Eqs. 11-19 and §2.2).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Johnson-Greenwood-Higginson: elastic contact of a two-dimensional sinusoidal surface
 // (seed Eqs. 6-10; Johnson, Greenwood & Higginson 1985).
 #pragma once

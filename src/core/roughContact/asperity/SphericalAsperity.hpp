@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A hemispherical asperity of radius R against a rigid flat, followed along its loading path.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hertz up to the critical interference, then the fully plastic truncation model
 // (seed §3.1; Abbott & Firestone; docs/theory.md §3.5).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Onset of yield in a hemispherical asperity (seed Eqs. 11-14, Jackson & Green 2005).
 #pragma once
 

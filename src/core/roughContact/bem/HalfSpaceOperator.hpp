@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The surface compliance of an elastic half-space on a grid: the normal displacement u that a
 // pressure p causes, u = K p, evaluated with FFTs (FFTW, plans made once and reused).
 #pragma once

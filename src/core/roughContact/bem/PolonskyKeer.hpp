@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Normal, frictionless, non-adhesive contact of a rigid rough surface with an elastic half-space
 // (two rough elastic bodies reduce to it: their composite surface against a half-space of the
 // reduced modulus E'), solved on a grid by the constrained conjugate-gradient method of

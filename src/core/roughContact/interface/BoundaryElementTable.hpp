@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The pressure table of `model boundaryElement`: A_r/A_n and the exact h_c/k_s of the
 // boundary-element solution (models/BoundaryElement) at log-spaced loads, built once (minutes
 // for large maps) and so kept in a small self-describing text file keyed by a hash of every

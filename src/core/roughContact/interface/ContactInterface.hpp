@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Everything a boundary condition needs from the core, built once from a plain description of
 // the interface (surfaces, materials, asperity model) and then asked, per face, for the real
 // contact area and h_c/k_s at the local nominal pressure. No OpenFOAM type appears here: the

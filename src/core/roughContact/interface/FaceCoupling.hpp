@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The per-face coupling of the two solids across a rough interface: everything the boundary
 // condition decides per face, in one call on plain arrays. The OpenFOAM glue only gathers the
 // arrays (its own side's and, exchanged once, the neighbour's) and hands the results to the

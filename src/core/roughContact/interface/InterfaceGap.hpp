@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The gap beside the contact: where the surfaces do not touch, heat still crosses by the gas in
 // the gap and by radiation. Per face (interface/FaceCoupling.hpp):
 //     h = h_c + h_g + h_r,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a run writes about an interface besides its fields: a time series, one CSV row per
 // write time, and the pressure table the run used, once. The boundary condition (on the master
 // processor, from one of the interface's two sides) writes both under

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading an areal surface from a file of either format.
 #include "roughContact/io/ArealReader.hpp"
 

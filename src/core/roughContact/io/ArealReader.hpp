@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading an areal surface (height map) from a file of either format: an X3P file or a text
 // matrix (io/X3pReader, io/MatrixReader).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading an areal surface (height map) from a plain text matrix of heights.
 #pragma once
 

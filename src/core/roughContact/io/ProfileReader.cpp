@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading a measured line profile z(x) from a text file (columns, or a Bruker Dektak export).
 #include "roughContact/io/ProfileReader.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading a surface spectrum (frequency levels and their amplitudes) from a text file.
 #include "roughContact/io/SpectrumReader.hpp"
 

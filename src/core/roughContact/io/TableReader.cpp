@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tokenising of table files shared by ProfileReader and SpectrumReader.
 #include "roughContact/io/TableReader.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Internal helper of the readers: a text file of numeric columns, tokenised into rows.
 // Not part of the public API; ProfileReader and SpectrumReader share it.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Length units of input files: parsing their names and converting to metres.
 #include "roughContact/io/Units.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading an areal surface from an ISO 25178-72 X3P file: libzip opens the archive, pugixml
 // parses main.xml, OpenSSL's EVP computes the MD5 checksums.
 #include "roughContact/io/X3pReader.hpp"

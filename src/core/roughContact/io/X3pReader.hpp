@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading an areal surface from an ISO 25178-72 X3P file (the ISO 5436-2 XML container).
 #pragma once
 

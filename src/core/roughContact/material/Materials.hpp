@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Elastic and plastic properties of a contact pair (docs/theory.md §1.7, seed Table 1).
 #pragma once
 

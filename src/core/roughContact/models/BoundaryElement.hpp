@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The exact reference: the boundary-element contact of an areal surface (bem/PolonskyKeer) as
 // a contact model, with the exact contact conductance of its contact set.
 #pragma once

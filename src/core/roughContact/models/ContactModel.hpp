@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What every rough-surface contact model answers: real contact area at a load.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Greenwood-Williamson: Gaussian summits of one radius R with a spherical-asperity law
 // (Greenwood & Williamson 1966; seed §3.1; docs/theory.md §4.2).
 #pragma once

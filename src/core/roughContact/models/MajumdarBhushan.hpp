@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Majumdar-Bhushan fractal contact (Majumdar & Bhushan, ASME J. Tribol. 113 (1991) 1-11;
 // seed §3.1; docs/theory.md §4.4).
 #pragma once

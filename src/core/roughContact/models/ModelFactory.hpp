@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every contact model by the name users select it by.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The multi-scale framework of seed §2.1 (Eqs. 1-2, assumptions 1-5).
 #pragma once
 

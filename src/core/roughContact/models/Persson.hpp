@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Persson's contact theory (B.N.J. Persson, J. Chem. Phys. 115 (2001) 3840) with the mean
 // interfacial separation of Persson (Phys. Rev. Lett. 99 (2007) 125502) and Yang & Persson
 // (J. Phys.: Condens. Matter 20 (2008) 215214), and the contact conductance by Barber's relation

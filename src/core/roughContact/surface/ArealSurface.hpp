@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A measured or synthesized areal surface: heights z(x, y) on a uniform rectangular grid
 // (ISO 25178 calls it a height map).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fractal dimension D and roughness G of a Weierstrass-Mandelbrot surface fitted to a spectrum
 // (Majumdar & Tien 1990 as used by the seed §3.2; docs/theory.md §4.3).
 #pragma once

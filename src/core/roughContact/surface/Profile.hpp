@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A measured line profile z(x) on a uniform grid (docs/theory.md §1.1).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The two roughness parameters of the thermal contact correlations (Mikic.hpp,
 // CooperMikicYovanovich.hpp, Microhardness.hpp): the rms height sigma and the mean absolute
 // slope m, from a profile, an areal surface or a spectrum, and of two surfaces in contact

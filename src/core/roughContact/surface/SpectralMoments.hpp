@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // McCool's spectral moments and the Greenwood-Williamson summit parameters derived from them
 // (McCool, Wear 107 (1986) 37-60; seed §3.2; docs/theory.md §4.1).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The surface as frequency levels f_i with amplitudes beta_i (seed §2.1, docs/theory.md §1.2).
 #pragma once
 

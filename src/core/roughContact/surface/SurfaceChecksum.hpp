@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A stable 64-bit checksum of a surface's spectrum, so that a run can record which surface it
 // used and a restart can tell when the surface has changed since.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Seeded random rough profiles with a power-law spectrum: the stand-in for the seed's
 // measured profile (Fig. 4a), which is not public.
 #pragma once

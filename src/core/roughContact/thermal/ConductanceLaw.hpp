@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The contact conductance laws a user selects by name: the one list of their names, what each
 // needs, and a factory. Each law turns the nominal pressure P into h_c/k_s [1/m]; the real
 // contact area is the contact model's business (the multi-scale model's in the boundary

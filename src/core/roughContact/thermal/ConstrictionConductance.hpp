@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Thermal contact conductance of a multi-scale contact: the constriction resistances of the
 // frequency levels in series (docs/theory.md §5.2; the level-by-level form is derived there, the
 // exact choice of Jackson, Bhavnani & Ferguson, J. Heat Transfer 130 (2008) 081301, is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A monotone table of the real contact area and the contact conductance against the nominal
 // interface pressure, built once from a multi-scale model and interpolated cheaply: what a
 // boundary condition asks per face and per iteration.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Cooper-Mikic-Yovanovich (CMY) correlation for the thermal contact conductance of
 // nominally flat rough surfaces whose asperities deform plastically. The model is that of
 // Cooper, Mikic & Yovanovich, "Thermal contact conductance", Int. J. Heat Mass Transfer 12

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Heat transfer across the gas-filled and radiating gap of a joint of nominally flat rough
 // surfaces, beside the solid spots (Mikic.hpp, CooperMikicYovanovich.hpp): the joint conductance
 // is h_j = h_c + h_g + h_r.

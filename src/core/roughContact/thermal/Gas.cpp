@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/thermal/Gas.hpp"
 
 #include "roughContact/Error.hpp"

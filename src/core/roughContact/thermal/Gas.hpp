@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The interstitial gas of a gas-filled joint: the properties the gap conductance needs
 // (GapConductance.hpp) and a small table of common gases.
 //

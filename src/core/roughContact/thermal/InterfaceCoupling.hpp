@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The arithmetic of a coupled temperature condition across an interface of conductance h
 // between two solids, face by face, as a mixed (Robin) boundary condition on each side. Plain
 // numbers in, plain numbers out: the OpenFOAM boundary condition only gathers them.

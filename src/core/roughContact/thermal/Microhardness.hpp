@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The microhardness H_c of a rough surface's plastically deformed asperities, from the
 // Vickers microhardness correlation of its material: the correlation of Song & Yovanovich,
 // "Relative contact pressure: dependence on surface roughness and Vickers microhardness",

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Mikic's correlation for the thermal contact conductance of nominally flat rough surfaces whose
 // asperities deform elastically: B. B. Mikic, "Thermal contact conductance; theoretical
 // considerations", Int. J. Heat Mass Transfer 17 (1974) 205-214, elastic case, in the form

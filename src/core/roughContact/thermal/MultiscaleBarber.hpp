@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A contact conductance built on the multi-scale model: Barber's relation applied to the
 // elastic energy stored in the model's levels.
 //
