@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # cmake --install: the core library, its headers (include/roughContact/..., the tree as it is
 # in src/core), the command-line tools (src/cli installs them to bin), a CMake package
 # (find_package(roughContact CONFIG) -> roughContact::roughContact) and roughContact.pc.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The consumer of an installed roughContact: two steel blocks with a power-law surface, the
 // jacksonGreen multi-scale model and the default conductance law, at one nominal pressure.
 // Prints the load F/(A_n E') it asks for, A_r/A_n and h_c/k_s from the interface's table,
