@@ -1127,10 +1127,8 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
     const bool apart = out.apart > 0;
     const bool beyondTable = out.beyondTable > 0;
 
-    // The output fields, where a write will read them: at write times (and
-    // once at the first evaluation).
-    const bool output = db().time().writeTime() || !evaluated_;
-    if (output)
+    // The output fields, at every evaluation: function objects may sample
+    // them at any time step (a history of contactConductance, say).
     {
         forAll(conductance_, facei)
         {
@@ -1182,10 +1180,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
 
     mixedFvPatchScalarField::updateCoeffs();
 
-    if (output)
-    {
-        storeOutput();
-    }
+    storeOutput();
     evaluated_ = true;
 
     UPstream::msgType() = oldTag;

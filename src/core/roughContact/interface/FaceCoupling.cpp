@@ -174,11 +174,6 @@ void coupleConstant(double h, const CouplingInputs& in, CouplingOutputs& out)
     }
 }
 
-double shownConductance(double h, double kDelta, double kDeltaNbr)
-{
-    return std::isinf(h) ? effectiveConductance(kDelta, kDeltaNbr) : h;
-}
-
 void CouplingSummary::add(const CouplingOutputs& out, const double* magSf, const double* shown)
 {
     const std::size_t n = out.state.size();

@@ -29,6 +29,7 @@
 #include "roughContact/Error.hpp"
 
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -148,6 +149,12 @@ struct CouplingSummary {
 /// the face, 1/(1/(kappa1 delta1) + 1/(kappa2 delta2)): the most the mesh passes there per
 /// kelvin, a finite number of the same order as its neighbours' so that averages stay
 /// meaningful. contactState tells such a face apart.
-double shownConductance(double h, double kDelta, double kDeltaNbr);
+/// Inline: called per face and per evaluation.
+inline double shownConductance(double h, double kDelta, double kDeltaNbr)
+{
+    // effectiveConductance(kDelta, kDeltaNbr) of thermal/InterfaceCoupling.hpp, for kDelta and
+    // kDeltaNbr that couple() has checked (finite, > 0).
+    return h < std::numeric_limits<double>::infinity() ? h : kDelta * kDeltaNbr / (kDelta + kDeltaNbr);
+}
 
 } // namespace roughContact
