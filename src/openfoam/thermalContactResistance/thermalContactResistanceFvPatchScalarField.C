@@ -11,6 +11,7 @@
 #include "volFields.H"
 #include "mappedPatchBase.H"
 #include "IOdictionary.H"
+#include "StringStream.H"
 #include "OSspecific.H"
 
 #include "roughContact/interface/InterfaceMonitor.hpp"
@@ -48,6 +49,20 @@ namespace
         "contactConductance", "contactAreaFraction", "contactPressure",
         "contactState", "gapConductance"
     };
+}
+
+
+namespace
+{
+    //- A dictionary's contents as text, to tell whether it changed. Not
+    //  dictionary::digest(): Debian 13's build of v1912 fails in its SHA1
+    //  stream ("error in IOstream sha1"), and a comparison needs no hash.
+    std::string entryText(const Foam::dictionary& dict)
+    {
+        Foam::OStringStream os;
+        dict.write(os, false);
+        return os.str();
+    }
 }
 
 
@@ -181,7 +196,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::readContact
             << "' (" << props.objectPath() << "): the surface's checksum: "
             << e.what() << exit(FatalIOError);
     }
-    contactDigest_ = props.subDict(contactName_).digest();
+    contactDigest_ = entryText(props.subDict(contactName_));
     contactCheckedTimeIndex_ = runTime.timeIndex();
     checkRecordedSurface(dict);
 
@@ -268,7 +283,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::checkContactUnchanged()
     const IOdictionary& props =
         runTime.lookupObject<IOdictionary>("thermalContactProperties");
     const dictionary* entry = props.findDict(contactName_);
-    if (!entry || entry->digest() != contactDigest_)
+    if (!entry || entryText(*entry) != contactDigest_)
     {
         WarningInFunction
             << who().c_str() << ": entry '" << contactName_ << "' of "
