@@ -7,6 +7,7 @@
 // tests/core/testExtremeInputs.cpp holds each model to that at the corners of these ranges.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <string>
 
@@ -80,6 +81,14 @@ constexpr double maximumGasPressure = 1e9;
 /// Throws ParameterError(what, ...) unless value lies in [lo, hi] (and is finite); `unit`
 /// follows the numbers in the message ("m", "Pa", "" for none).
 double requireInRange(const std::string& what, double value, double lo, double hi, const char* unit);
+/// The same for a literal name: the name becomes a string only when the check fails, so the
+/// check costs nothing on per-face paths (the gap's conductance per face and evaluation).
+inline double requireInRange(const char* what, double value, double lo, double hi, const char* unit)
+{
+    // isfinite first: an ordered comparison with a NaN raises FE_INVALID (a trap here).
+    return std::isfinite(value) && value >= lo && value <= hi ? value
+                                                              : requireInRange(std::string(what), value, lo, hi, unit);
+}
 /// A length [m] within [minimumLength, maximumLength].
 double requireLength(const std::string& what, double value);
 /// Throws ParameterError(what, ...) naming the count, the cap and the memory it would need,
