@@ -450,6 +450,38 @@ TEST(FaceCoupling, RadiationFollowsTheFaceTemperatures)
     EXPECT_NEAR(out.radiativeConductance[0], 4 * 5.670374419e-8 * 2.7e7 / 3, 1e-9);
 }
 
+// The per-face path (InterfaceGap::conductances, one test of its inputs) gives the bits of the
+// checked functions gasConductance and radiativeConductance, which the tests above and
+// testGapConductance pin to closed forms; and names what is out of range.
+TEST(FaceCoupling, ThePerFaceGapPathIsTheCheckedFormulas)
+{
+    const ContactInterface ci(withAirAndRadiation());
+    const InterfaceGap& gap = ci.gap();
+    for (const double Y : {0.0, 1e-9, 3.7e-6, 1e-3}) {
+        for (const double T1 : {0.5, 280.0, 300.0, 1234.5}) {
+            const double T2 = 1.1 * T1 + 3.0;
+            const GapConductances h = gap.conductances(Y, T1, T2);
+            EXPECT_EQ(h.gas, gap.gasConductance(Y, T1, T2)) << Y << " " << T1;
+            EXPECT_EQ(h.radiative, gap.radiativeConductance(T1, T2)) << T1;
+            EXPECT_EQ(h.radiative, radiativeConductance(T1, T2, 0.5, 0.5)) << T1;
+        }
+    }
+    const auto named = [&](double Y, double T1, double T2, const std::string& what) {
+        try {
+            gap.conductances(Y, T1, T2);
+            ADD_FAILURE() << "accepted Y " << Y << ", T " << T1 << ", " << T2;
+        } catch (const ParameterError& e) {
+            EXPECT_EQ(std::string(e.what()).rfind(what, 0), 0U) << e.what();
+        }
+    };
+    named(1e-6, 0.0, 300.0, "face temperature");
+    named(1e-6, std::nan(""), 300.0, "face temperature");
+    named(1e-6, 300.0, 2e5, "neighbour face temperature");
+    named(-1e-9, 300.0, 300.0, "gap separation Y");
+    named(std::nan(""), 300.0, 300.0, "gap separation Y");
+    named(HUGE_VAL, 300.0, 300.0, "gap separation Y");
+}
+
 TEST(FaceCoupling, BadGapInputIsNamed)
 {
     InterfaceSpec spec = withAirAndRadiation();

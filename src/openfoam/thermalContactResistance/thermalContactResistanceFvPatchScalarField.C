@@ -1027,24 +1027,68 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
 
     // What this side needs of the neighbour, in one exchange: its cell
     // temperature (contact) or face temperature (h), kappa and pressure per
-    // face, and (once, while the mesh does not change) its deltaCoeffs.
-    vectorField nbrData(nbrPatch.size());
+    // face; with a gap also its face temperature and gap width (a
+    // symmTensor's six components carry the five); and (once, while the mesh
+    // does not change) its deltaCoeffs.
+    const bool withGap = hConstant_ <= 0 && interface_->hasGap();
+    const label nNbr = nbrPatch.size();
+    scalarField nbrT(size());
+    scalarField nbrKappa(size());
+    scalarField nbrP(size());
+    scalarField nbrTface;
+    scalarField nbrGapWidth;
     nbrField.checkKappaField();
     {
-        const scalarField nbrT
+        const scalarField T
         (
             hConstant_ > 0
           ? scalarField(nbrField)
           : nbrField.patchInternalField()()
         );
-        const scalarField nbrK(nbrField.kappa(nbrField));
-        const scalarField nbrP(nbrField.interfacePressure());
-        forAll(nbrData, i)
+        const scalarField K(nbrField.kappa(nbrField));
+        const scalarField P(nbrField.interfacePressure());
+        if (!withGap)
         {
-            nbrData[i] = vector(nbrT[i], nbrK[i], nbrP[i]);
+            vectorField nbrData(nNbr);
+            for (label i = 0; i < nNbr; ++i)
+            {
+                nbrData[i] = vector(T[i], K[i], P[i]);
+            }
+            mpp.distribute(nbrData);
+            forAll(nbrData, i)
+            {
+                nbrT[i] = nbrData[i].x();
+                nbrKappa[i] = nbrData[i].y();
+                nbrP[i] = nbrData[i].z();
+            }
+        }
+        else
+        {
+            const bool widths = nbrField.hasGapWidth();
+            const scalarField W
+            (
+                widths ? nbrField.interfaceGapWidth()() : scalarField(nNbr, Zero)
+            );
+            const scalarField& Tf = nbrField;
+            symmTensorField nbrData(nNbr);
+            for (label i = 0; i < nNbr; ++i)
+            {
+                nbrData[i] = symmTensor(T[i], K[i], P[i], Tf[i], W[i], 0);
+            }
+            mpp.distribute(nbrData);
+            nbrTface.setSize(size());
+            nbrGapWidth.setSize(size());
+            forAll(nbrData, i)
+            {
+                const symmTensor& d = nbrData[i];
+                nbrT[i] = d.xx();
+                nbrKappa[i] = d.xy();
+                nbrP[i] = d.xz();
+                nbrTface[i] = d.yy();
+                nbrGapWidth[i] = d.yz();
+            }
         }
     }
-    mpp.distribute(nbrData);
     // distribute() is collective: decide on what every processor knows
     // alike (not on this processor's, possibly empty, face count).
     if (!haveNbrDeltaCoeffs_ || nbrMesh.changing())
@@ -1053,36 +1097,14 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
         mpp.distribute(nbrDeltaCoeffs_);
         haveNbrDeltaCoeffs_ = true;
     }
-    const scalarField nbrT(nbrData.component(vector::X));
-    const scalarField nbrKappa(nbrData.component(vector::Y));
-    const scalarField nbrP(nbrData.component(vector::Z));
     in.kappaNbr = nbrKappa.cdata();
     in.deltaCoeffsNbr = nbrDeltaCoeffs_.cdata();
 
     const scalarField myP(interfacePressure());
-    scalarField nbrTface;
     scalarField myGapWidth;
-    scalarField nbrGapWidth;
-    if (hConstant_ <= 0 && interface_->hasGap())
+    if (withGap && hasGapWidth())
     {
-        const bool widths = nbrField.hasGapWidth();
-        const scalarField nbrW
-        (
-            widths ? nbrField.interfaceGapWidth()() : scalarField(nbrPatch.size(), Zero)
-        );
-        const scalarField nbrTf(nbrField);
-        vectorField nbrGap(nbrPatch.size());
-        forAll(nbrGap, i)
-        {
-            nbrGap[i] = vector(nbrTf[i], nbrW[i], 0);
-        }
-        mpp.distribute(nbrGap);
-        nbrTface = nbrGap.component(vector::X);
-        nbrGapWidth = nbrGap.component(vector::Y);
-        if (hasGapWidth())
-        {
-            myGapWidth = interfaceGapWidth();
-        }
+        myGapWidth = interfaceGapWidth();
     }
     try
     {
@@ -1097,10 +1119,10 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
             in.pressure = myP.cdata();
             in.pressureNbr = nbrP.cdata();
             in.cellTemperatureNbr = nbrT.cdata();
-            if (interface_->hasGap())
+            if (withGap)
             {
                 // The gap's terms need both face temperatures and the widths
-                // both sides give: one more exchange.
+                // both sides give (exchanged with the rest above).
                 in.faceTemperature = this->cdata();
                 in.faceTemperatureNbr = nbrTface.cdata();
                 if (hasGapWidth())

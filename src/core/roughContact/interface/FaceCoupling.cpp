@@ -115,16 +115,15 @@ void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCac
             double hg = 0.0;
             double hr = 0.0;
             if (gap && state != FaceState::complete) {
-                const double T1 = requirePositive("face temperature", in.faceTemperature[i]);
-                const double T2 = requirePositive("neighbour face temperature", in.faceTemperatureNbr[i]);
                 double Y = cache.separation[i];
                 if (state == FaceState::apart) {
                     Y = in.gapWidth ? nominalGapWidth(requireNonNegative("gap width", in.gapWidth[i]),
                                                       requireNonNegative("neighbour gap width", in.gapWidthNbr[i]))
                                     : gap->firstTouchSeparation();
                 }
-                hg = gap->gasConductance(Y, T1, T2);
-                hr = gap->radiativeConductance(T1, T2);
+                const GapConductances g = gap->conductances(Y, in.faceTemperature[i], in.faceTemperatureNbr[i]);
+                hg = g.gas;
+                hr = g.radiative;
             }
             const double h = hc + hg + hr;
             // coupledValueFraction(h, kDelta, kDeltaNbr) (thermal/InterfaceCoupling.hpp), its

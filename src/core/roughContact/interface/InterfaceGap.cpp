@@ -2,7 +2,9 @@
 #include "roughContact/interface/InterfaceGap.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 
+#include <cmath>
 #include <sstream>
 
 namespace roughContact {
@@ -23,7 +25,8 @@ double emissivity(const char* name, double e)
 
 InterfaceGap::InterfaceGap(const GapSpec& spec, std::function<double(double)> separation, double sigma, double Hc,
                            double firstTouchPressure)
-    : spec_(spec), separation_(std::move(separation)), sigma_(sigma), Hc_(Hc), firstTouch_(0.0)
+    : spec_(spec), separation_(std::move(separation)), sigma_(sigma), Hc_(Hc), firstTouch_(0.0),
+      radiationFactor_(0.0)
 {
     if (spec.emissivity1.has_value() != spec.emissivity2.has_value()) {
         throw ParameterError("gap emissivity", "give both sides' emissivities (radiation) or neither");
@@ -31,6 +34,7 @@ InterfaceGap::InterfaceGap(const GapSpec& spec, std::function<double(double)> se
     if (spec.emissivity1) {
         emissivity("gap emissivity e1", *spec.emissivity1);
         emissivity("gap emissivity e2", *spec.emissivity2);
+        radiationFactor_ = stefanBoltzmann * greyFactor(*spec.emissivity1, *spec.emissivity2);
     }
     if (!spec.gas && !spec.emissivity1) {
         throw ParameterError("gap", "has neither a gas nor emissivities: nothing crosses it (leave the gap out)");
@@ -68,6 +72,38 @@ double InterfaceGap::radiativeConductance(double T1, double T2) const
 {
     return spec_.emissivity1 ? roughContact::radiativeConductance(T1, T2, *spec_.emissivity1, *spec_.emissivity2)
                              : 0.0;
+}
+
+namespace {
+
+inline bool temperatureInRange(double T)
+{
+    // isfinite first: an ordered comparison with a NaN raises FE_INVALID.
+    return std::isfinite(T) && T >= limits::minimumTemperature && T <= limits::maximumTemperature;
+}
+
+} // namespace
+
+GapConductances InterfaceGap::conductances(double Y, double T1, double T2) const
+{
+    if (!(temperatureInRange(T1) && temperatureInRange(T2) && std::isfinite(Y) && Y >= 0.0 &&
+          Y <= limits::maximumLength)) {
+        // The named error of whichever is out of range.
+        limits::requireInRange("face temperature", T1, limits::minimumTemperature, limits::maximumTemperature, "K");
+        limits::requireInRange("neighbour face temperature", T2, limits::minimumTemperature,
+                               limits::maximumTemperature, "K");
+        limits::requireInRange("gap separation Y", Y, 0.0, limits::maximumLength, "m");
+    }
+    // The mean of two temperatures in range is in range: the checks of gasConductance and
+    // radiativeConductance hold, and these are their formulas.
+    GapConductances h;
+    if (gas_) {
+        h.gas = gas_->conductanceOfChecked(Y, 0.5 * T1 + 0.5 * T2);
+    }
+    if (spec_.emissivity1) {
+        h.radiative = radiativeConductanceOfChecked(T1, T2, radiationFactor_);
+    }
+    return h;
 }
 
 std::string InterfaceGap::summary() const

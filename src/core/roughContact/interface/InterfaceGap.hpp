@@ -26,6 +26,12 @@
 
 namespace roughContact {
 
+/// h_g and h_r of one face [W/(m^2 K)].
+struct GapConductances {
+    double gas = 0.0;
+    double radiative = 0.0;
+};
+
 /// What is in the gap, as a user describes it.
 struct GapSpec {
     std::optional<GasGapSpec> gas;         ///< none: vacuum (no gas conduction)
@@ -54,6 +60,11 @@ public:
     double gasConductance(double Y, double T1, double T2) const;
     /// h_r [W/(m^2 K)] at face temperatures T1, T2 [K]; 0 without radiation.
     double radiativeConductance(double T1, double T2) const;
+    /// Both, as gasConductance and radiativeConductance give them (the same bits), with one
+    /// test of the inputs: the per-face path of couple(). ParameterError naming "face
+    /// temperature", "neighbour face temperature" (each within limits::minimumTemperature..
+    /// maximumTemperature) or "gap separation Y".
+    GapConductances conductances(double Y, double T1, double T2) const;
     const GapSpec& spec() const noexcept { return spec_; }
     /// One line for a log: gas, its pressure and M at 300 K, emissivities, where Y comes from.
     std::string summary() const;
@@ -65,6 +76,7 @@ private:
     double sigma_;
     double Hc_;
     double firstTouch_;
+    double radiationFactor_; ///< sigma_SB greyFactor(e1, e2) [W/(m^2 K^4)], 0 without radiation
 };
 
 } // namespace roughContact

@@ -85,16 +85,12 @@ GasGap::GasGap(const GasGapSpec& spec) : spec_(spec), alphaBeta_(0.0)
 
 double GasGap::conductivity(double T) const
 {
-    requireTemperature("gas temperature T", T);
-    const GasProperties& g = spec_.gas;
-    return g.conductivity * std::pow(T / g.referenceTemperature, g.conductivityExponent);
+    return conductivityOfChecked(requireTemperature("gas temperature T", T));
 }
 
 double GasGap::meanFreePath(double T) const
 {
-    requireTemperature("gas temperature T", T);
-    const GasProperties& g = spec_.gas;
-    return g.meanFreePath * (T / g.referenceTemperature) * (g.referencePressure / spec_.pressure);
+    return meanFreePathOfChecked(requireTemperature("gas temperature T", T));
 }
 
 double GasGap::rarefaction(double T) const { return alphaBeta_ * meanFreePath(T); }
@@ -102,7 +98,13 @@ double GasGap::rarefaction(double T) const { return alphaBeta_ * meanFreePath(T)
 double GasGap::conductance(double Y, double T) const
 {
     limits::requireInRange("gap separation Y", Y, 0.0, limits::maximumLength, "m");
-    return conductivity(T) / (Y + rarefaction(T));
+    return conductanceOfChecked(Y, requireTemperature("gas temperature T", T));
+}
+
+double greyFactor(double e1, double e2)
+{
+    const double eMin = std::min(e1, e2), eMax = std::max(e1, e2);
+    return eMin / (eMin / eMax + (1.0 - eMin));
 }
 
 double radiativeConductance(double T1, double T2, double e1, double e2)
@@ -117,12 +119,7 @@ double radiativeConductance(double T1, double T2, double e1, double e2)
     if (e2 == 0.0) {
         throw ParameterError("emissivity e2", "must lie in (0, 1], got 0");
     }
-    // 1/(1/e1 + 1/e2 - 1) = e_min/(e_min/e_max + 1 - e_min): no 1/e and no product e1 e2 that
-    // could underflow, so finite and accurate for every e in (0, 1] (the denominator lies in
-    // (0, 2]).
-    const double eMin = std::min(e1, e2), eMax = std::max(e1, e2);
-    const double greyFactor = eMin / (eMin / eMax + (1.0 - eMin));
-    return stefanBoltzmann * (T1 * T1 + T2 * T2) * (T1 + T2) * greyFactor;
+    return radiativeConductanceOfChecked(T1, T2, stefanBoltzmann * greyFactor(e1, e2));
 }
 
 double gapSeparationGaussian(double P, double sigma, double Hc)

@@ -63,6 +63,8 @@
 
 #include "roughContact/thermal/Gas.hpp"
 
+#include <cmath>
+
 namespace roughContact {
 
 /// Stefan-Boltzmann constant [W/(m^2 K^4)] (CODATA 2018, exact in the 2019 SI).
@@ -91,11 +93,29 @@ public:
     /// h_g = k_g(T)/(Y + M) [W/(m^2 K)]; Y [m] finite, within [0, limits::maximumLength]
     /// (ParameterError naming "gap separation Y").
     double conductance(double Y, double T) const;
+    /// conductance(Y, T) for a Y and T the caller has checked as conductance() would (Y within
+    /// [0, limits::maximumLength], T within limits::minimumTemperature..maximumTemperature): the
+    /// same arithmetic, the same bits, without the checks. Inline: the per-face path
+    /// (InterfaceGap::conductances) calls it once per face and evaluation.
+    double conductanceOfChecked(double Y, double T) const
+    {
+        return conductivityOfChecked(T) / (Y + alphaBeta_ * meanFreePathOfChecked(T));
+    }
     /// The spec as validated, with the accommodation coefficients resolved (a 0 given is replaced
     /// by the gas's default).
     const GasGapSpec& spec() const { return spec_; }
 
 private:
+    // The formulas themselves (k_g(T), Lambda(T)), for a T already checked.
+    double conductivityOfChecked(double T) const
+    {
+        return spec_.gas.conductivity * std::pow(T / spec_.gas.referenceTemperature, spec_.gas.conductivityExponent);
+    }
+    double meanFreePathOfChecked(double T) const
+    {
+        return spec_.gas.meanFreePath * (T / spec_.gas.referenceTemperature) * (spec_.gas.referencePressure / spec_.pressure);
+    }
+
     GasGapSpec spec_;
     double alphaBeta_; ///< [(2-a1)/a1 + (2-a2)/a2] 2 gamma/((gamma+1) Pr)
 };
@@ -104,6 +124,19 @@ private:
 /// [W/(m^2 K)]; T within limits::minimumTemperature..maximumTemperature [K] ("temperature T1",
 /// "temperature T2"), e in (0, 1] ("emissivity e1", "emissivity e2").
 double radiativeConductance(double T1, double T2, double e1, double e2);
+
+/// The grey factor 1/(1/e1 + 1/e2 - 1) of two emissivities in (0, 1] (checked by the caller),
+/// written e_min/(e_min/e_max + 1 - e_min): no 1/e and no product e1 e2 that could underflow, so
+/// finite and accurate for every e in (0, 1] (the denominator lies in (0, 2]).
+double greyFactor(double e1, double e2);
+
+/// h_r = factor (T1^2 + T2^2)(T1 + T2), factor = sigma_SB greyFactor(e1, e2) [W/(m^2 K^4)], for
+/// temperatures the caller has checked: radiativeConductance()'s arithmetic without the checks.
+/// Inline: per face (InterfaceGap::conductances).
+inline double radiativeConductanceOfChecked(double T1, double T2, double factor)
+{
+    return factor * ((T1 * T1 + T2 * T2) * (T1 + T2));
+}
 
 /// P/H_c range over which gapSeparationCorrelation uses the published fit (header comment).
 constexpr double correlationMinimumRelativePressure = 1e-6;
