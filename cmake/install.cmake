@@ -39,10 +39,16 @@ else()
   string(REGEX REPLACE "/$" "" _rel "${_rel}")
   set(ROUGHCONTACT_PC_PREFIX "\${pcfiledir}/${_rel}")
 endif()
+# The static core needs its dependencies on every consumer's link line, so they are Requires
+# (public): `pkg-config --libs roughContact` gives -lfftw3 -lzip ... and links them as the
+# system has them (shared). Not Requires.private: that needs `--static`, which also pulls the
+# dependencies' own private ones (libzip's -lbz2 -llzma -lzstd), whose static libraries a
+# system need not have (Debian 13 does not install them with libzip-dev). The shared core
+# carries its dependencies itself.
 if(ROUGHCONTACT_LIBRARY_TYPE STREQUAL "STATIC_LIBRARY")
-  set(ROUGHCONTACT_PC_REQUIRES_PRIVATE "fftw3 libzip pugixml libcrypto")
+  set(ROUGHCONTACT_PC_REQUIRES "fftw3 libzip pugixml libcrypto")
 else()
-  set(ROUGHCONTACT_PC_REQUIRES_PRIVATE "")
+  set(ROUGHCONTACT_PC_REQUIRES "")
 endif()
 configure_file(${PROJECT_SOURCE_DIR}/cmake/roughContact.pc.in
                ${PROJECT_BINARY_DIR}/roughContact.pc @ONLY)

@@ -26,7 +26,7 @@ def test_read_profile_dektak_in_metres():
 def test_read_profile_units_and_spacing(tmp_path):
     f = tmp_path / "z.txt"
     z = np.sin(np.arange(16) * 0.7)
-    f.write_text("\n".join(f"{v!r}" for v in z) + "\n")
+    f.write_text("\n".join(repr(float(v)) for v in z) + "\n")
     p = rc.read_profile(str(f), units="um", spacing=0.5)
     np.testing.assert_array_equal(p.heights, z * 1e-6)
     assert p.spacing == pytest.approx(0.5e-6, rel=1e-15)
@@ -118,7 +118,7 @@ def test_read_areal_x3p():
 def test_read_areal_matrix(tmp_path):
     z = np.arange(80, dtype=float).reshape(8, 10) % 7
     f = tmp_path / "m.txt"
-    f.write_text("\n".join(" ".join(repr(v) for v in row) for row in z) + "\n")
+    f.write_text("\n".join(" ".join(repr(float(v)) for v in row) for row in z) + "\n")
     a = rc.read_areal(str(f), units="nm", dx=2.0)
     np.testing.assert_allclose(a.heights, z * 1e-9, rtol=1e-15)
     assert a.dx == pytest.approx(2e-9) and a.dy == pytest.approx(2e-9)
