@@ -22,6 +22,8 @@
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ContactTable.hpp"
+#include "roughContact/thermal/GapConductance.hpp"
+#include "roughContact/thermal/Gas.hpp"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -616,6 +618,125 @@ PYBIND11_MODULE(roughcontact, m)
             "The mean-plane separation [m] at the pressures [Pa] where the law defines one (persson, "
             "multiscaleBarber), NaN otherwise.");
 
+    // ---- the gap beside the contact (gas and radiation; docs/theory.md, "Gap conductance")
+    m.def("gas_names", &gasNames, "The gases known by name: air, helium, argon, nitrogen.");
+    py::class_<GasProperties>(m, "Gas",
+                              "A gas's properties: by name with roughcontact.gas('air'), or as numbers "
+                              "(Gas(conductivity=..., ...); name 'user').")
+        .def(py::init([](double conductivity, double conductivityExponent, double referenceTemperature,
+                         double heatCapacityRatio, double prandtl, double meanFreePath, double referencePressure,
+                         double accommodation) {
+                 GasProperties g;
+                 g.name = "user";
+                 g.conductivity = conductivity;
+                 g.conductivityExponent = conductivityExponent;
+                 g.referenceTemperature = referenceTemperature;
+                 g.heatCapacityRatio = heatCapacityRatio;
+                 g.prandtl = prandtl;
+                 g.meanFreePath = meanFreePath;
+                 g.referencePressure = referencePressure;
+                 g.accommodation = accommodation;
+                 checkGas(g);
+                 return g;
+             }),
+             py::kw_only(), py::arg("conductivity"), py::arg("conductivity_exponent"),
+             py::arg("reference_temperature"), py::arg("heat_capacity_ratio"), py::arg("prandtl"),
+             py::arg("mean_free_path"), py::arg("reference_pressure") = 101325.0, py::arg("accommodation"),
+             "k_g [W/(m K)] at T0 [K], k_g(T) = k_g (T/T0)^conductivity_exponent, gamma, Pr, the mean free "
+             "path [m] at T0 and reference_pressure [Pa], the default accommodation coefficient. "
+             "ParameterError names a number out of range.")
+        .def_readonly("name", &GasProperties::name, "'air', ..., or 'user'.")
+        .def_readonly("conductivity", &GasProperties::conductivity, "k_g [W/(m K)] at the reference temperature.")
+        .def_readonly("conductivity_exponent", &GasProperties::conductivityExponent, "n in k_g (T/T0)^n.")
+        .def_readonly("reference_temperature", &GasProperties::referenceTemperature, "T0 [K].")
+        .def_readonly("heat_capacity_ratio", &GasProperties::heatCapacityRatio, "gamma.")
+        .def_readonly("prandtl", &GasProperties::prandtl, "Pr.")
+        .def_readonly("mean_free_path", &GasProperties::meanFreePath, "Lambda0 [m] at T0 and P0.")
+        .def_readonly("reference_pressure", &GasProperties::referencePressure, "P0 [Pa].")
+        .def_readonly("accommodation", &GasProperties::accommodation, "The default accommodation coefficient.")
+        .def("__repr__", [](const GasProperties& g) {
+            std::ostringstream os;
+            os << "<roughcontact.Gas " << g.name << ": k_g " << g.conductivity << " W/(m K) at "
+               << g.referenceTemperature << " K>";
+            return os.str();
+        });
+    m.def("gas", &gasByName, py::arg("name"),
+          "The tabulated properties of a gas by name (gas_names()); ParameterError for any other name.");
+
+    py::class_<GasGap>(m, "GasGap",
+                       "Gas conduction across the gap: h_g = k_g(T)/(Y + M), M the rarefaction parameter "
+                       "from the accommodation coefficients, gamma, Pr and the mean free path at the gas "
+                       "pressure.")
+        .def(py::init([](const GasProperties& gas, double pressure, std::pair<double, double> accommodation) {
+                 return GasGap(GasGapSpec{gas, pressure, accommodation.first, accommodation.second});
+             }),
+             py::arg("gas"), py::arg("pressure") = 101325.0, py::arg("accommodation") = std::make_pair(0.0, 0.0),
+             "gas a Gas; pressure P_g [Pa]; accommodation (a1, a2), 0 for the gas's default.")
+        .def_property_readonly("accommodation",
+                               [](const GasGap& g) {
+                                   return std::make_pair(g.spec().accommodation1, g.spec().accommodation2);
+                               },
+                               "The accommodation coefficients (a1, a2) as used (the defaults resolved).")
+        .def(
+            "conductivity", [](const GasGap& g, const py::object& T) { return vectorize(T, [&](double t) { return g.conductivity(t); }); },
+            py::arg("T"), "k_g [W/(m K)] at the temperatures T [K].")
+        .def(
+            "mean_free_path", [](const GasGap& g, const py::object& T) { return vectorize(T, [&](double t) { return g.meanFreePath(t); }); },
+            py::arg("T"), "Lambda [m] at T [K] and the gas pressure.")
+        .def(
+            "rarefaction", [](const GasGap& g, const py::object& T) { return vectorize(T, [&](double t) { return g.rarefaction(t); }); },
+            py::arg("T"), "M [m] at T [K].")
+        .def(
+            "conductance",
+            [](const GasGap& g, const py::object& Y, double T) { return vectorize(Y, [&](double y) { return g.conductance(y, T); }); },
+            py::arg("separation"), py::arg("T"), "h_g [W/(m^2 K)] at the separations Y [m] and gas temperature T [K].");
+
+    // numpy's broadcasting over all four (pybind11's vectorize).
+    m.def("radiative_conductance", py::vectorize([](double T1, double T2, double e1, double e2) {
+              return radiativeConductance(T1, T2, e1, e2);
+          }),
+          py::arg("T1"), py::arg("T2"), py::arg("e1"), py::arg("e2"),
+          "h_r [W/(m^2 K)] of grey parallel plates at T1, T2 [K] with emissivities e1, e2 in (0, 1] (numbers or "
+          "arrays, broadcast): sigma_SB (T1^2 + T2^2)(T1 + T2)/(1/e1 + 1/e2 - 1).");
+    m.def(
+        "gap_separation",
+        [](const py::object& P, double sigma, double Hc) {
+            return vectorize(P, [&](double p) { return gapSeparationCorrelation(p, sigma, Hc); });
+        },
+        py::arg("pressures"), py::arg("sigma"), py::arg("Hc"),
+        "The mean-plane separation Y [m] of a plastic Gaussian contact at P [Pa] > 0, sigma [m], microhardness "
+        "Hc [Pa]: the published fit 1.184 sigma (-ln(3.132 P/Hc))^0.547 within 1e-6..0.1 of P/Hc, the exact "
+        "Gaussian form outside.");
+    m.def(
+        "gap_separation_gaussian",
+        [](const py::object& P, double sigma, double Hc) {
+            return vectorize(P, [&](double p) { return gapSeparationGaussian(p, sigma, Hc); });
+        },
+        py::arg("pressures"), py::arg("sigma"), py::arg("Hc"),
+        "The exact Gaussian form: Y = sqrt(2) sigma erfc^-1(2 P/Hc) [m] (0 from P/Hc = 1/2 on).");
+
+    py::class_<GapSpec>(m, "GapSpec",
+                        "What is in the gap of a ContactInterface: a gas and/or radiation (the OpenFOAM "
+                        "dictionary's gap entry).")
+        .def(py::init([](const py::object& gas, double pressure, std::pair<double, double> accommodation,
+                         std::optional<std::pair<double, double>> emissivity) {
+                 GapSpec g;
+                 if (!gas.is_none()) {
+                     const GasProperties props = py::isinstance<py::str>(gas) ? gasByName(gas.cast<std::string>())
+                                                                              : gas.cast<GasProperties>();
+                     g.gas = GasGapSpec{props, pressure, accommodation.first, accommodation.second};
+                 }
+                 if (emissivity) {
+                     g.emissivity1 = emissivity->first;
+                     g.emissivity2 = emissivity->second;
+                 }
+                 return g;
+             }),
+             py::kw_only(), py::arg("gas") = py::none(), py::arg("pressure") = 101325.0,
+             py::arg("accommodation") = std::make_pair(0.0, 0.0), py::arg("emissivity") = py::none(),
+             "gas a name ('air'), a Gas or None (vacuum); pressure P_g [Pa]; accommodation (a1, a2), 0 the "
+             "gas's default; emissivity (e1, e2) for radiation, or None. ContactInterface checks it.");
+
     // ---- the interface
     py::class_<SurfaceSpec>(m, "SurfaceSpec",
                             "One rough surface as ContactInterface reads it (the OpenFOAM dictionary's "
@@ -695,7 +816,7 @@ PYBIND11_MODULE(roughcontact, m)
                          std::optional<double> minPressure, std::optional<double> maxPressure,
                          std::size_t pointsPerDecade, std::optional<std::size_t> synthesize, std::uint64_t seed,
                          std::optional<bool> periodic, std::optional<double> hardness, bool hardnessFromYield,
-                         std::size_t bemPointsPerDecade) {
+                         std::size_t bemPointsPerDecade, std::optional<GapSpec> gap) {
                  InterfaceSpec s;
                  s.surfaces = surfaces;
                  s.side1 = side1;
@@ -715,6 +836,7 @@ PYBIND11_MODULE(roughcontact, m)
                  s.hardness = hardness;
                  s.hardnessFromYield = hardnessFromYield;
                  s.bemPointsPerDecade = bemPointsPerDecade;
+                 s.gap = gap;
                  py::gil_scoped_release release;
                  return std::make_unique<ContactInterface>(s);
              }),
@@ -724,13 +846,14 @@ PYBIND11_MODULE(roughcontact, m)
              py::arg("points_per_decade") = 40, py::arg("synthesize") = py::none(), py::arg("seed") = 1,
              py::arg("periodic") = py::none(), py::arg("hardness") = py::none(),
              py::arg("hardness_from_yield") = false, py::arg("bem_points_per_decade") = 6,
+             py::arg("gap") = py::none(),
              "ContactInterface(*, surfaces, side1, side2, model='jacksonGreen', conductance='', ...): "
              "surfaces a list of one or two SurfaceSpec; side1, side2 the Materials of the two solids; model a "
              "multi-scale model or 'boundaryElement'; conductance a law name ('' the default); microhardness "
              "[Pa] or vickers (c1 [Pa], c2) for cooperMikicYovanovich; min_pressure, max_pressure [Pa] the "
              "table's range (default 1e-9 E' to E'); points_per_decade; boundaryElement only: synthesize N "
              "(an N x N surface from the 1-D surfaces), seed, periodic, hardness [Pa], hardness_from_yield, "
-             "bem_points_per_decade. Building the table takes a fraction of a second for the multi-scale "
+             "bem_points_per_decade; gap a GapSpec (gas and/or radiation beside the contact) or None. Building the table takes a fraction of a second for the multi-scale "
              "models, far longer for boundaryElement.")
         .def(
             "area_fraction",
@@ -779,5 +902,28 @@ PYBIND11_MODULE(roughcontact, m)
         .def_property_readonly("model_name", &ContactInterface::modelName, "The model's name.")
         .def_property_readonly("conductance_law", &ContactInterface::conductanceLaw, "The law of the h column.")
         .def_property_readonly("surface", &ContactInterface::surface, "The equivalent surface's spectrum.")
+        .def_property_readonly("has_gap", &ContactInterface::hasGap, "True with a gap (gas or radiation).")
+        .def(
+            "gap_separation",
+            [](const ContactInterface& ci, const py::object& P) {
+                const InterfaceGap& gap = ci.gap();
+                return vectorize(P, [&](double p) { return gap.separation(p); });
+            },
+            py::arg("pressures"),
+            "Y [m] the gap uses at P [Pa] > 0: the model's mean separation where the table has one, else the "
+            "correlation of sigma and P/H_c. ParameterError without a gap.")
+        .def_property_readonly(
+            "gap_first_touch_separation", [](const ContactInterface& ci) { return ci.gap().firstTouchSeparation(); },
+            "Y [m] of faces apart with no gap width given: the separation at the table's first pressure.")
+        .def(
+            "gap_conductances",
+            [](const ContactInterface& ci, const py::object& Y, double T1, double T2) {
+                const InterfaceGap& gap = ci.gap();
+                py::object hg = vectorize(Y, [&](double y) { return gap.conductances(y, T1, T2).gas; });
+                return py::make_tuple(hg, gap.radiativeConductance(T1, T2));
+            },
+            py::arg("separation"), py::arg("T1"), py::arg("T2"),
+            "(h_g, h_r) [W/(m^2 K)] at the separations Y [m] and the two face temperatures T1, T2 [K] (the gas "
+            "at their mean), as the boundary condition adds them to h_c. ParameterError without a gap.")
         .def("summary", &ContactInterface::summary, "A few lines for a log.");
 }
