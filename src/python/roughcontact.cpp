@@ -46,6 +46,16 @@ using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 PyObject* inputErrorType = nullptr;
 PyObject* parameterErrorType = nullptr;
 
+/// A SurfaceSpec given by its spectrum's parameters (power law, fractal) and length.
+SurfaceSpec parametricSurface(SurfaceSpec::Kind kind, std::vector<double> parameters, std::optional<double> length)
+{
+    SurfaceSpec s;
+    s.kind = kind;
+    s.parameters = std::move(parameters);
+    s.length = length;
+    return s;
+}
+
 /// f applied to every element of x: a float for a number (or a 0-d array), an array of x's shape
 /// (float64) otherwise. The loop runs without the GIL (the core is plain C++).
 template <class F>
@@ -768,22 +778,14 @@ PYBIND11_MODULE(roughcontact, m)
         .def_static(
             "power_law",
             [](double bm, double mm, double fmin, double fmax, std::optional<double> length) {
-                SurfaceSpec s;
-                s.kind = SurfaceSpec::Kind::powerLaw;
-                s.parameters = {bm, mm, fmin, fmax};
-                s.length = length;
-                return s;
+                return parametricSurface(SurfaceSpec::Kind::powerLaw, {bm, mm, fmin, fmax}, length);
             },
             py::arg("bm"), py::arg("m"), py::arg("fmin"), py::arg("fmax"), py::arg("length") = py::none(),
             "A power-law spectrum bm f^-m [m], fmin, fmax [1/m], length [m].")
         .def_static(
             "fractal",
             [](double D, double G, double fmin, double fmax, std::optional<double> length) {
-                SurfaceSpec s;
-                s.kind = SurfaceSpec::Kind::fractal;
-                s.parameters = {D, G, fmin, fmax};
-                s.length = length;
-                return s;
+                return parametricSurface(SurfaceSpec::Kind::fractal, {D, G, fmin, fmax}, length);
             },
             py::arg("D"), py::arg("G"), py::arg("fmin"), py::arg("fmax"), py::arg("length") = py::none(),
             "A Weierstrass-Mandelbrot spectrum: D, G [m], fmin, fmax [1/m], length [m].")

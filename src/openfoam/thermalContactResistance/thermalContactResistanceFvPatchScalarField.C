@@ -1166,26 +1166,23 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
 
     // The output fields, at every evaluation: function objects may sample
     // them at any time step (a history of contactConductance, say).
+    forAll(conductance_, facei)
     {
-        forAll(conductance_, facei)
-        {
-            const scalar kDelta = myKappa[facei]*myDeltaCoeffs[facei];
-            const scalar kDeltaNbr = nbrKappa[facei]*nbrDeltaCoeffs_[facei];
-            conductance_[facei] = roughContact::shownConductance
-            (
-                out.contactConductance[facei], kDelta, kDeltaNbr
-            );
-            totalConductance_[facei] = roughContact::shownConductance
-            (
-                out.conductance[facei], kDelta, kDeltaNbr
-            );
-            areaFraction_[facei] = out.areaFraction[facei];
-            contactPressure_[facei] = out.pressure[facei];
-            contactState_[facei] =
-                roughContact::contactStateCode(out.state[facei]);
-            gapConductance_[facei] =
-                out.gapConductance[facei] + out.radiativeConductance[facei];
-        }
+        const scalar kDelta = myKappa[facei]*myDeltaCoeffs[facei];
+        const scalar kDeltaNbr = nbrKappa[facei]*nbrDeltaCoeffs_[facei];
+        conductance_[facei] = roughContact::shownConductance
+        (
+            out.contactConductance[facei], kDelta, kDeltaNbr
+        );
+        totalConductance_[facei] = roughContact::shownConductance
+        (
+            out.conductance[facei], kDelta, kDeltaNbr
+        );
+        areaFraction_[facei] = out.areaFraction[facei];
+        contactPressure_[facei] = out.pressure[facei];
+        contactState_[facei] = roughContact::contactStateCode(out.state[facei]);
+        gapConductance_[facei] =
+            out.gapConductance[facei] + out.radiativeConductance[facei];
     }
 
     if (hConstant_ <= 0)

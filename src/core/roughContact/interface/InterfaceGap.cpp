@@ -4,7 +4,6 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
 
-#include <cmath>
 #include <sstream>
 
 namespace roughContact {
@@ -74,26 +73,13 @@ double InterfaceGap::radiativeConductance(double T1, double T2) const
                              : 0.0;
 }
 
-namespace {
-
-inline bool temperatureInRange(double T)
-{
-    // isfinite first: an ordered comparison with a NaN raises FE_INVALID.
-    return std::isfinite(T) && T >= limits::minimumTemperature && T <= limits::maximumTemperature;
-}
-
-} // namespace
-
 GapConductances InterfaceGap::conductances(double Y, double T1, double T2) const
 {
-    if (!(temperatureInRange(T1) && temperatureInRange(T2) && std::isfinite(Y) && Y >= 0.0 &&
-          Y <= limits::maximumLength)) {
-        // The named error of whichever is out of range.
-        limits::requireInRange("face temperature", T1, limits::minimumTemperature, limits::maximumTemperature, "K");
-        limits::requireInRange("neighbour face temperature", T2, limits::minimumTemperature,
-                               limits::maximumTemperature, "K");
-        limits::requireInRange("gap separation Y", Y, 0.0, limits::maximumLength, "m");
-    }
+    // limits::requireInRange with a literal name is inline and builds its message only on failure.
+    limits::requireInRange("face temperature", T1, limits::minimumTemperature, limits::maximumTemperature, "K");
+    limits::requireInRange("neighbour face temperature", T2, limits::minimumTemperature, limits::maximumTemperature,
+                           "K");
+    limits::requireInRange("gap separation Y", Y, 0.0, limits::maximumLength, "m");
     // The mean of two temperatures in range is in range: the checks of gasConductance and
     // radiativeConductance hold, and these are their formulas.
     GapConductances h;
