@@ -6,6 +6,7 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
 #include "roughContact/io/ArealReader.hpp"
+#include "roughContact/io/Numbers.hpp"
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/io/SpectrumReader.hpp"
 #include "roughContact/io/Units.hpp"
@@ -26,9 +27,15 @@
 
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -86,14 +93,30 @@ std::vector<double> splitNumbers(const std::string& text, char sep, const std::s
     std::stringstream ss(text);
     std::string item;
     while (std::getline(ss, item, sep)) {
-        char* end = nullptr;
-        const double v = std::strtod(item.c_str(), &end);
-        if (item.empty() || *end != '\0' || !std::isfinite(v)) {
+        double v = 0.0;
+        if (!parseNumber(item, v) || !std::isfinite(v)) {
             throw ParameterError(option, "'" + item + "' is not a finite number");
         }
         out.push_back(v);
     }
     return out;
+}
+
+// A whole number 0 .. 2^64 - 1 written in decimal digits ("--synthesize 8,SEED"); ParameterError
+// naming the option and the item otherwise (a sign, a fraction, an exponent, more than 2^64 - 1).
+std::uint64_t wholeNumber(const std::string& text, const std::string& option, const std::string& what)
+{
+    std::uint64_t v = 0;
+    const char* end = text.data() + text.size();
+    const std::from_chars_result r = std::from_chars(text.data(), end, v);
+    if (text.empty() || r.ptr != end || r.ec == std::errc::invalid_argument) {
+        throw ParameterError(option, "expects N[,SEED]: " + what + " must be a whole number of decimal digits, got '" +
+                                         text + "'");
+    }
+    if (r.ec == std::errc::result_out_of_range) {
+        throw ParameterError(option, what + " " + text + " is beyond the largest, 2^64 - 1 = 18446744073709551615");
+    }
+    return v;
 }
 
 // The loads F/(A_n E') to compute: --loads, --load-range, or --pressures [Pa] divided by E' (Ep);
@@ -317,7 +340,7 @@ std::optional<double> hardnessOf(const Options& o, const ContactMaterials& mater
         throw ParameterError("--hardness", "give a hardness or --hardness-from-yield, not both");
     }
     if (o.hardness) {
-        return requirePositive("--hardness", *o.hardness);
+        return limits::requireInRange("--hardness", *o.hardness, limits::minimumHardness, limits::maximumHardness, "Pa");
     }
     if (o.hardnessFromYield) {
         return materials.hardness(who);
@@ -370,15 +393,49 @@ std::pair<ArealSurface, bool> arealSurfaceOf(const Options& o)
                              "needs an areal surface: --areal FILE, or --synthesize N[,SEED] with a profile or "
                              "spectrum");
     }
-    const std::vector<double> ns = splitNumbers(o.synthesize, ',', "--synthesize");
-    if (ns.size() > 2 || ns[0] != std::floor(ns[0]) || ns[0] < 0 || (ns.size() == 2 && (ns[1] != std::floor(ns[1]) || ns[1] < 0))) {
-        throw ParameterError("--synthesize", "expects N[,SEED]: a whole grid size and a whole seed >= 0");
+    // N and SEED as whole numbers, read as integers: a double of 2^64 or more does not convert
+    // to a seed (it was undefined behaviour, and gave seed 0's surface).
+    const std::size_t comma = o.synthesize.find(',');
+    const std::string nText = o.synthesize.substr(0, comma);
+    const std::uint64_t nGiven = wholeNumber(nText, "--synthesize", "the grid size N");
+    if (nGiven < limits::minimumSynthesisSize || nGiven > limits::maximumSynthesisSize || nGiven % 2 != 0) {
+        std::ostringstream os;
+        os << "the grid size N must be even and within [" << limits::minimumSynthesisSize << ", "
+           << limits::maximumSynthesisSize << "], got " << nText;
+        throw ParameterError("--synthesize", os.str());
     }
+    const auto seed = comma == std::string::npos
+                          ? std::uint64_t(1)
+                          : wholeNumber(o.synthesize.substr(comma + 1), "--synthesize", "the seed SEED");
     const Spectrum lineScan = surfaceOf(o);
-    const auto n = static_cast<std::size_t>(std::min(ns[0], 1e9));
-    const auto seed = ns.size() == 2 ? static_cast<std::uint64_t>(ns[1]) : std::uint64_t(1);
+    const auto n = static_cast<std::size_t>(nGiven);
     // A synthesized surface is periodic: it is solved so (the option is for measured maps).
     return {synthesizeIsotropic(lineScan, n, seed, "synthesized from " + lineScan.source()), true};
+}
+
+// An output file of --pressure-map: not one of the inputs (it would replace the map being
+// solved), not a directory, in a directory that can be written to. Checked before any solve.
+void checkOutputFile(const Options& o, const std::string& path, const std::string& option)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    for (const std::vector<std::string>* inputs : {&o.areals, &o.profiles, &o.spectra}) {
+        for (const std::string& input : *inputs) {
+            if (fs::equivalent(fs::path(path), fs::path(input), ec)) {
+                throw ParameterError(option, "'" + path + "' is an input of this run (" + input +
+                                                 "); it would be overwritten: name another file");
+            }
+        }
+    }
+    if (fs::is_directory(fs::path(path), ec)) {
+        throw ParameterError(option, "'" + path + "' is a directory; name a file");
+    }
+    const fs::path parent = fs::path(path).parent_path();
+    const std::string directory = parent.empty() ? "." : parent.string();
+    if (::access(directory.c_str(), W_OK | X_OK) != 0) {
+        throw ParameterError(option, "cannot write into the directory '" + directory + "' of '" + path +
+                                         "' (missing, or not writable)");
+    }
 }
 
 // --model boundaryElement: the curve, one progress line on stderr per load once the run takes
@@ -395,19 +452,28 @@ int runBoundaryElement(const Options& o)
     bo.hardness = hardnessOf(o, materials, "boundaryElement --hardness-from-yield");
     std::vector<double> pressures; // --pressures [Pa]: the first column
     const std::vector<double> loads = loadsOf(o, materials.reducedModulus(), &pressures);
-    const BoundaryElementModel model(surface, materials.reducedModulus(), bo);
+    if (!o.pressureMap.empty()) {
+        checkOutputFile(o, o.pressureMap, "--pressure-map"); // before minutes of solving
+    }
     const auto start = std::chrono::steady_clock::now();
     const auto seconds = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
-    if (!o.pressureMap.empty()) {
-        std::ofstream probe(o.pressureMap, std::ios::app);
-        if (!probe) {
-            throw ParameterError("--pressure-map", "cannot write '" + o.pressureMap + "'");
+    // A solve that runs longer than a few seconds says where it is (PolonskyKeer.hpp), and which
+    // load it is of (in the order solved, increasing).
+    std::size_t current = 1;
+    bo.progress = [&](const SolveProgress& s) {
+        std::cerr << "multiscaleContact: boundaryElement " << surface.nx() << " x " << surface.ny() << ": ";
+        if (std::string(s.stage) != "bonded-patch conductance") {
+            std::cerr << "load " << current << " of " << loads.size() << ", ";
         }
-    }
+        std::cerr << s.stage << " solve: iteration " << s.iteration << ", residual " << s.residual << " (tolerance " << s.tolerance
+                  << "), " << s.seconds << " s in this solve; " << seconds() << " s in all" << std::endl;
+    };
+    const BoundaryElementModel model(surface, materials.reducedModulus(), bo);
     const std::vector<BoundaryElementPoint> points =
         model.curve(loads, [&](std::size_t done, std::size_t total, const BoundaryElementPoint& p) {
+            current = done + 1;
             if (seconds() > 2.0) {
                 std::cerr << "multiscaleContact: boundaryElement " << surface.nx() << " x " << surface.ny()
                           << (periodic ? " (periodic)" : " (non-periodic)") << ": load " << done << " of " << total
@@ -433,11 +499,15 @@ int runBoundaryElement(const Options& o)
     }
     if (!o.pressureMap.empty()) {
         // The highest load's field again (one more solve, warm-started from nothing): written as
-        // a text matrix the areal reader reads back (rows along x, one per line, along y).
+        // a text matrix the areal reader reads back (rows along x, one per line, along y), to a
+        // temporary file beside the target, renamed over it once complete: a failed run leaves
+        // nothing behind and changes nothing.
         const double top = *std::max_element(loads.begin(), loads.end());
+        current = loads.size();
         std::vector<double> pressure;
         model.solve(top, &pressure);
-        std::ofstream map(o.pressureMap);
+        const std::string temporary = o.pressureMap + ".tmp." + std::to_string(static_cast<long>(::getpid()));
+        std::ofstream map(temporary, std::ios::trunc);
         map << "# contact pressure [Pa] of multiscaleContact --model boundaryElement at F/(A_n E') = " << top
             << "; " << surface.nx() << " x " << surface.ny() << " points at dx = " << surface.dx()
             << " m, dy = " << surface.dy() << " m; rows along x, one per line, following each other along y\n";
@@ -448,8 +518,14 @@ int runBoundaryElement(const Options& o)
             }
             map << '\n';
         }
+        map.close();
         if (!map) {
-            throw ParameterError("--pressure-map", "writing '" + o.pressureMap + "' failed");
+            std::remove(temporary.c_str());
+            throw ParameterError("--pressure-map", "writing '" + temporary + "' failed");
+        }
+        if (std::rename(temporary.c_str(), o.pressureMap.c_str()) != 0) {
+            std::remove(temporary.c_str());
+            throw ParameterError("--pressure-map", "cannot rename '" + temporary + "' to '" + o.pressureMap + "'");
         }
     }
     std::cout << out.str();

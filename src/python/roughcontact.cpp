@@ -29,6 +29,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -37,6 +38,73 @@
 
 namespace py = pybind11;
 using namespace roughContact;
+
+namespace {
+
+/// A bool or numpy.bool_ (numpy 1: "numpy.bool_", numpy 2: "numpy.bool"): numbers to float(), but
+/// never a pressure, modulus or length (True is 1.0).
+bool isBool(PyObject* o)
+{
+    const char* type = Py_TYPE(o)->tp_name;
+    return PyBool_Check(o) || std::strcmp(type, "numpy.bool_") == 0 || std::strcmp(type, "numpy.bool") == 0;
+}
+
+/// Text: float('1e6') and numpy's casts read it as a number; this module does not.
+bool isText(PyObject* o)
+{
+    return PyUnicode_Check(o) || PyBytes_Check(o) || PyByteArray_Check(o);
+}
+
+} // namespace
+
+// Every scalar float argument of the module (a pressure, a modulus, a length, a conductivity,
+// in a std::optional or a std::pair too): pybind11's own caster takes whatever float() takes in
+// its converting pass, True (1.0) among them. This one takes a float, an int, a numpy real
+// scalar or 0-d real array and anything else with __float__ or __index__ as float() reads it,
+// but refuses bool, numpy.bool_, str, bytes and numpy values of any other kind (bool, complex,
+// text): pybind11 then raises its TypeError "incompatible function arguments", which lists the
+// signature with every argument's name and the values given. (The arguments that take "a
+// number or an array of numbers" go through numbers() below, whose TypeError names the
+// argument.) This translation unit is the module's only one, and pybind11's casters are
+// internal to it, so no other module sees this specialization.
+namespace pybind11::detail {
+template <>
+class type_caster<double> {
+public:
+    bool load(handle src, bool convert)
+    {
+        PyObject* o = src.ptr();
+        if (o == nullptr) {
+            return false;
+        }
+        if (PyFloat_Check(o)) { // float and numpy.float64
+            value = PyFloat_AS_DOUBLE(o);
+            return true;
+        }
+        if (!convert || isBool(o) || isText(o)) {
+            return false;
+        }
+        if (hasattr(src, "dtype")) { // numpy scalars and 0-d arrays: real kinds only
+            const std::string kind = py::str(src.attr("dtype").attr("kind"));
+            if (kind != "f" && kind != "i" && kind != "u") {
+                return false;
+            }
+        }
+        const object f = reinterpret_steal<object>(PyNumber_Float(o));
+        if (!f) {
+            PyErr_Clear();
+            return false;
+        }
+        value = PyFloat_AS_DOUBLE(f.ptr());
+        return true;
+    }
+    static handle cast(double src, return_value_policy /*policy*/, handle /*parent*/)
+    {
+        return PyFloat_FromDouble(src);
+    }
+    PYBIND11_TYPE_CASTER(double, const_name("float"));
+};
+} // namespace pybind11::detail
 
 namespace {
 
@@ -56,16 +124,64 @@ SurfaceSpec parametricSurface(SurfaceSpec::Kind kind, std::vector<double> parame
     return s;
 }
 
-/// f applied to every element of x: a float for a number (or a 0-d array), an array of x's shape
-/// (float64) otherwise. The loop runs without the GIL (the core is plain C++).
-template <class F>
-py::object vectorize(const py::handle& x, F&& f)
+/// True for an element of an object array that is a real number: a float, an int, a numpy real
+/// scalar, a fractions.Fraction (numbers.Real), not a bool, a str or None.
+bool isRealNumber(const py::handle& e)
 {
-    Array a = Array::ensure(x);
-    if (!a) {
-        PyErr_Clear();
-        throw py::type_error("expected a number or an array of numbers");
+    PyObject* o = e.ptr();
+    if (isBool(o) || isText(o)) {
+        return false;
     }
+    if (PyFloat_Check(o) || PyLong_Check(o)) {
+        return true;
+    }
+    static const py::object real = py::module_::import("numbers").attr("Real"); // lives with the module
+    return py::isinstance(e, real);
+}
+
+/// x, "a number or an array of numbers" (a float, an int, a numpy array or scalar, a list), as a
+/// C-ordered float64 array. numpy's forcecast alone turns '1e6', b'1e6' and True into numbers
+/// (and None into NaN); they are refused here with a TypeError that names the argument: str,
+/// bytes, bool and None, arrays of dtype bool, str, bytes, complex or datetime, and object arrays
+/// holding anything but real numbers. (A list mixing bools and floats becomes a float64 array in
+/// numpy before anything here sees it, and is taken as numbers.)
+Array numbers(const py::handle& x, const char* name)
+{
+    const auto refuse = [name](const std::string& what) {
+        return py::type_error(std::string(name) + ": expected a number or an array of numbers, not " + what);
+    };
+    if (isText(x.ptr()) || isBool(x.ptr())) {
+        throw refuse(std::string(Py_TYPE(x.ptr())->tp_name) + " " + std::string(py::repr(x)));
+    }
+    const py::array raw = py::array::ensure(x); // numpy's own dtype for x (cleared error on failure)
+    if (!raw) {
+        throw refuse(Py_TYPE(x.ptr())->tp_name);
+    }
+    const char kind = raw.dtype().kind();
+    if (kind == 'O') {
+        for (const py::handle e : raw.attr("flat")) {
+            if (!isRealNumber(e)) {
+                const std::string type = Py_TYPE(e.ptr())->tp_name;
+                throw refuse(raw.ndim() == 0 ? type : "an array holding " + type + " " + std::string(py::repr(e)));
+            }
+        }
+    } else if (kind != 'f' && kind != 'i' && kind != 'u') {
+        throw refuse("an array of dtype " + std::string(py::str(raw.dtype())));
+    }
+    Array a = Array::ensure(raw);
+    if (!a) {
+        throw refuse(Py_TYPE(x.ptr())->tp_name);
+    }
+    return a;
+}
+
+/// f applied to every element of x (the argument `name`): a float for a number (or a 0-d array),
+/// an array of x's shape (float64) otherwise; numbers() refuses what is not numbers. The loop
+/// runs without the GIL (the core is plain C++).
+template <class F>
+py::object vectorize(const py::handle& x, const char* name, F&& f)
+{
+    const Array a = numbers(x, name);
     if (a.ndim() == 0) {
         const double v = *a.data();
         return py::float_(f(v));
@@ -85,9 +201,8 @@ py::object vectorize(const py::handle& x, F&& f)
 
 std::vector<double> toVector(const py::handle& x, const char* what)
 {
-    Array a = Array::ensure(x);
-    if (!a || a.ndim() != 1) {
-        PyErr_Clear();
+    const Array a = numbers(x, what);
+    if (a.ndim() != 1) {
         throw py::type_error(std::string(what) + ": expected a 1-D array of numbers");
     }
     return std::vector<double>(a.data(), a.data() + a.size());
@@ -298,9 +413,8 @@ PYBIND11_MODULE(roughcontact, m)
     py::class_<ArealSurface>(m, "ArealSurface",
                              "A height map: heights [m] on nx points along x by ny along y, spacings dx, dy [m].")
         .def(py::init([](const py::handle& heights, double dx, std::optional<double> dy, const std::string& source) {
-                 Array a = Array::ensure(heights);
-                 if (!a || a.ndim() != 2) {
-                     PyErr_Clear();
+                 const Array a = numbers(heights, "heights");
+                 if (a.ndim() != 2) {
                      throw py::type_error("heights: expected a 2-D array of numbers, shape (ny, nx)");
                  }
                  const auto ny = static_cast<std::size_t>(a.shape(0));
@@ -463,7 +577,7 @@ PYBIND11_MODULE(roughcontact, m)
             [](const Model& x, const py::object& P) {
                 const ContactModel& cm = *x.model;
                 const double Ep = x.Eprime;
-                return vectorize(P, [&](double p) { return cm.areaFraction(p / Ep); });
+                return vectorize(P, "pressures", [&](double p) { return cm.areaFraction(p / Ep); });
             },
             py::arg("pressures"),
             "A_r/A_n at the nominal pressures F/A_n [Pa] (a number or an array): the model at the load P/E'.")
@@ -471,7 +585,7 @@ PYBIND11_MODULE(roughcontact, m)
             "area_fraction_at_load",
             [](const Model& x, const py::object& loads) {
                 const ContactModel& cm = *x.model;
-                return vectorize(loads, [&](double l) { return cm.areaFraction(l); });
+                return vectorize(loads, "loads", [&](double l) { return cm.areaFraction(l); });
             },
             py::arg("loads"),
             "A_r/A_n at the dimensionless loads F/(A_n E') (multiscaleContact --loads).")
@@ -480,7 +594,7 @@ PYBIND11_MODULE(roughcontact, m)
             [](const Model& x, const py::object& P) {
                 const PerssonModel& pm = x.persson("mean_separation");
                 const double Ep = x.Eprime;
-                return vectorize(P, [&](double p) { return pm.meanSeparation(p / Ep); });
+                return vectorize(P, "pressures", [&](double p) { return pm.meanSeparation(p / Ep); });
             },
             py::arg("pressures"), "persson only: the mean separation u [m] at the pressures [Pa] (inf at 0).")
         .def(
@@ -488,7 +602,7 @@ PYBIND11_MODULE(roughcontact, m)
             [](const Model& x, const py::object& P) {
                 const PerssonModel& pm = x.persson("conductance_per_conductivity");
                 const double Ep = x.Eprime;
-                return vectorize(P, [&](double p) { return pm.conductancePerConductivity(p / Ep); });
+                return vectorize(P, "pressures", [&](double p) { return pm.conductancePerConductivity(p / Ep); });
             },
             py::arg("pressures"), "persson only: its own h_c/k_s [1/m] at the pressures [Pa].")
         .def("__repr__", [](const Model& x) { return "<roughcontact.Model " + x.model->name() + ">"; });
@@ -527,13 +641,14 @@ PYBIND11_MODULE(roughcontact, m)
             [](const BoundaryElement& x, const py::object& P) {
                 const BoundaryElementModel& bm = *x.model;
                 const double Ep = bm.reducedModulus();
-                return vectorize(P, [&](double p) { return bm.areaFraction(p / Ep); });
+                return vectorize(P, "pressures", [&](double p) { return bm.areaFraction(p / Ep); });
             },
             py::arg("pressures"), "A_r/A_n at the nominal pressures [Pa], each solved from scratch.")
         .def(
             "curve",
             [](const BoundaryElement& x, const py::object& P) {
-                const std::vector<double> pressures = toVector(Array::ensure(P).reshape({-1}), "pressures");
+                const Array given = numbers(P, "pressures");
+                const std::vector<double> pressures(given.data(), given.data() + given.size());
                 const double Ep = x.model->reducedModulus();
                 std::vector<double> loads;
                 for (double p : pressures) {
@@ -615,14 +730,14 @@ PYBIND11_MODULE(roughcontact, m)
             "conductance_per_conductivity",
             [](const Law& x, const py::object& P) {
                 const ConductanceLaw& law = *x.law;
-                return vectorize(P, [&](double p) { return law.perConductivity(p); });
+                return vectorize(P, "pressures", [&](double p) { return law.perConductivity(p); });
             },
             py::arg("pressures"), "h_c/k_s [1/m] at the nominal pressures [Pa] (inf at complete contact).")
         .def(
             "mean_separation",
             [](const Law& x, const py::object& P) {
                 const ConductanceLaw& law = *x.law;
-                return vectorize(P, [&](double p) { return law.meanSeparation(p); });
+                return vectorize(P, "pressures", [&](double p) { return law.meanSeparation(p); });
             },
             py::arg("pressures"),
             "The mean-plane separation [m] at the pressures [Pa] where the law defines one (persson, "
@@ -677,41 +792,55 @@ PYBIND11_MODULE(roughcontact, m)
                        "Gas conduction across the gap: h_g = k_g(T)/(Y + M), M the rarefaction parameter "
                        "from the accommodation coefficients, gamma, Pr and the mean free path at the gas "
                        "pressure.")
-        .def(py::init([](const GasProperties& gas, double pressure, std::pair<double, double> accommodation) {
-                 return GasGap(GasGapSpec{gas, pressure, accommodation.first, accommodation.second});
+        .def(py::init([](const GasProperties& gas, double pressure,
+                         std::optional<std::pair<double, double>> accommodation) {
+                 GasGapSpec spec{gas, pressure, std::nullopt, std::nullopt};
+                 if (accommodation) {
+                     spec.accommodation1 = accommodation->first;
+                     spec.accommodation2 = accommodation->second;
+                 }
+                 return GasGap(spec);
              }),
-             py::arg("gas"), py::arg("pressure") = 101325.0, py::arg("accommodation") = std::make_pair(0.0, 0.0),
-             "gas a Gas; pressure P_g [Pa]; accommodation (a1, a2), 0 for the gas's default.")
+             py::arg("gas"), py::arg("pressure") = 101325.0, py::arg("accommodation") = py::none(),
+             "gas a Gas; pressure P_g [Pa]; accommodation (a1, a2), each in (0, 1], or None for the gas's "
+             "default.")
         .def_property_readonly("accommodation",
                                [](const GasGap& g) {
-                                   return std::make_pair(g.spec().accommodation1, g.spec().accommodation2);
+                                   return std::make_pair(*g.spec().accommodation1, *g.spec().accommodation2);
                                },
                                "The accommodation coefficients (a1, a2) as used (the defaults resolved).")
         .def(
-            "conductivity", [](const GasGap& g, const py::object& T) { return vectorize(T, [&](double t) { return g.conductivity(t); }); },
+            "conductivity", [](const GasGap& g, const py::object& T) { return vectorize(T, "T", [&](double t) { return g.conductivity(t); }); },
             py::arg("T"), "k_g [W/(m K)] at the temperatures T [K].")
         .def(
-            "mean_free_path", [](const GasGap& g, const py::object& T) { return vectorize(T, [&](double t) { return g.meanFreePath(t); }); },
+            "mean_free_path", [](const GasGap& g, const py::object& T) { return vectorize(T, "T", [&](double t) { return g.meanFreePath(t); }); },
             py::arg("T"), "Lambda [m] at T [K] and the gas pressure.")
         .def(
-            "rarefaction", [](const GasGap& g, const py::object& T) { return vectorize(T, [&](double t) { return g.rarefaction(t); }); },
+            "rarefaction", [](const GasGap& g, const py::object& T) { return vectorize(T, "T", [&](double t) { return g.rarefaction(t); }); },
             py::arg("T"), "M [m] at T [K].")
         .def(
             "conductance",
-            [](const GasGap& g, const py::object& Y, double T) { return vectorize(Y, [&](double y) { return g.conductance(y, T); }); },
+            [](const GasGap& g, const py::object& Y, double T) { return vectorize(Y, "separation", [&](double y) { return g.conductance(y, T); }); },
             py::arg("separation"), py::arg("T"), "h_g [W/(m^2 K)] at the separations Y [m] and gas temperature T [K].");
 
     // numpy's broadcasting over all four (pybind11's vectorize).
-    m.def("radiative_conductance", py::vectorize([](double T1, double T2, double e1, double e2) {
-              return radiativeConductance(T1, T2, e1, e2);
-          }),
+    m.def(
+        "radiative_conductance",
+        [](const py::object& T1, const py::object& T2, const py::object& e1, const py::object& e2) {
+            using Broadcast = py::array_t<double, py::array::forcecast>;
+            static auto f = py::vectorize([](double t1, double t2, double a1, double a2) {
+                return radiativeConductance(t1, t2, a1, a2);
+            });
+            return f(Broadcast(numbers(T1, "T1")), Broadcast(numbers(T2, "T2")), Broadcast(numbers(e1, "e1")),
+                     Broadcast(numbers(e2, "e2")));
+        },
           py::arg("T1"), py::arg("T2"), py::arg("e1"), py::arg("e2"),
           "h_r [W/(m^2 K)] of grey parallel plates at T1, T2 [K] with emissivities e1, e2 in (0, 1] (numbers or "
           "arrays, broadcast): sigma_SB (T1^2 + T2^2)(T1 + T2)/(1/e1 + 1/e2 - 1).");
     m.def(
         "gap_separation",
         [](const py::object& P, double sigma, double Hc) {
-            return vectorize(P, [&](double p) { return gapSeparationCorrelation(p, sigma, Hc); });
+            return vectorize(P, "pressures", [&](double p) { return gapSeparationCorrelation(p, sigma, Hc); });
         },
         py::arg("pressures"), py::arg("sigma"), py::arg("Hc"),
         "The mean-plane separation Y [m] of a plastic Gaussian contact at P [Pa] > 0, sigma [m], microhardness "
@@ -720,7 +849,7 @@ PYBIND11_MODULE(roughcontact, m)
     m.def(
         "gap_separation_gaussian",
         [](const py::object& P, double sigma, double Hc) {
-            return vectorize(P, [&](double p) { return gapSeparationGaussian(p, sigma, Hc); });
+            return vectorize(P, "pressures", [&](double p) { return gapSeparationGaussian(p, sigma, Hc); });
         },
         py::arg("pressures"), py::arg("sigma"), py::arg("Hc"),
         "The exact Gaussian form: Y = sqrt(2) sigma erfc^-1(2 P/Hc) [m] (0 from P/Hc = 1/2 on).");
@@ -728,13 +857,19 @@ PYBIND11_MODULE(roughcontact, m)
     py::class_<GapSpec>(m, "GapSpec",
                         "What is in the gap of a ContactInterface: a gas and/or radiation (the OpenFOAM "
                         "dictionary's gap entry).")
-        .def(py::init([](const py::object& gas, double pressure, std::pair<double, double> accommodation,
+        .def(py::init([](const py::object& gas, double pressure, std::optional<std::pair<double, double>> accommodation,
                          std::optional<std::pair<double, double>> emissivity) {
                  GapSpec g;
                  if (!gas.is_none()) {
                      const GasProperties props = py::isinstance<py::str>(gas) ? gasByName(gas.cast<std::string>())
                                                                               : gas.cast<GasProperties>();
-                     g.gas = GasGapSpec{props, pressure, accommodation.first, accommodation.second};
+                     g.gas = GasGapSpec{props, pressure, std::nullopt, std::nullopt};
+                     if (accommodation) {
+                         g.gas->accommodation1 = accommodation->first;
+                         g.gas->accommodation2 = accommodation->second;
+                     }
+                 } else if (accommodation) {
+                     throw ParameterError("accommodation", "is for a gas; this gap has none (gas=None)");
                  }
                  if (emissivity) {
                      g.emissivity1 = emissivity->first;
@@ -743,9 +878,10 @@ PYBIND11_MODULE(roughcontact, m)
                  return g;
              }),
              py::kw_only(), py::arg("gas") = py::none(), py::arg("pressure") = 101325.0,
-             py::arg("accommodation") = std::make_pair(0.0, 0.0), py::arg("emissivity") = py::none(),
-             "gas a name ('air'), a Gas or None (vacuum); pressure P_g [Pa]; accommodation (a1, a2), 0 the "
-             "gas's default; emissivity (e1, e2) for radiation, or None. ContactInterface checks it.");
+             py::arg("accommodation") = py::none(), py::arg("emissivity") = py::none(),
+             "gas a name ('air'), a Gas or None (vacuum); pressure P_g [Pa]; accommodation (a1, a2), each in "
+             "(0, 1], or None for the gas's default; emissivity (e1, e2) for radiation, or None. "
+             "ContactInterface checks it.");
 
     // ---- the interface
     py::class_<SurfaceSpec>(m, "SurfaceSpec",
@@ -860,19 +996,19 @@ PYBIND11_MODULE(roughcontact, m)
         .def(
             "area_fraction",
             [](const ContactInterface& ci, const py::object& P) {
-                return vectorize(P, [&](double p) { return ci.areaFraction(p); });
+                return vectorize(P, "pressures", [&](double p) { return ci.areaFraction(p); });
             },
             py::arg("pressures"), "A_r/A_n at the nominal pressures [Pa] (0 for P <= 0, 1 beyond complete contact).")
         .def(
             "conductance_per_conductivity",
             [](const ContactInterface& ci, const py::object& P) {
-                return vectorize(P, [&](double p) { return ci.conductancePerConductivity(p); });
+                return vectorize(P, "pressures", [&](double p) { return ci.conductancePerConductivity(p); });
             },
             py::arg("pressures"), "h_c/k_s [1/m] at the nominal pressures [Pa] (inf beyond complete contact).")
         .def(
             "conductance",
             [](const ContactInterface& ci, const py::object& P, double k1, double k2) {
-                return vectorize(P, [&](double p) { return ci.face(p, k1, k2).conductance; });
+                return vectorize(P, "pressures", [&](double p) { return ci.face(p, k1, k2).conductance; });
             },
             py::arg("pressures"), py::arg("k1"), py::arg("k2"),
             "h_c [W/(m^2 K)] at the pressures [Pa] between solids of conductivities k1, k2 [W/(m K)] "
@@ -880,7 +1016,7 @@ PYBIND11_MODULE(roughcontact, m)
         .def(
             "mean_separation",
             [](const ContactInterface& ci, const py::object& P) {
-                return vectorize(P, [&](double p) { return ci.meanSeparation(p); });
+                return vectorize(P, "pressures", [&](double p) { return ci.meanSeparation(p); });
             },
             py::arg("pressures"), "The mean-plane separation [m] where the table has one (has_separation), else NaN.")
         .def_property_readonly("has_separation", &ContactInterface::hasSeparation,
@@ -909,7 +1045,7 @@ PYBIND11_MODULE(roughcontact, m)
             "gap_separation",
             [](const ContactInterface& ci, const py::object& P) {
                 const InterfaceGap& gap = ci.gap();
-                return vectorize(P, [&](double p) { return gap.separation(p); });
+                return vectorize(P, "pressures", [&](double p) { return gap.separation(p); });
             },
             py::arg("pressures"),
             "Y [m] the gap uses at P [Pa] > 0: the model's mean separation where the table has one, else the "
@@ -921,7 +1057,7 @@ PYBIND11_MODULE(roughcontact, m)
             "gap_conductances",
             [](const ContactInterface& ci, const py::object& Y, double T1, double T2) {
                 const InterfaceGap& gap = ci.gap();
-                py::object hg = vectorize(Y, [&](double y) { return gap.conductances(y, T1, T2).gas; });
+                py::object hg = vectorize(Y, "separation", [&](double y) { return gap.conductances(y, T1, T2).gas; });
                 return py::make_tuple(hg, gap.radiativeConductance(T1, T2));
             },
             py::arg("separation"), py::arg("T1"), py::arg("T2"),

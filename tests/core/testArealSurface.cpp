@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -67,6 +68,17 @@ TEST(ArealSurface, RefusesBadInput)
     }
     EXPECT_THROW(ArealSurface(std::vector<double>(4097 * 4097, 0.0), 4097, 4097, 1e-9, 1e-9), InputError);
     EXPECT_THROW(parseScanDirection("z"), ParameterError);
+    // Issue 18, item 16: an infinite height was "is not finite m" (X3P), "is inf m" (here).
+    bad = z;
+    bad[10] = std::numeric_limits<double>::infinity();
+    try {
+        ArealSurface(bad, 8, 8, 1e-6, 1e-6, "m.txt");
+        ADD_FAILURE() << "inf accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("x index 2, y index 1 is inf (not a finite number); heights must"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(ArealSurface, LineScanSpectrumOfRidgesIsTheirSinusoid)

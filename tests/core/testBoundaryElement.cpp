@@ -4,6 +4,7 @@
 // contact), Hertz, the complete contact of a bisinusoid, Holm's conductance of one spot,
 // Barber's relation between conductance and mean separation, and the plastic cap.
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 #include "roughContact/bem/HalfSpaceOperator.hpp"
 #include "roughContact/bem/PolonskyKeer.hpp"
 #include "roughContact/models/BoundaryElement.hpp"
@@ -18,6 +19,8 @@
 #include <cstdio>
 #include <limits>
 #include <random>
+#include <string>
+#include <utility>
 #include <vector>
 
 using namespace roughContact;
@@ -651,4 +654,157 @@ TEST(BoundaryElementModel, CompleteContactAndHardnessLimits)
     tiny.memoryLimit = 1e3;
     EXPECT_THROW(BoundaryElementModel(ArealSurface(ridge(n, n, D), n, n, L / n, L / n, "ridge"), Ep, tiny),
                  ParameterError);
+}
+
+TEST(PolonskyKeer, ACapFarAboveThePressuresIsTheElasticSolve)
+{
+    // Issue 18, item 1: the projection's bisection bracket spanned [min z - H, max z], so a cap
+    // far above the pressures left it no digits for them: H = 1e80 Pa gave A_r/A_n = 1 and
+    // h_c/k_s = inf at load 1e-6, 1e100 gave 0. H is now bounded (the test below), and the
+    // bracket is the pressures' own when no point can reach H (H >= W), with the whole load on
+    // the highest point when it lies below the resolution of z. Held here at the largest
+    // accepted H and loads down to 1e-14 Pa (a 1e-25 of E'), where the capped solve must be
+    // the elastic one (without the last step it lost the load: sum 0).
+    const std::size_t n = 32;
+    const double L = 1e-4;
+    const std::vector<double> h = randomSurface(n, 11, 1e-7);
+    const HalfSpaceOperator K(n, n, L / n, L / n, Ep, true);
+    for (double P : {1e-14, 1e-6 * Ep}) {
+        SCOPED_TRACE(P);
+        const ContactSolution elastic = PolonskyKeer(K, h).solve(P);
+        PolonskyKeerOptions o;
+        o.hardness = limits::maximumHardness;
+        const ContactSolution capped = PolonskyKeer(K, h, o).solve(P);
+        ASSERT_TRUE(capped.converged) << capped.residual;
+        EXPECT_EQ(capped.plasticFraction, 0.0);
+        EXPECT_EQ(capped.areaFraction, elastic.areaFraction);
+        double sum = 0.0;
+        for (double v : capped.pressure) {
+            sum += v;
+        }
+        EXPECT_NEAR(sum / double(n * n), P, 1e-9 * P);
+    }
+}
+
+TEST(BoundaryElementModel, AHardnessOutsideItsRangeIsRefused)
+{
+    // Issue 18, item 1: H = 1e30 gave the elastic answer, 1e80 area 1, 1e100 area 0, all
+    // without a word; in the boundary condition a SIGFPE. Now: the range of Limits.hpp.
+    const std::size_t n = 16;
+    const double L = 1e-4;
+    const ArealSurface s(randomSurface(n, 3, 1e-7), n, n, L / n, L / n, "random");
+    for (double H : {1e100, 1e30, 2e12, 10.0, 0.0, -1.0}) {
+        BoundaryElementOptions o;
+        o.periodic = true;
+        o.hardness = H;
+        try {
+            const BoundaryElementModel model(s, Ep, o);
+            ADD_FAILURE() << "H = " << H << " accepted";
+        } catch (const ParameterError& e) {
+            EXPECT_NE(std::string(e.what()).find("hardness H: must lie within [1000 Pa, 1e+12 Pa]"), std::string::npos)
+                << e.what();
+        }
+    }
+}
+
+TEST(BoundaryElementModel, AConstantMapIsRefusedAsEveryModelRefusesIt)
+{
+    // Issue 18, item 6: a constant map (rms after detrending 1.8e-37 m, round-off) gave A_r/A_n
+    // = 1 and h inf at load 1e-30, "did not converge (residual 2.1e+14)" at 1e-3. Every model
+    // refuses an rms height below limits::minimumRoughness.
+    const std::size_t n = 16;
+    std::vector<double> z(n * n, 3.7e-6);
+    z[5] += 1e-22; // a trace of roughness, far below the floor
+    for (bool periodic : {false, true}) {
+        BoundaryElementOptions o;
+        o.periodic = periodic;
+        try {
+            const BoundaryElementModel model(ArealSurface(z, n, n, 1e-6, 1e-6, "flat.txt"), Ep, o);
+            ADD_FAILURE() << "a flat map was accepted";
+        } catch (const ParameterError& e) {
+            EXPECT_NE(std::string(e.what()).find("surface flat.txt: rms height"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("is below 1e-15 m"), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(BoundaryElementModel, NonPeriodicMapsOfAnyAspectRatioConvergeUpToCompleteContact)
+{
+    // Issue 18, item 7 (issue 19, item 5): a valid 300 x 8 map at F/(A_n E') = 1e4 "did not
+    // converge (residual 3.3e-08, tolerance 1e-08)". Near complete contact the displacements
+    // are 1e5-1e6 times the roughness and their round-off sets a floor on the residual above the
+    // tolerance (PolonskyKeer.cpp: displacementRoundOff). A sweep of shapes and loads up to the
+    // largest accepted, each solved cold (no warm start), each must converge. Without the floor,
+    // 9 of these 96 maps fail at 1e4 (300 x 8 seeds 3 and 4, 8 x 300 seed 6, 128 x 16 seeds 2
+    // and 7, 16 x 128 seeds 1, 6 and 7, 200 x 10 seed 10: residuals 1.2e-8 to 2.0e-8).
+    std::size_t solves = 0;
+    for (const auto& [nx, ny] : {std::pair<std::size_t, std::size_t>{300, 8}, {8, 300}, {64, 8}, {9, 9}, {8, 17},
+                                 {128, 16}, {16, 128}, {200, 10}}) {
+        std::mt19937 rng(7);
+        std::normal_distribution<double> noise(0.0, 1e-7);
+        for (int seed = 0; seed < 12; ++seed) {
+            std::vector<double> z(nx * ny);
+            for (std::size_t iy = 0; iy < ny; ++iy) {
+                for (std::size_t ix = 0; ix < nx; ++ix) {
+                    double v = noise(rng);
+                    for (int k = 1; k <= 5; ++k) {
+                        v += 1e-6 / k * std::sin(2 * pi * (k * double(ix) / nx + 0.3 * k * double(iy) / ny) + k + seed);
+                    }
+                    z[iy * nx + ix] = v;
+                }
+            }
+            const BoundaryElementModel model(ArealSurface(z, nx, ny, 1e-6, 1e-6, "map"), 2.2e11, {});
+            for (double load : {1e-6, 1e-3, 1e-1, 10.0, 1e3, 3e3, 1e4}) {
+                SCOPED_TRACE(std::to_string(nx) + " x " + std::to_string(ny) + ", seed " + std::to_string(seed) +
+                             ", load " + std::to_string(load));
+                BoundaryElementPoint p;
+                EXPECT_NO_THROW(p = model.solve(load));
+                EXPECT_GT(p.areaFraction, 0.0);
+                if (load >= 10.0) {
+                    EXPECT_EQ(p.areaFraction, 1.0);
+                }
+                ++solves;
+            }
+        }
+    }
+    EXPECT_EQ(solves, 8u * 12u * 7u);
+}
+
+TEST(BoundaryElementModel, ALongSolveReportsWhereItIs)
+{
+    // Issue 18, item 10: a 4096^2 solve ran 200 s without a line. Every progressEvery seconds
+    // (3 by default) a solve reports its stage, iteration, residual and time; here every
+    // iteration (progressEvery 0), on a non-periodic map: the bonded patch, then each load's
+    // contact and conductance solves.
+    const std::size_t n = 32;
+    const double L = 1e-4;
+    std::vector<SolveProgress> reports;
+    BoundaryElementOptions o;
+    o.progressEvery = 0.0;
+    o.progress = [&](const SolveProgress& s) { reports.push_back(s); };
+    const BoundaryElementModel model(ArealSurface(randomSurface(n, 4, 1e-7), n, n, L / n, L / n, "r"), Ep, o);
+    ASSERT_FALSE(reports.empty());
+    EXPECT_EQ(std::string(reports.front().stage), "bonded-patch conductance");
+    const std::size_t patch = reports.size();
+    const BoundaryElementPoint p = model.solve(1e-3);
+    ASSERT_GT(reports.size(), patch);
+    std::size_t contact = 0;
+    std::size_t conductance = 0;
+    for (std::size_t k = patch; k < reports.size(); ++k) {
+        const SolveProgress& s = reports[k];
+        contact += std::string(s.stage) == "contact";
+        conductance += std::string(s.stage) == "conductance";
+        EXPECT_GE(s.seconds, 0.0);
+        EXPECT_GT(s.tolerance, 0.0);
+        EXPECT_GE(s.residual, 0.0);
+    }
+    // Reported after each iteration that did not converge: one fewer than the iterations.
+    EXPECT_EQ(contact + 1, p.iterations);
+    EXPECT_EQ(conductance + 1, p.conductanceIterations);
+    EXPECT_EQ(reports[patch].iteration, 1u);
+    // The default: nothing from a solve shorter than 3 s.
+    BoundaryElementOptions quiet;
+    quiet.progress = [&](const SolveProgress&) { ADD_FAILURE() << "a short solve reported progress"; };
+    const BoundaryElementModel q(ArealSurface(randomSurface(n, 4, 1e-7), n, n, L / n, L / n, "r"), Ep, quiet);
+    q.solve(1e-3);
 }

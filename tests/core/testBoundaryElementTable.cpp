@@ -10,10 +10,16 @@
 #include "roughContact/models/BoundaryElement.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
 #include "roughContact/surface/Spectrum.hpp"
+#include "roughContact/surface/SurfaceChecksum.hpp"
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <filesystem>
+#include <iterator>
+#include <sstream>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -99,7 +105,9 @@ TEST(BoundaryElementTable, RoundTripIsExactAndInterpolationIsLogLog)
     const BoundaryElementTable t(spec);
     const BoundaryElementTablePoints p = t.build();
     const std::string text = t.write(p);
-    EXPECT_EQ(text.rfind("# roughContact boundary-element table v2\n# key " + t.key() + "\n# inputs: ", 0), 0u);
+    EXPECT_EQ(text.rfind("# roughContact boundary-element table v3\n# key " + t.key() + "\n# inputs: ", 0), 0u);
+    // The last line: the SHA-256 of everything above it.
+    EXPECT_EQ(text.substr(text.rfind("\n# sha256 ") + 10).size(), 65u) << text;
     EXPECT_NE(text.find("\npressure,area,h_per_k,separation\n"), std::string::npos);
     const BoundaryElementTableRead r = t.parse(text);
     ASSERT_EQ(r.status, Status::ok) << r.reason;
@@ -216,7 +224,7 @@ TEST(BoundaryElementTable, BadFilesAreRefusedWithTheReason)
     refused(good.substr(0, good.size() - 5), Status::corrupt, "newline");
     // Truncated at a line end: too few points.
     const std::size_t cut = good.rfind('\n', good.size() - 2);
-    refused(good.substr(0, cut + 1), Status::corrupt, "do not make a whole table");
+    refused(good.substr(0, cut + 1), Status::corrupt, "(cut short?)");
     // A number changed into text, a NaN, a non-monotone area.
     const std::string columns = "pressure,area,h_per_k,separation\n";
     const std::size_t row = good.find(columns) + columns.size();
@@ -247,7 +255,18 @@ TEST(BoundaryElementTable, BadFilesAreRefusedWithTheReason)
         v1.replace(v1.find(columns), columns.size(), "pressure,area,h_per_k\n");
         refused(v1, Status::foreign, "is a table of format v1, not this version's");
     }
-    refused("# roughContact boundary-element table v3\n", Status::foreign, "format v3");
+    {
+        // v2: the same layout without the digest line.
+        std::string v2 = good.substr(0, good.rfind("# sha256 "));
+        v2.replace(0, v2.find('\n'), "# roughContact boundary-element table v2");
+        refused(v2, Status::foreign, "is a table of format v2, not this version's");
+    }
+    refused("# roughContact boundary-element table v4\n", Status::foreign, "format v4");
+    // Without its digest line, or with a digest of other contents.
+    refused(good.substr(0, good.rfind("# sha256 ")), Status::corrupt, "the last line is not '# sha256 <hash>'");
+    bad = good;
+    bad[bad.size() - 2] = bad[bad.size() - 2] == '0' ? '1' : '0';
+    refused(bad, Status::corrupt, "do not match their digest");
     p = t.build();
     p.pressures[2] *= 1.000001;
     refused(t.write(p), Status::corrupt, "is not the table's load 3");
@@ -265,6 +284,156 @@ TEST(BoundaryElementTable, BadFilesAreRefusedWithTheReason)
     const BoundaryElementTableRead back = t.read(file);
     EXPECT_EQ(back.status, Status::ok) << back.reason;
     std::remove(file.c_str());
+}
+
+TEST(BoundaryElementTable, AnEditedFileIsNotTrusted)
+{
+    // Issue 18, item 3: a number changed by hand (h_per_k doubled), the key kept, passes every
+    // check of a table (increasing, in range) but not the digest of the contents.
+    const BoundaryElementTable t(smallSpec());
+    const std::string good = t.write(t.build());
+    const std::string columns = "pressure,area,h_per_k,separation\n";
+    std::string edited;
+    std::istringstream in(good.substr(good.find(columns) + columns.size()));
+    edited = good.substr(0, good.find(columns) + columns.size());
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("# sha256 ", 0) == 0) {
+            edited += line + "\n";
+            continue;
+        }
+        // P,area,h,Y -> P,area,2h,Y
+        const std::size_t a = line.find(',', line.find(',') + 1);
+        const std::size_t b = line.find(',', a + 1);
+        const double h = std::stod(line.substr(a + 1, b - a - 1));
+        std::ostringstream os;
+        os.precision(17);
+        os << 2.0 * h;
+        edited += line.substr(0, a + 1) + os.str() + line.substr(b) + "\n";
+    }
+    ASSERT_NE(edited, good);
+    const BoundaryElementTableRead r = t.parse(edited);
+    EXPECT_EQ(r.status, Status::corrupt) << r.reason;
+    EXPECT_NE(r.reason.find("do not match their digest"), std::string::npos) << r.reason;
+}
+
+TEST(BoundaryElementTable, AnOverflowingFieldIsCorruptNotATrap)
+{
+    // Issue 18, item 2: "1e999" in a row. The core's tests run with overflow traps on (as
+    // OpenFOAM does): the file's own strtod raised SIGFPE here; now it is a corrupt row.
+    const BoundaryElementTable t(smallSpec());
+    const std::string good = t.write(t.build());
+    const std::string columns = "pressure,area,h_per_k,separation\n";
+    const std::size_t row = good.find(columns) + columns.size();
+    for (std::size_t field = 0; field < 4; ++field) {
+        std::size_t from = row;
+        for (std::size_t f = 0; f < field; ++f) {
+            from = good.find(',', from) + 1;
+        }
+        const std::size_t to = std::min(good.find(',', from), good.find('\n', from));
+        std::string bad = good;
+        bad.replace(from, to - from, "1e999");
+        const BoundaryElementTableRead r = t.parse(bad);
+        EXPECT_EQ(r.status, Status::corrupt) << field;
+        EXPECT_NE(r.reason.find("is not four finite numbers"), std::string::npos) << r.reason;
+    }
+    std::string bad = good;
+    const std::size_t end = good.find("# end ");
+    bad.replace(end, good.find('\n', end) - end, "# end maxPressure -1e999");
+    EXPECT_EQ(t.parse(bad).status, Status::corrupt);
+}
+
+TEST(BoundaryElementTable, LoadOrBuildReadsWhatItWroteAndRebuildsTheRest)
+{
+    const BoundaryElementTable t(smallSpec());
+    const std::string dir = testing::TempDir() + "/bemLoadOrBuild-" + std::to_string(::getpid());
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::string file = dir + "/table.csv";
+    std::vector<std::pair<std::string, bool>> log;
+    std::size_t solved = 0;
+    const auto progress = [&](std::size_t, std::size_t, double, const BoundaryElementPoint&, double) { ++solved; };
+    const auto logger = [&](const std::string& line, bool warning) { log.emplace_back(line, warning); };
+    const BoundaryElementTablePoints built = t.loadOrBuild(file, progress, logger);
+    EXPECT_EQ(solved, t.pressures().size());
+    ASSERT_FALSE(log.empty());
+    EXPECT_NE(log.back().first.find("wrote " + file), std::string::npos) << log.back().first;
+    // Again: read, nothing solved, the same points bit for bit.
+    solved = 0;
+    log.clear();
+    const BoundaryElementTablePoints again = t.loadOrBuild(file, progress, logger);
+    EXPECT_EQ(solved, 0u);
+    ASSERT_EQ(log.size(), 1u);
+    EXPECT_EQ(log[0].first.rfind("reusing " + file + " (key " + t.key() + ")", 0), 0u) << log[0].first;
+    EXPECT_EQ(again.conductancesPerConductivity, built.conductancesPerConductivity);
+    // Edited: a warning that names the file and the reason, then rebuilt and rewritten.
+    {
+        std::string text;
+        {
+            std::ifstream in(file);
+            text.assign(std::istreambuf_iterator<char>(in), {});
+        }
+        // The last digit of the first row's area: a change in the 17th digit, which every check
+        // of a table's values passes.
+        const std::size_t row = text.find("pressure,area,h_per_k,separation\n") + 33;
+        char& digit = text[text.find(',', text.find(',', row) + 1) - 1];
+        digit = digit > '0' ? char(digit - 1) : '1';
+        std::ofstream(file, std::ios::trunc) << text;
+    }
+    log.clear();
+    const BoundaryElementTablePoints rebuilt = t.loadOrBuild(file, progress, logger);
+    EXPECT_EQ(solved, t.pressures().size());
+    ASSERT_FALSE(log.empty());
+    EXPECT_TRUE(log[0].second);
+    EXPECT_NE(log[0].first.find(file + " is corrupt: its contents do not match their digest"), std::string::npos)
+        << log[0].first;
+    EXPECT_EQ(rebuilt.areaFractions, built.areaFractions);
+    EXPECT_EQ(t.read(file).status, Status::ok);
+    // Issue 18, item 13: a directory in the file's place is refused before anything is solved
+    // (it was "corrupt: the file is empty", then minutes later "cannot rename ...tmp").
+    const std::string directory = dir + "/aDirectory.csv";
+    std::filesystem::create_directories(directory);
+    solved = 0;
+    try {
+        t.loadOrBuild(directory, progress, logger);
+        ADD_FAILURE() << "a directory was taken as the table file";
+    } catch (const ParameterError& e) {
+        EXPECT_NE(std::string(e.what()).find("'" + directory + "' is a directory"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(solved, 0u);
+    EXPECT_EQ(t.read(directory).status, Status::corrupt);
+    EXPECT_NE(t.read(directory).reason.find("is a directory"), std::string::npos);
+    // A directory that does not exist: refused before solving, too.
+    EXPECT_THROW(t.loadOrBuild(dir + "/missing/table.csv", progress, logger), ParameterError);
+    EXPECT_EQ(solved, 0u);
+    std::filesystem::remove_all(dir);
+}
+
+TEST(BoundaryElementTable, TheSurfaceChecksumCoversWhatIsSolved)
+{
+    // Issue 18, item 12: a restart after changing the seed of a synthesized surface gave no
+    // warning: the checksum covered the 1-D spectrum, which the seed does not change. The
+    // interface's checksum of a boundary-element surface covers the solved heights.
+    const InterfaceSpec base = smallSpec();
+    const std::string checksum = ContactInterface(base).surfaceChecksum();
+    EXPECT_EQ(checksum.size(), 16u);
+    EXPECT_EQ(ContactInterface(base).surfaceChecksum(), checksum); // deterministic
+    InterfaceSpec other = base;
+    other.seed = 2;
+    EXPECT_EQ(ContactInterface(other).surface().amplitudes(), ContactInterface(base).surface().amplitudes());
+    EXPECT_NE(ContactInterface(other).surfaceChecksum(), checksum) << "seed";
+    other = base;
+    other.synthesize = 16;
+    EXPECT_NE(ContactInterface(other).surfaceChecksum(), checksum) << "grid";
+    // Materials are not the surface: the same checksum.
+    other = base;
+    other.side1.E = 210e9;
+    EXPECT_EQ(ContactInterface(other).surfaceChecksum(), checksum) << "E";
+    // A multi-scale interface keeps the spectrum's checksum (the one earlier runs recorded).
+    InterfaceSpec ms = base;
+    ms.model = "jacksonGreen";
+    ms.synthesize.reset();
+    const ContactInterface m(ms);
+    EXPECT_EQ(m.surfaceChecksum(), surfaceChecksumHex(m.surface()));
 }
 
 TEST(BoundaryElementTable, SpecErrors)

@@ -22,6 +22,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -553,6 +556,66 @@ TEST(Cli, BoundaryElementIsTheLibrarys)
     expectError(p + " --synthesize 64 --model boundaryElement --Eprime 2e11 --hardness-from-yield --loads 1e-4",
                 {"S_y"});
     expectError(p + " --synthesize 64 --model boundaryElement" + steel + " --loads 1e-4 --levels", {"--levels"});
+}
+
+TEST(Cli, BoundaryElementInputsAHostileUserTried)
+{
+    const std::string p = "--profile '" + standin + "'";
+    const std::string bem = " --model boundaryElement" + steel;
+    // Issue 18, item 1: a hardness beyond any solid's is a unit mistake, refused with its range
+    // (1e80 gave area 1 and h inf, 1e100 area 0, exit 0).
+    for (const char* H : {"1e80", "1e100", "1e30", "1"}) {
+        expectError(p + " --synthesize 16" + bem + " --hardness " + H + " --loads 1e-6",
+                    {"--hardness: must lie within [1000 Pa, 1e+12 Pa]"});
+    }
+    // Item 11: N and SEED are whole numbers read as such: 2^64 was seed 0's surface (a double
+    // converted to uint64_t), 1e20 as N "got 1000000000".
+    expectError(p + " --synthesize 8,18446744073709551616" + bem + " --loads 1e-4",
+                {"--synthesize", "the seed SEED 18446744073709551616 is beyond the largest"});
+    expectError(p + " --synthesize 99999999999999999999" + bem + " --loads 1e-4",
+                {"--synthesize", "99999999999999999999"});
+    expectError(p + " --synthesize 8,1e3" + bem + " --loads 1e-4", {"--synthesize", "'1e3'"});
+    expectError(p + " --synthesize 8,-1" + bem + " --loads 1e-4", {"--synthesize", "'-1'"});
+    expectError(p + " --synthesize 8.5" + bem + " --loads 1e-4", {"--synthesize", "'8.5'"});
+    expectError(p + " --synthesize 4" + bem + " --loads 1e-4", {"--synthesize", "within [8, 4096], got 4"});
+    const CommandResult largest = run(p + " --synthesize 16,18446744073709551615" + bem + " --loads 1e-3");
+    const CommandResult zero = run(p + " --synthesize 16,0" + bem + " --loads 1e-3");
+    ASSERT_EQ(largest.status, 0) << largest.err;
+    ASSERT_EQ(zero.status, 0) << zero.err;
+    EXPECT_NE(largest.out, zero.out); // another seed, another surface
+    // Item 9: --pressure-map never replaces an input, and a failed run writes nothing.
+    TempDir dir;
+    const ArealSurface a = synthesizeIsotropic(Spectrum::fromProfile(readProfile(standin)), 16, 3);
+    std::ostringstream matrix;
+    matrix.precision(17);
+    for (std::size_t iy = 0; iy < 16; ++iy) {
+        for (std::size_t ix = 0; ix < 16; ++ix) {
+            matrix << (ix ? " " : "") << a.at(ix, iy);
+        }
+        matrix << '\n';
+    }
+    const std::string input = dir.write("map.txt", matrix.str()).string();
+    const std::string areal = "--areal '" + input + "' --dx 1e-6" + bem;
+    expectError(areal + " --loads 1e-3 --pressure-map '" + input + "'", {"--pressure-map", "is an input of this run"});
+    expectError(areal + " --loads 1e-3 --pressure-map '" + dir.path().string() + "/./map.txt'",
+                {"--pressure-map", "is an input of this run"});
+    {
+        std::ifstream in(input);
+        EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), matrix.str()) << "the input was changed";
+    }
+    expectError(areal + " --loads 1e-3 --pressure-map '" + dir.path().string() + "'", {"is a directory"});
+    expectError(areal + " --loads 1e-3 --pressure-map '" + dir.path().string() + "/no/such/dir/p.txt'",
+                {"cannot write into the directory"});
+    const std::string out = (dir.path() / "p.txt").string();
+    expectError(areal + " --hardness 1e80 --loads 1e-3 --pressure-map '" + out + "'", {"--hardness"});
+    expectError(areal + " --loads 1e-3,1e300 --pressure-map '" + out + "'", {"load"});
+    EXPECT_FALSE(std::filesystem::exists(out)) << "a failed run left " << out;
+    const CommandResult ok = run(areal + " --loads 1e-3 --pressure-map '" + out + "'");
+    ASSERT_EQ(ok.status, 0) << ok.err;
+    EXPECT_TRUE(std::filesystem::exists(out));
+    for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {
+        EXPECT_EQ(entry.path().string().find(".tmp."), std::string::npos) << "a temporary was left: " << entry.path();
+    }
 }
 
 TEST(Cli, PressuresAreTheLoadsAtPOverEprime)

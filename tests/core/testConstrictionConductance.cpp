@@ -98,6 +98,30 @@ TEST(ConstrictionConductance, HolmsLimitOfTheHarmonicMean)
     EXPECT_THROW(harmonicMeanConductivity(1.0, -1.0), std::invalid_argument);
 }
 
+TEST(ConstrictionConductance, HarmonicMeanTakesTheAcceptedConductivitiesOnly)
+{
+    // Issue 18, item 14: k1 = 1e308 gave inf (2 k1 k2 overflowed; SIGFPE under the traps of this
+    // main). Conductivities lie within Limits.hpp's range, where the written form cannot overflow.
+    EXPECT_EQ(harmonicMeanConductivity(limits::maximumConductivity, limits::maximumConductivity),
+              limits::maximumConductivity);
+    EXPECT_DOUBLE_EQ(harmonicMeanConductivity(limits::minimumConductivity, limits::minimumConductivity),
+                     limits::minimumConductivity);
+    // 2 k1 k2/(k1 + k2) -> 2 k1 for k1 << k2: here 2e-4/(1 + 1e-9).
+    EXPECT_DOUBLE_EQ(harmonicMeanConductivity(limits::minimumConductivity, limits::maximumConductivity),
+                     2.0 * limits::minimumConductivity / (1.0 + 1e-9));
+    for (const auto& [k1, k2] : {std::pair{1e308, 16.0}, std::pair{16.0, 1e200}, std::pair{1e-5, 16.0}}) {
+        try {
+            harmonicMeanConductivity(k1, k2);
+            ADD_FAILURE() << k1 << ", " << k2 << " accepted";
+        } catch (const ParameterError& e) {
+            EXPECT_NE(std::string(e.what()).find(k1 != 16.0 ? "conductivity k1: must lie within [0.0001 W/(m K), "
+                                                             : "conductivity k2: must lie within [0.0001 W/(m K), "),
+                      std::string::npos)
+                << e.what();
+        }
+    }
+}
+
 TEST(ConstrictionConductance, OneLevelClosedForm)
 {
     // One sinusoid: N = eta A_n Hertzian spots carrying F/N each, a from Hertz, eps = a/b with

@@ -185,6 +185,19 @@ TEST(ContactInterface, RefusesBadDescriptions)
     spec.surfaces.front().kind = SurfaceSpec::Kind::powerLaw;
     spec.surfaces.front().parameters = {1.0, 2.0};
     EXPECT_THROW(ContactInterface{spec}, std::invalid_argument);
+    // Issue 18, item 4: pointsPerDecade 2000000000 sat in "building the contact table" (killed
+    // after 150 s); the range of Limits.hpp is checked before any point is computed.
+    for (std::size_t points : {std::size_t(2000000000), std::size_t(1001), std::size_t(1), std::size_t(0)}) {
+        spec = steelOnCopper();
+        spec.pointsPerDecade = points;
+        try {
+            ContactInterface{spec};
+            ADD_FAILURE() << points << " points per decade accepted";
+        } catch (const ParameterError& e) {
+            EXPECT_NE(std::string(e.what()).find("pointsPerDecade: must lie within [2, 1000]"), std::string::npos)
+                << e.what();
+        }
+    }
 }
 
 // The per-face evaluation the boundary condition calls: h_c = k_s (h_c/k_s)(P) with

@@ -351,7 +351,7 @@ InterfaceSpec withAirAndRadiation()
 {
     InterfaceSpec spec = steelOnCopper();
     GapSpec gap;
-    gap.gas = GasGapSpec{gasByName("air"), 101325.0, 0.0, 0.0};
+    gap.gas = GasGapSpec{gasByName("air"), 101325.0, std::nullopt, std::nullopt};
     gap.emissivity1 = 0.5;
     gap.emissivity2 = 0.5;
     spec.gap = gap;

@@ -74,6 +74,28 @@ TEST(FuzzCorpus, x3pReader)
     replay("x3pReader", roughContactFuzz::checkX3pInput, 5);
 }
 
+TEST(FuzzCorpus, boundaryElementTable)
+{
+    replay("boundaryElementTable", roughContactFuzz::checkBoundaryElementTableInput, 6);
+}
+
+TEST(FuzzCorpus, boundaryElementTableSeedsReachTheNumbers)
+{
+    // The valid seed reads (so that the fuzzer starts past the key and the digest), and the
+    // regressions of issue 18 are refused for their reasons: a field of 1e999 (SIGFPE under
+    // traps, item 2), a file whose contents do not match its digest (item 3).
+    using Status = roughContact::BoundaryElementTableRead::Status;
+    const fs::path dir = fs::path(ROUGHCONTACT_SOURCE_DIR) / "tests/fuzz/corpus/boundaryElementTable";
+    const roughContact::BoundaryElementTable& t = roughContactFuzz::boundaryElementTable();
+    const auto read = [&](const char* name) { return t.parse(roughContactFuzz::boundaryElementTableText(content(dir / name))); };
+    EXPECT_EQ(read("valid.csv").status, Status::ok) << read("valid.csv").reason << " (a seed of another table "
+                                                                                    "version: make the seeds anew)";
+    EXPECT_NE(read("overflow-1e999.csv").reason.find("is not four finite numbers"), std::string::npos);
+    EXPECT_NE(read("edited-digest.csv").reason.find("do not match their digest"), std::string::npos);
+    EXPECT_EQ(read("v2-header.csv").status, Status::foreign);
+    EXPECT_EQ(read("truncated.csv").status, Status::corrupt);
+}
+
 TEST(FuzzCorpus, x3pSeedsReadPastTheChecksums)
 {
     // The valid seeds (tests/fuzz/makeX3pSeeds.py) must read, so that the fuzzer starts from

@@ -6,6 +6,7 @@
 #include "ExpectParameterError.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 #include "roughContact/thermal/GapConductance.hpp"
 #include "roughContact/thermal/Gas.hpp"
 
@@ -137,8 +138,8 @@ TEST(GapConductance, RarefactionOfAirAtOneAtmosphere)
     spec.accommodation2 = 1.0;
     EXPECT_NEAR(GasGap(spec).rarefaction(300.0), 2.0 * 1.6385723702796875 * 6.152013422818792e-08,
                 roundOff * 2.02e-7);
-    EXPECT_DOUBLE_EQ(gap.spec().accommodation1, 0.9); // the default filled in
-    EXPECT_DOUBLE_EQ(gap.spec().accommodation2, 0.9);
+    EXPECT_DOUBLE_EQ(*gap.spec().accommodation1, 0.9); // the default filled in
+    EXPECT_DOUBLE_EQ(*gap.spec().accommodation2, 0.9);
 }
 
 TEST(GapConductance, HeliumRarefactionIsTenTimesAirs)
@@ -191,7 +192,9 @@ TEST(GapConductance, BadGapInputsAreNamed)
         s.pressure = v;
         expectParameterError([&] { GasGap{s}; }, "gas pressure P_g");
     }
-    for (double v : {-0.5, 1.5, notANumber, infinity, 1e-9}) {
+    // 0 is an error like any other value outside (0, 1]: "the gas's default" is an unset
+    // coefficient (issue 18, item 15: 0 and 1e-300 were taken as the default).
+    for (double v : {-0.5, 1.5, notANumber, infinity, 1e-9, 0.0, 1e-300}) {
         GasGapSpec s = spec;
         s.accommodation1 = v;
         expectParameterError([&] { GasGap{s}; }, "accommodation coefficient a1");
@@ -255,7 +258,7 @@ TEST(GapSeparation, GaussianFormIsTheNormalQuantile)
     // Half the area in contact: the mean planes meet; beyond, the gap stays closed.
     EXPECT_EQ(gapSeparationGaussian(0.5 * Hc, sigma, Hc), 0.0);
     EXPECT_EQ(gapSeparationGaussian(2.0 * Hc, sigma, Hc), 0.0);
-    EXPECT_EQ(gapSeparationGaussian(1e300, sigma, 1e-300), 0.0); // P/H_c would overflow
+    EXPECT_EQ(gapSeparationGaussian(1e300, sigma, limits::minimumHardness), 0.0); // P far above H_c
     // Vanishing pressure: P/H_c is taken as 1e-300 at least, Y/sigma = 37.047096.
     EXPECT_NEAR(gapSeparationGaussian(1e-320, sigma, 1e10), 37.04709629936121 * sigma, 1e-8 * sigma);
 }
@@ -308,10 +311,10 @@ TEST(GapConductance, FiniteAtTheCornersOfTheAcceptedRanges)
 {
     // Every accepted extreme at once, with the traps on (overflow, invalid, division by zero): each
     // result finite and > 0 (an underflow towards 0 is allowed, as OpenFOAM does not trap it).
-    for (double k : {minimumGasConductivity, maximumGasConductivity}) {
-        for (double n : {1e-300, maximumConductivityExponent}) {
-            for (double Pr : {minimumPrandtl, maximumPrandtl}) {
-                for (double a : {minimumAccommodation, 1.0}) {
+    for (double k : {limits::minimumGasConductivity, limits::maximumGasConductivity}) {
+        for (double n : {1e-300, limits::maximumConductivityExponent}) {
+            for (double Pr : {limits::minimumPrandtl, limits::maximumPrandtl}) {
+                for (double a : {limits::minimumAccommodation, 1.0}) {
                     for (double Pg : {1e-10, 1e9}) {
                         GasGapSpec spec;
                         spec.gas = {"user", k, n, 1e-2, 10.0, Pr, 1e3, 1e-10, a};
@@ -337,7 +340,7 @@ TEST(GapConductance, FiniteAtTheCornersOfTheAcceptedRanges)
     }
     for (double sigma : {1e-15, 1e3}) {
         for (double P : {1e-320, 1.0, 1e308}) {
-            for (double Hc : {1e-320, 1.0, 1e308}) {
+            for (double Hc : {limits::minimumHardness, 1e9, limits::maximumHardness}) {
                 EXPECT_TRUE(std::isfinite(gapSeparationCorrelation(P, sigma, Hc)));
                 EXPECT_TRUE(std::isfinite(gapSeparationGaussian(P, sigma, Hc)));
             }

@@ -257,7 +257,17 @@ TEST_F(TableReaderTest, aDirectoryIsNotReadAsAnEmptyFile)
 {
     const InputError e = tableError(dir_.string());
     EXPECT_EQ(e.file(), dir_.string());
-    EXPECT_NE(std::string(e.what()).find("cannot open the file for reading"), std::string::npos);
+    EXPECT_EQ(std::string(e.what()), dir_.string() + ": is a directory, not a file");
+}
+
+TEST_F(TableReaderTest, aNameWithANulByteIsRefused)
+{
+    // Issue 18, item 14: "file.txt\0junk" opened "file.txt", a file that was not named.
+    const std::string path = write("t.txt", "1 2\n3 4\n");
+    const std::string named = path + std::string(1, '\0') + "junk";
+    const InputError e = tableError(named);
+    EXPECT_NE(std::string(e.what()).find("the file name holds a NUL byte"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("t.txt\\x00junk"), std::string::npos) << e.what();
 }
 
 TEST_F(TableReaderTest, nonNumericField)

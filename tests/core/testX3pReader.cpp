@@ -11,8 +11,12 @@
 
 #include <gtest/gtest.h>
 #include <openssl/evp.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <zip.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -468,6 +472,255 @@ TEST_F(X3pReaderTest, validPointsMask)
     shortMask.mask.assign(9, '\xFF');
     const std::string p2 = x3p("shortmask.x3p", shortMask);
     EXPECT_TRUE(has(inputError([&] { readX3p(p2); }, p2), "needs 10"));
+}
+
+/// zip (an archive's bytes) with the inflated size of entry, in its local and its central header,
+/// set to size: a header that lies.
+void declareSize(std::string& zip, const std::string& entry, std::uint32_t size)
+{
+    const auto put = [&](std::size_t at) {
+        for (int k = 0; k < 4; ++k) {
+            zip[at + static_cast<std::size_t>(k)] = static_cast<char>((size >> (8 * k)) & 0xFF);
+        }
+    };
+    int patched = 0;
+    for (std::size_t i = 0; i + 46 < zip.size(); ++i) {
+        if (zip.compare(i, 4, "PK\x03\x04") == 0 && zip.compare(i + 30, entry.size(), entry) == 0) {
+            put(i + 22);
+            ++patched;
+        } else if (zip.compare(i, 4, "PK\x01\x02") == 0 && zip.compare(i + 46, entry.size(), entry) == 0) {
+            put(i + 24);
+            ++patched;
+        }
+    }
+    EXPECT_EQ(patched, 2) << entry;
+}
+
+/// What readX3p(path) gives in a child process whose address space may grow by at most
+/// extraBytes: "ok NX x NY", "InputError: message" or "error: what" (a failed allocation among
+/// them); "child died" when it did not exit.
+std::string readX3pWithin(const std::string& path, std::size_t extraBytes)
+{
+    int fds[2];
+    if (pipe(fds) != 0) {
+        return "pipe failed";
+    }
+    const pid_t pid = fork();
+    if (pid == 0) {
+        close(fds[0]);
+        std::string out;
+        std::ifstream statm("/proc/self/statm");
+        std::size_t pages = 0;
+        statm >> pages;
+        const rlim_t cap =
+            static_cast<rlim_t>(pages * static_cast<std::size_t>(sysconf(_SC_PAGESIZE)) + extraBytes);
+        const struct rlimit limit {
+            cap, cap
+        };
+        if (setrlimit(RLIMIT_AS, &limit) != 0) {
+            out = "setrlimit failed";
+        } else {
+            try {
+                const ArealSurface s = readX3p(path);
+                out = "ok " + std::to_string(s.nx()) + " x " + std::to_string(s.ny());
+            } catch (const InputError& e) {
+                out = std::string("InputError: ") + e.message();
+            } catch (const std::exception& e) {
+                out = std::string("error: ") + e.what();
+            }
+        }
+        const ssize_t w = ::write(fds[1], out.data(), out.size());
+        (void)w;
+        close(fds[1]);
+        _exit(0);
+    }
+    close(fds[1]);
+    std::string result;
+    char buffer[4096];
+    ssize_t n = 0;
+    while ((n = read(fds[0], buffer, sizeof buffer)) > 0) {
+        result.append(buffer, static_cast<std::size_t>(n));
+    }
+    close(fds[0]);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? result : "child died";
+}
+
+double secondsSince(std::chrono::steady_clock::time_point t0)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Issue 18, item 5: a small file whose main.xml inflates to gigabytes of whitespace took 2.1 GB
+// (main.xml held whole, then copied by pugixml). The markup outside the Datum values is now
+// refused past x3pLimits::maximumMarkupBytes, as it inflates, before any tree is built; here a
+// little more than that cap of whitespace (a 5 kB archive).
+TEST_F(X3pReaderTest, markupBeyondItsCapIsRefusedAsItInflates)
+{
+    const X3pFile f = sample('D');
+    std::string xml = mainXml(f);
+    xml.insert(xml.find("</Record3>"), std::string(x3pLimits::maximumMarkupBytes + 1, ' '));
+    const std::string path = x3p("whitespace.x3p", f, xml);
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::string m = inputError([&] { readX3p(path); }, path);
+    EXPECT_LT(secondsSince(t0), 5.0);
+    EXPECT_TRUE(
+        has(m, "main.xml has more than 4194304 bytes (the cap) outside the Datum values of Record3/DataList"))
+        << m;
+    EXPECT_TRUE(has(m, "refused before being parsed")) << m;
+    EXPECT_TRUE(has(m, "binary point data (Record3/DataLink)")) << m;
+    // Whitespace inside the list, between the Datum elements, is skipped as it passes: no cap.
+    X3pFile text = sample('D');
+    text.inlineData = true;
+    std::string listXml = mainXml(text);
+    listXml.insert(listXml.find("<Datum>"), std::string(2 * x3pLimits::maximumMarkupBytes, '\n'));
+    const std::string listPath = x3p("listspace.x3p", text, listXml);
+    EXPECT_EQ(readX3p(listPath).at(5, 9), 1e-9 * rawValue(9 * 8 + 5));
+}
+
+// Issue 18, item 5: an inline DataList of 4096^2 points took 4.4 GB (its text, pugixml's copy,
+// two tree nodes of 64 bytes a Datum) and failed under a 4 GB cap with "not well-formed XML
+// (Could not allocate memory)". The values are now read as main.xml inflates: a 1024^2 map
+// (17 MB of XML, which took about 200 MB of address space) reads within 128 MB more.
+TEST_F(X3pReaderTest, inlineDataListIsReadAsItInflates)
+{
+    X3pFile f = sample('D');
+    f.nx = 1024;
+    f.ny = 1024;
+    std::string xml = mainXml(f);
+    xml.erase(xml.find("<DataLink>"), xml.find("</Record3>") - xml.find("<DataLink>"));
+    std::string list = "<DataList>\n";
+    list.reserve(18 * f.nx * f.ny);
+    for (std::size_t i = 0; i < f.nx * f.ny; ++i) {
+        list += "<Datum>" + std::to_string(i % 1000) + "</Datum>\n";
+    }
+    list += "</DataList>\n";
+    xml.insert(xml.find("</Record3>"), list);
+    list = std::string();
+    const std::string path = x3p("large.x3p", f, xml);
+    xml = std::string();
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::string r = readX3pWithin(path, std::size_t(128) << 20);
+    EXPECT_EQ(r, "ok 1024 x 1024");
+    EXPECT_LT(secondsSince(t0), 30.0);
+    const ArealSurface s = readX3p(path);
+    EXPECT_EQ(s.at(1023, 1023), 1e-9 * static_cast<double>((1024 * 1024 - 1) % 1000));
+    EXPECT_EQ(s.at(7, 1), 1e-9 * static_cast<double>(1031 % 1000));
+}
+
+// Issue 18, item 5: zip headers are checked before inflating, and not trusted while inflating.
+TEST_F(X3pReaderTest, zipHeadersThatLie)
+{
+    const X3pFile f = sample('D');
+    const std::string good = readFile(x3p("good.x3p", f));
+    // main.xml declared larger than the cap: refused before inflating, at once.
+    std::string big = good;
+    declareSize(big, "main.xml", static_cast<std::uint32_t>(x3pLimits::maximumXmlBytes + 1));
+    const std::string bigPath = write("big.x3p", big);
+    auto t0 = std::chrono::steady_clock::now();
+    std::string m = inputError([&] { readX3p(bigPath); }, bigPath);
+    EXPECT_LT(secondsSince(t0), 1.0);
+    EXPECT_TRUE(
+        has(m, "main.xml has 1073741825 bytes (inflated, as its zip header says); at most 1073741824"))
+        << m;
+    EXPECT_TRUE(has(m, "refused before inflating")) << m;
+    EXPECT_TRUE(has(m, "Export the map again, with binary point data")) << m;
+    // The point data declared larger than Record3/MatrixDimension needs: the same.
+    std::string bin = good;
+    declareSize(bin, "bin/data.bin", 2000000000u);
+    const std::string binPath = write("bin.x3p", bin);
+    m = inputError([&] { readX3p(binPath); }, binPath);
+    EXPECT_TRUE(has(m, "bin/data.bin has 2000000000 bytes (inflated, as its zip header says); at most 640"))
+        << m;
+    EXPECT_TRUE(has(m, "refused before inflating")) << m;
+    EXPECT_TRUE(has(m, "8 x 10 points (Record3/MatrixDimension) of type D need 640")) << m;
+    // main.xml declared smaller than it inflates to: refused at the first byte beyond (it was
+    // read cut short, and the rest ignored).
+    std::string small = good;
+    declareSize(small, "main.xml", 100);
+    const std::string smallPath = write("small.x3p", small);
+    m = inputError([&] { readX3p(smallPath); }, smallPath);
+    EXPECT_TRUE(has(m, "main.xml inflates to more than the 100 bytes its zip header declares")) << m;
+    // Declared as large as allowed but small: nothing allocated by the header's word.
+    std::string claim = good;
+    declareSize(claim, "main.xml", static_cast<std::uint32_t>(x3pLimits::maximumXmlBytes));
+    const std::string claimPath = write("claim.x3p", claim);
+    t0 = std::chrono::steady_clock::now();
+    const std::string r = readX3pWithin(claimPath, std::size_t(64) << 20);
+    EXPECT_LT(secondsSince(t0), 5.0);
+    EXPECT_TRUE(has(r, "InputError: ") && has(r, "main.xml")) << r;
+}
+
+// What Record3/DataList may hold, now that it is read as it passes: Datum elements (empty or
+// <Datum/> is an invalid point; attributes ignored), comments, processing instructions and
+// whitespace, split anywhere by the pieces main.xml inflates in; anything else is an error
+// on its line.
+TEST_F(X3pReaderTest, dataListContent)
+{
+    X3pFile f = sample('D');
+    f.inlineData = true;
+    f.nx = 200;
+    f.ny = 150; // 30 000 points, about 0.8 MB of XML: pieces of 256 kB end inside elements
+    f.raw.clear();
+    for (std::size_t i = 0; i < f.nx * f.ny; ++i) {
+        f.raw.push_back(rawValue(i));
+    }
+    std::string xml = mainXml(f);
+    const auto replaceDatum = [&](std::size_t index, const std::string& with) {
+        std::size_t at = xml.find("<Datum>");
+        for (std::size_t k = 0; k < index; ++k) {
+            at = xml.find("<Datum>", at + 1);
+        }
+        const std::size_t end = xml.find("</Datum>", at) + 8;
+        xml.replace(at, end - at, with);
+    };
+    replaceDatum(29999, "<Datum unit=\"m\" >  " + std::to_string(rawValue(29999)) + "\n</Datum >");
+    replaceDatum(20000, "<!-- a comment > with <Datum>9</Datum> in it --><?pi x?><Datum/>");
+    replaceDatum(10000, "<Datum>\t" + std::to_string(rawValue(10000)) + " </Datum><!---->");
+    replaceDatum(3, "<Datum></Datum>");
+    const std::string path = x3p("content.x3p", f, xml);
+    const std::string m = inputError([&] { readX3p(path); }, path);
+    EXPECT_TRUE(has(m, "2 of 30000 points are invalid")) << m;
+    X3pReadOptions fill;
+    fill.fillInvalid = true;
+    const ArealSurface s = readX3p(path, fill);
+    EXPECT_EQ(s.at(0, 0), 1e-9 * rawValue(0));
+    EXPECT_EQ(s.at(199, 149), 1e-9 * rawValue(29999));
+    EXPECT_EQ(s.at(0, 50), 1e-9 * rawValue(10000));
+    EXPECT_EQ(s.at(1, 100), 1e-9 * rawValue(20001));
+
+    // Errors, each on its line of main.xml (one Datum a line from line 12).
+    X3pFile small = sample('D');
+    small.inlineData = true;
+    const std::string base = mainXml(small);
+    const std::size_t second = base.find("<Datum>", base.find("<Datum>") + 1); // line 13
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {"<Value>1</Value>", "main.xml line 13: Record3/DataList: a <Value> element; only Datum elements"},
+        {"text", "main.xml line 13: Record3/DataList: text outside a Datum element ('text<Datum>"},
+        {"<![CDATA[1]]>", "main.xml line 13: Record3/DataList: a CDATA section"},
+        {"<Datum>1<b/></Datum>", "main.xml line 13: Record3/DataList: Datum 2 holds markup ('<b/>"},
+        {"<Datum>1</Datu>", "main.xml line 13: Record3/DataList: not well-formed XML (end tag </Datu>"},
+        {"</Record3>", "main.xml line 13: Record3/DataList: not well-formed XML (end tag </Record3>"},
+        {"<Datum>x1</Datum>", "main.xml: Record3/DataList/Datum 2 is 'x1', not a number"},
+        {"<Datum>" + std::string(2000, '1') + "</Datum>", "Datum 2 is longer than 1024 characters"},
+        {"<Datum>1</Datum>", "Record3/DataList has 81 Datum elements; 8 x 10 points"}};
+    for (const auto& c : cases) {
+        std::string bad = base;
+        bad.insert(second, c.first);
+        const std::string p = x3p("list.x3p", small, bad);
+        const std::string e = inputError([&] { readX3p(p); }, p);
+        EXPECT_TRUE(has(e, c.second)) << c.first << ": " << e;
+    }
+    // main.xml ends inside the list; markup broken after it is on its own line.
+    const std::string cut = x3p("cut.x3p", small, base.substr(0, second));
+    EXPECT_TRUE(has(inputError([&] { readX3p(cut); }, cut),
+                    "main.xml line 13: not well-formed XML (the file ends inside Record3/DataList)"));
+    std::string after = base;
+    after.replace(after.find("</Record3>"), 10, "</Record5>");
+    const std::string afterPath = x3p("after.x3p", small, after);
+    const std::string a = inputError([&] { readX3p(afterPath); }, afterPath);
+    EXPECT_TRUE(has(a, "main.xml line 93: not well-formed XML")) << a;
 }
 
 // The real map. Its sizes and increments are those of its main.xml; the heights below were read

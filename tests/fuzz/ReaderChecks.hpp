@@ -13,9 +13,16 @@
 //  - matrix:   byte 1 the units ('u' um, 'n' nm; anything else: m), byte 2 the dx option and
 //              byte 3 the dy option ('0'-'9': choice(digit); anything else: unset);
 //  - x3p:      byte 1 the fillInvalid option ('f': set); the rest is the X3P (zip) file.
+//  - boundaryElementTable: no option byte; the text of a cache file of the table of
+//              boundaryElementTableSpec(), in which "@KEY@" stands for that table's key and a
+//              last line "# sha256 @DIGEST@" for the digest of the text above it (so that the
+//              fuzzer, and seeds made on another machine, reach the numbers past the key and
+//              the digest).
 #pragma once
 
 #include "roughContact/Error.hpp"
+#include "roughContact/interface/BoundaryElementTable.hpp"
+#include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/io/MatrixReader.hpp"
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/io/SpectrumReader.hpp"
@@ -237,6 +244,91 @@ inline std::string checkX3pInput(const std::string& input)
     return checkReader(
         content, [&](std::istream&) { return roughContact::readX3pBytes(content, inputName, options); },
         [](const roughContact::ArealSurface& s) { return checkArealSurface(s); });
+}
+
+/// The table whose cache files boundaryElementTable inputs are: a power law synthesized on a
+/// 32 x 32 periodic grid, steel on steel, 17 loads from 1e5 to 1e9 Pa.
+inline roughContact::InterfaceSpec boundaryElementTableSpec()
+{
+    roughContact::InterfaceSpec spec;
+    roughContact::SurfaceSpec s;
+    s.kind = roughContact::SurfaceSpec::Kind::powerLaw;
+    s.parameters = {2.56e-4, 0.8, 1e3, 16e3};
+    s.length = 1e-3;
+    spec.surfaces = {s};
+    spec.side1 = roughContact::Material{200e9, 0.3, 0.4e9};
+    spec.side2 = spec.side1;
+    spec.model = "boundaryElement";
+    spec.synthesize = 32;
+    spec.minPressure = 1e5;
+    spec.maxPressure = 1e9;
+    spec.bemPointsPerDecade = 4;
+    return spec;
+}
+
+/// The table of boundaryElementTableSpec() (built once: it synthesizes the surface).
+inline const roughContact::BoundaryElementTable& boundaryElementTable()
+{
+    static const roughContact::BoundaryElementTable table(boundaryElementTableSpec());
+    return table;
+}
+
+/// A boundaryElementTable input with "@KEY@" and a last line "# sha256 @DIGEST@" replaced by the
+/// table's key and the digest of the text above (the seeds of tests/fuzz/corpus/
+/// boundaryElementTable are files the table wrote, with those two stood in for).
+inline std::string boundaryElementTableText(const std::string& input)
+{
+    const roughContact::BoundaryElementTable& table = boundaryElementTable();
+    std::string text = input;
+    for (std::size_t at = text.find("@KEY@"); at != std::string::npos; at = text.find("@KEY@", at)) {
+        text.replace(at, 5, table.key());
+    }
+    const std::string digestLine = "# sha256 @DIGEST@\n";
+    if (text.size() >= digestLine.size() &&
+        text.compare(text.size() - digestLine.size(), digestLine.size(), digestLine) == 0) {
+        const std::string above = text.substr(0, text.size() - digestLine.size());
+        text = above + "# sha256 " + roughContact::BoundaryElementTable::digest(above) + "\n";
+    }
+    return text;
+}
+
+/// The cache reader (BoundaryElementTable::parse) never throws, and either finds a table whose
+/// points are sound (increasing pressures of the table's loads, areas in (0, 1], positive finite
+/// conductances, finite separations >= 0) or says why not in a short printable reason.
+inline std::string checkBoundaryElementTableInput(const std::string& input)
+{
+    const roughContact::BoundaryElementTable& table = boundaryElementTable();
+    roughContact::BoundaryElementTableRead r;
+    try {
+        r = table.parse(boundaryElementTableText(input));
+    } catch (const std::exception& e) {
+        return std::string("parse threw: ") + e.what();
+    }
+    using Status = roughContact::BoundaryElementTableRead::Status;
+    if (r.status != Status::ok) {
+        if (r.points || r.reason.empty() || r.status == Status::missing) {
+            return "a refusal without its reason, or with points";
+        }
+        const roughContact::ParameterError e("cache", r.reason);
+        return checkMessage(e);
+    }
+    if (!r.points) {
+        return "ok without points";
+    }
+    const roughContact::BoundaryElementTablePoints& p = *r.points;
+    const std::size_t n = p.pressures.size();
+    if (n < 2 || n > table.pressures().size() || p.areaFractions.size() != n ||
+        p.conductancesPerConductivity.size() != n || p.separations.size() != n) {
+        return "a table of " + std::to_string(n) + " points with columns of other sizes";
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        if (p.pressures[k] != table.pressures()[k] || !(p.areaFractions[k] > 0.0 && p.areaFractions[k] <= 1.0) ||
+            !(p.conductancesPerConductivity[k] > 0.0) || !finite(p.conductancesPerConductivity[k]) ||
+            !(p.separations[k] >= 0.0) || !finite(p.separations[k])) {
+            return "point " + std::to_string(k + 1) + " is not sound";
+        }
+    }
+    return "";
 }
 
 } // namespace roughContactFuzz

@@ -9,7 +9,16 @@ Tiny (8 x 8 points) valid files of each layout, so that the fuzzer starts past t
   l-binary.x3p      L binary data, stored (not deflated)
   f-nan.x3p         F binary data with one NaN point, not filled (an expected error)
   inline-fill.x3p   the data inline in Record3/DataList, one empty Datum, filled
-Usage: tests/fuzz/makeX3pSeeds.py (from anywhere; rewrites the five files)."""
+and, for the reader's memory caps (issue 18, item 5), each a few kB:
+  inline-markup.x3p     inline data with comments, a processing instruction, a <Datum/> and
+                        attributes in Record3/DataList (read as main.xml inflates), filled
+  header-small.x3p      inline-fill.x3p with main.xml's zip headers declaring 100 bytes (it
+                        inflates to more: an expected error at the first byte beyond)
+  header-huge.x3p       d-binary.x3p with main.xml's zip headers declaring 2^30 + 1 bytes, past
+                        x3pLimits::maximumXmlBytes (refused before inflating)
+  markup-bomb.x3p       d-binary.x3p with 4 MiB + 1 of whitespace in its markup, past
+                        x3pLimits::maximumMarkupBytes (refused as it inflates)
+Usage: tests/fuzz/makeX3pSeeds.py (from anywhere; rewrites the nine files)."""
 import hashlib
 import io
 import math
@@ -55,6 +64,22 @@ def archive(entries, store=False):
     return buffer.getvalue()
 
 
+def declare_size(content, entry, size):
+    """The archive content with entry's inflated size in its local and central headers set to size."""
+    b = bytearray(content)
+    name = entry.encode()
+    patched = 0
+    for i in range(len(b) - 46):
+        if b[i:i + 4] == b"PK\x03\x04" and b[i + 30:i + 30 + len(name)] == name:
+            b[i + 22:i + 26] = struct.pack("<I", size)
+            patched += 1
+        elif b[i:i + 4] == b"PK\x01\x02" and b[i + 46:i + 46 + len(name)] == name:
+            b[i + 24:i + 28] = struct.pack("<I", size)
+            patched += 1
+    assert patched == 2, entry
+    return bytes(b)
+
+
 def write(name, option, content):
     with open(os.path.join(out, name), "wb") as f:
         f.write(option + content)
@@ -64,7 +89,11 @@ heights = [1e-7 * math.sin(0.7 * i) for i in range(N * N)]
 counts = [int(round(1000 * math.sin(0.7 * i))) for i in range(N * N)]
 
 d = struct.pack(f"<{N * N}d", *heights)
-write("d-binary.x3p", b"-", archive([("main.xml", main_xml("D", data_link(d))), ("bin/data.bin", d)]))
+d_binary = archive([("main.xml", main_xml("D", data_link(d))), ("bin/data.bin", d)])
+write("d-binary.x3p", b"-", d_binary)
+write("header-huge.x3p", b"-", declare_size(d_binary, "main.xml", (1 << 30) + 1))
+bomb = main_xml("D", data_link(d)).replace("</Record3>", " " * ((4 << 20) + 1) + "</Record3>")
+write("markup-bomb.x3p", b"-", archive([("main.xml", bomb), ("bin/data.bin", d)]))
 
 i16 = struct.pack(f"<{N * N}h", *counts)
 mask = bytearray(b"\xff" * (N * N // 8))
@@ -83,4 +112,9 @@ f32 = struct.pack(f"<{N * N}f", *[h if i != 20 else float("nan") for i, h in enu
 write("f-nan.x3p", b"-", archive([("main.xml", main_xml("F", data_link(f32))), ("bin/data.bin", f32)]))
 
 datums = "".join("<Datum></Datum>" if i == 9 else f"<Datum>{h!r}</Datum>" for i, h in enumerate(heights))
-write("inline-fill.x3p", b"f", archive([("main.xml", main_xml("D", f"<DataList>{datums}</DataList>"))]))
+inline_fill = archive([("main.xml", main_xml("D", f"<DataList>{datums}</DataList>"))])
+write("inline-fill.x3p", b"f", inline_fill)
+write("header-small.x3p", b"f", declare_size(inline_fill, "main.xml", 100))
+marked = "".join(
+    "<!-- -- > --><?pi x?><Datum/>\n" if i == 9 else f'<Datum unit="m" >\n{h!r} </Datum >' for i, h in enumerate(heights))
+write("inline-markup.x3p", b"f", archive([("main.xml", main_xml("D", f"<DataList >{marked}</DataList>"))]))

@@ -29,6 +29,13 @@ def test_gases_by_name():
 def test_air_gap_closed_forms():
     air = rc.GasGap(rc.gas("air"))
     assert air.accommodation == (0.9, 0.9)
+    assert rc.GasGap(rc.gas("air"), accommodation=(1.0, 0.5)).accommodation == (1.0, 0.5)
+    # The default is None (left out); 0 is outside (0, 1] like any other (issue 18, item 15).
+    for bad in ((0.0, 0.9), (0.9, 0.0), (1e-300, 0.9), (1.5, 0.9)):
+        with pytest.raises(rc.ParameterError, match="^accommodation coefficient a[12]: must lie in"):
+            rc.GasGap(rc.gas("air"), accommodation=bad)
+    with pytest.raises(rc.ParameterError, match="^accommodation: is for a gas"):
+        rc.GapSpec(gas=None, accommodation=(0.9, 0.9), emissivity=(0.5, 0.5))
     assert air.rarefaction(300.0) == pytest.approx(246.4e-9, rel=1e-3)
     assert air.conductance(10e-6, 300.0) == pytest.approx(2557.0, rel=1e-3)
     # Vectorized over Y: h_g = k_g/(Y + M) for each.

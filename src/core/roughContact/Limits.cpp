@@ -15,10 +15,24 @@ double requireInRange(const std::string& what, double value, double lo, double h
     if (!std::isfinite(value) || value < lo || value > hi) {
         const std::string u = *unit != '\0' ? std::string(" ") + unit : std::string();
         std::ostringstream os;
-        os << "must lie within [" << lo << u << ", " << hi << u << "], got " << value << u;
+        os << "must lie within [" << lo << u << ", " << hi << u << "], got " << valueText(value, unit);
         throw ParameterError(what, os.str());
     }
     return value;
+}
+
+std::string valueText(double value, const char* unit)
+{
+    std::ostringstream os;
+    os << value;
+    if (std::isnan(value)) {
+        os << " (not a number)";
+    } else if (std::isinf(value)) {
+        os << " (not a finite number)";
+    } else if (*unit != '\0') {
+        os << ' ' << unit;
+    }
+    return os.str();
 }
 
 double requireLength(const std::string& what, double value)

@@ -78,6 +78,50 @@ constexpr double maximumTemperature = 1e5;
 constexpr double minimumGasPressure = 1e-10;
 constexpr double maximumGasPressure = 1e9;
 
+/// Hardness [Pa]: the plastic cap H of boundaryElement and the microhardness H_c of the
+/// correlations (cooperMikicYovanovich, the gap's separation). Soft polymers have 1e7, metals
+/// 1e8-1e10, diamond about 1e11; from the softest gels (the least modulus) to ten times diamond.
+/// Outside it the number is a unit mistake (a hardness of 1e30 Pa would make every surface
+/// elastic, one of 1e100 overflowed the capped solve's sums).
+constexpr double minimumHardness = minimumModulus;
+constexpr double maximumHardness = 1e12;
+
+/// Points per decade of pressure of a contact table (the multi-scale table's pointsPerDecade
+/// and the boundary-element table's): at least 2 (a table must bracket each decade it
+/// interpolates over), at most 1000 (a table of 1000 points a decade over the widest default
+/// range, 9 decades, is 9000 solves: minutes for the multi-scale model, hours for the exact one;
+/// a finer table changes nothing a log-log interpolation can show).
+constexpr std::size_t minimumPointsPerDecade = 2;
+constexpr std::size_t maximumPointsPerDecade = 1000;
+
+/// The grid size N of a synthesized N x N surface: even, from 8 (fewer points hold no contact
+/// spots) to 4096 (maximumGridPoints). The seed of its random phases: any 64-bit unsigned
+/// integer, 0 to 2^64 - 1 (a front-end refuses a larger or non-integer number, it does not wrap).
+constexpr std::size_t minimumSynthesisSize = 8;
+constexpr std::size_t maximumSynthesisSize = 4096;
+
+/// Thermal conductivities [W/(m K)] of the solids (k1, k2; k_s = 2 k1 k2/(k1 + k2)): aerogels
+/// have 0.01, diamond 2200; from 1e-4 to 1e5.
+constexpr double minimumConductivity = 1e-4;
+constexpr double maximumConductivity = 1e5;
+
+/// A gas's numbers (beyond the physical ones, they keep every product of GasGap finite).
+/// Conductivity [W/(m K)]: gases have 0.005-0.2; liquids and liquid metals, which a "user" gas
+/// may stand for, reach 100.
+constexpr double minimumGasConductivity = 1e-6;
+constexpr double maximumGasConductivity = 1e3;
+/// The exponent of k_g(T): real gases have 0.5-1 (kinetic theory 0.5 for hard spheres); 2 keeps
+/// (T/T0)^n finite over the accepted temperatures. From 0 (a constant k_g).
+constexpr double maximumConductivityExponent = 2.0;
+/// gamma must exceed 1 (c_p > c_v); the monatomic ideal gas has the largest, 5/3.
+constexpr double maximumHeatCapacityRatio = 10.0;
+/// Pr: gases 0.6-1.
+constexpr double minimumPrandtl = 1e-3;
+constexpr double maximumPrandtl = 1e3;
+/// Accommodation coefficients lie in (0, 1]; below 1e-6 (no measured surface comes near: the
+/// temperature jump would pass a million mean free paths) they are refused.
+constexpr double minimumAccommodation = 1e-6;
+
 /// Throws ParameterError(what, ...) unless value lies in [lo, hi] (and is finite); `unit`
 /// follows the numbers in the message ("m", "Pa", "" for none).
 double requireInRange(const std::string& what, double value, double lo, double hi, const char* unit);
@@ -89,6 +133,9 @@ inline double requireInRange(const char* what, double value, double lo, double h
     return std::isfinite(value) && value >= lo && value <= hi ? value
                                                               : requireInRange(std::string(what), value, lo, hi, unit);
 }
+/// value as a message quotes it: "1.5e-06 m" (unit after a space, none for ""), or "inf (not a
+/// finite number)" and "nan (not a number)" without a unit.
+std::string valueText(double value, const char* unit);
 /// A length [m] within [minimumLength, maximumLength].
 double requireLength(const std::string& what, double value);
 /// Throws ParameterError(what, ...) naming the count, the cap and the memory it would need,

@@ -16,9 +16,7 @@
 #include "roughContact/io/Units.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/Spectrum.hpp"
-#include "roughContact/surface/SurfaceChecksum.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -299,62 +297,61 @@ roughContact::BoundaryElementTablePoints boundaryElementPoints
     const string& who
 )
 {
-    using Status = roughContact::BoundaryElementTableRead::Status;
     const roughContact::BoundaryElementTable bem(spec);
     roughContact::BoundaryElementTablePoints points;
     if (Pstream::master())
     {
+        // The core reads the file when it holds this table (key and digest),
+        // else builds and writes it; here only the log and the broadcast.
         const fileName file =
             casePath/"constant"/("boundaryElementTable." + name + ".csv");
-        const roughContact::BoundaryElementTableRead r = bem.read(file);
-        if (r.status == Status::ok)
-        {
-            Info<< "    reusing " << file.c_str() << " (key " << bem.key().c_str()
-                << "): " << label(r.points->pressures.size()) << " points"
-                << endl;
-            points = *r.points;
-        }
-        else
-        {
-            if (r.status != Status::missing)
-            {
-                WarningInFunction
-                    << who.c_str() << ": contact entry '" << name << "': the"
-                    << " boundary-element table " << file.c_str() << " is "
-                    << (r.status == Status::foreign ? "foreign" : "corrupt")
-                    << ": " << r.reason.c_str() << "; it is rebuilt and"
-                    << " replaced" << endl;
-            }
-            Info<< "    building the boundary-element table for '" << name
-                << "': " << label(bem.pressures().size()) << " loads; "
-                << bem.inputs().c_str() << endl;
-            const auto start = std::chrono::steady_clock::now();
-            points = bem.build
+        // The load being solved, for the progress of a long solve.
+        std::size_t current = 1;
+        points = bem.loadOrBuild
+        (
+            file,
+            [&]
             (
-                [&]
-                (
-                    std::size_t done, std::size_t total, double P,
-                    const roughContact::BoundaryElementPoint& p,
-                    double seconds
-                )
+                std::size_t done, std::size_t total, double P,
+                const roughContact::BoundaryElementPoint& p,
+                double seconds
+            )
+            {
+                current = done + 1;
+                Info<< "    building the boundary-element table for '"
+                    << name << "': load " << label(done) << " of "
+                    << label(total) << ", P = " << P << " Pa, A_r/A_n = "
+                    << p.areaFraction << ", " << seconds << " s" << endl;
+            },
+            [&](const std::string& line, bool warning)
+            {
+                if (warning)
                 {
-                    Info<< "    building the boundary-element table for '"
-                        << name << "': load " << label(done) << " of "
-                        << label(total) << ", P = " << P << " Pa, A_r/A_n = "
-                        << p.areaFraction << ", " << seconds << " s" << endl;
+                    WarningInFunction
+                        << who.c_str() << ": contact entry '" << name
+                        << "': " << line.c_str() << endl;
                 }
-            );
-            bem.writeFile(file, points);
-            Info<< "    built the boundary-element table for '" << name
-                << "' in "
-                << std::chrono::duration<double>
-                   (
-                       std::chrono::steady_clock::now() - start
-                   ).count()
-                << " s: " << label(points.pressures.size()) << " points;"
-                << " wrote " << file.c_str() << " (key " << bem.key().c_str() << ")"
-                << endl;
-        }
+                else
+                {
+                    Info<< "    " << line.c_str() << " ('" << name << "')"
+                        << endl;
+                }
+            },
+            [&](const roughContact::SolveProgress& s)
+            {
+                const bool patch = s.stage[0] == 'b';
+                Info<< "    building the boundary-element table for '"
+                    << name << "': ";
+                if (!patch)
+                {
+                    Info<< "load " << label(current) << " of "
+                        << label(bem.pressures().size()) << ", ";
+                }
+                Info<< s.stage << " solve: iteration " << label(s.iteration) << ", residual "
+                    << s.residual << " (tolerance " << s.tolerance << "), "
+                    << s.seconds << " s" << endl;
+            }
+        );
     }
     if (Pstream::parRun())
     {
@@ -552,7 +549,7 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
         // condition writes the checksum into its field file, too).
         const roughContact::Spectrum& surface = iface->surface();
         Info<< "    surface checksum "
-            << roughContact::surfaceChecksumHex(surface).c_str() << ", "
+            << iface->surfaceChecksum().c_str() << ", "
             << label(surface.size()) << " levels, rms height "
             << std::sqrt(surface.profileVariance()) << " m, L = "
             << surface.length() << " m" << nl

@@ -15,7 +15,6 @@
 #include "OSspecific.H"
 
 #include "roughContact/interface/InterfaceMonitor.hpp"
-#include "roughContact/surface/SurfaceChecksum.hpp"
 #include "roughContact/thermal/InterfaceCoupling.hpp"
 
 #include <algorithm>
@@ -187,7 +186,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::readContact
     );
     try
     {
-        surfaceChecksum_ = roughContact::surfaceChecksumHex(interface_->surface());
+        surfaceChecksum_ = interface_->surfaceChecksum();
     }
     catch (const std::exception& e)
     {

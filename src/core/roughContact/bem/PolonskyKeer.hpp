@@ -17,10 +17,25 @@
 #include "roughContact/bem/HalfSpaceOperator.hpp"
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <vector>
 
 namespace roughContact {
+
+/// Where a long solve is: reported every progressInterval seconds of it (none for a shorter one).
+struct SolveProgress {
+    /// "contact" or "conductance" (of a load), or "bonded-patch conductance" (BoundaryElementModel,
+    /// before the first load of a non-periodic map)
+    const char* stage = "";
+    std::size_t iteration = 0;
+    double residual = 0.0;    ///< the convergence measure (ContactSolution::residual, SpotConductance::residual)
+    double tolerance = 0.0;   ///< the residual it must reach
+    double seconds = 0.0;     ///< since this solve began
+};
+using SolveProgressCallback = std::function<void(const SolveProgress&)>;
+/// Seconds between two progress reports of one solve (and before the first).
+inline constexpr double progressInterval = 3.0;
 
 struct PolonskyKeerOptions {
     /// Convergence: the relative residual (below) at most this.
@@ -32,6 +47,9 @@ struct PolonskyKeerOptions {
     /// (HalfSpaceOperator::applyStiffness, Vollebregt 2014): the same solution in fewer
     /// iterations of one more FFT pair each (README, benchmarks).
     bool precondition = true;
+    /// Called every progressEvery seconds while a solve runs (optional).
+    SolveProgressCallback progress;
+    double progressEvery = progressInterval;
 };
 
 /// The solution at one mean pressure.
@@ -51,6 +69,9 @@ struct ContactSolution {
     /// conditions hold to it): 0 for the exact solution. With the cap: the relative change of
     /// the pressure over the last step, sum |p - p_previous| / sum p.
     double residual = 0.0;
+    /// The residual the solve had to reach: the tolerance, or (elastic) the round-off floor of
+    /// the displacements when that is higher (PolonskyKeer.cpp: displacementRoundOff).
+    double tolerance = 0.0;
     bool converged = false;
 };
 
@@ -99,9 +120,12 @@ struct SpotConductance {
 /// initial: a first guess of x (e.g. the solution at a neighbouring load; its values off the
 /// contact set are ignored); solution: when given, receives x; precondition: with the
 /// half-space's stiffness restricted to the contact set (as PolonskyKeerOptions).
+/// progress (optional): called every progressEvery seconds while it runs (stage "conductance").
 SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<bool>& contact,
                                 double tolerance = 1e-10, std::size_t maxIterations = 20000,
                                 const std::vector<double>* initial = nullptr,
-                                std::vector<double>* solution = nullptr, bool precondition = true);
+                                std::vector<double>* solution = nullptr, bool precondition = true,
+                                const SolveProgressCallback& progress = {},
+                                double progressEvery = progressInterval);
 
 } // namespace roughContact

@@ -5,6 +5,8 @@
 #include "roughContact/Limits.hpp"
 #include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/io/ArealReader.hpp"
+#include "roughContact/io/Numbers.hpp"
+#include "roughContact/io/TableReader.hpp"
 #include "roughContact/material/Materials.hpp"
 #include "roughContact/models/BoundaryElement.hpp"
 #include "roughContact/models/ContactModel.hpp"
@@ -13,6 +15,7 @@
 
 #include <openssl/evp.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -36,10 +39,12 @@ namespace {
 // The version of what the table holds, in its key: 2 since the conductance of a non-periodic
 // patch has the patch's own constriction removed (BoundaryElement.hpp); 3 since the file
 // carries the mean separation (header v2). A table of an older version is foreign and rebuilt
-// (an older header is reported as foreign too, before its key is read).
-constexpr std::uint64_t formatVersion = 3;
+// (an older header is reported as foreign too, before its key is read); 4 since the file ends
+// in the digest of its contents (header v3).
+constexpr std::uint64_t formatVersion = 4;
 constexpr const char* headerStem = "# roughContact boundary-element table v";
 constexpr const char* columns = "pressure,area,h_per_k,separation";
+constexpr const char* digestTag = "# sha256 ";
 // h_c/k_s beyond this is perfect contact for any mesh (as ContactTable's ceiling).
 constexpr double conductanceCeiling = 1e9;
 
@@ -58,9 +63,26 @@ const char* endName(ContactTable::End e)
 
 std::string number(double v)
 {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
+    return formatNumber(v, 17);
+}
+
+// SHA-256 of n bytes, as 64 lower-case hex digits.
+std::string sha256Hex(const void* data, std::size_t n)
+{
+    unsigned char md[EVP_MAX_MD_SIZE];
+    unsigned int len = 0;
+    const std::unique_ptr<EVP_MD_CTX, void (*)(EVP_MD_CTX*)> ctx(EVP_MD_CTX_new(), EVP_MD_CTX_free);
+    if (!ctx || EVP_DigestInit_ex(ctx.get(), EVP_sha256(), nullptr) != 1 ||
+        EVP_DigestUpdate(ctx.get(), data, n) != 1 || EVP_DigestFinal_ex(ctx.get(), md, &len) != 1) {
+        throw ParameterError("boundary-element table", "OpenSSL could not compute a SHA-256 hash");
+    }
+    static const char* digits = "0123456789abcdef";
+    std::string out;
+    for (unsigned int i = 0; i < len; ++i) {
+        out += digits[md[i] >> 4];
+        out += digits[md[i] & 0xfu];
+    }
+    return out;
 }
 
 // Bytes for the key: little-endian, independent of the host.
@@ -81,38 +103,11 @@ public:
         std::memcpy(&bits, &v, sizeof bits);
         u64(bits);
     }
-    std::string sha256Hex() const
-    {
-        unsigned char md[EVP_MAX_MD_SIZE];
-        unsigned int len = 0;
-        const std::unique_ptr<EVP_MD_CTX, void (*)(EVP_MD_CTX*)> ctx(EVP_MD_CTX_new(), EVP_MD_CTX_free);
-        if (!ctx || EVP_DigestInit_ex(ctx.get(), EVP_sha256(), nullptr) != 1 ||
-            EVP_DigestUpdate(ctx.get(), bytes_.data(), bytes_.size()) != 1 ||
-            EVP_DigestFinal_ex(ctx.get(), md, &len) != 1) {
-            throw ParameterError("boundary-element table", "OpenSSL could not compute a SHA-256 hash");
-        }
-        static const char* digits = "0123456789abcdef";
-        std::string out;
-        for (unsigned int i = 0; i < len; ++i) {
-            out += digits[md[i] >> 4];
-            out += digits[md[i] & 0xfu];
-        }
-        return out;
-    }
+    std::string sha256Hex() const { return roughContact::sha256Hex(bytes_.data(), bytes_.size()); }
 
 private:
     std::vector<unsigned char> bytes_;
 };
-
-bool parseNumber(const std::string& text, double& out)
-{
-    if (text.empty() || std::isspace(static_cast<unsigned char>(text.front()))) {
-        return false;
-    }
-    char* end = nullptr;
-    out = std::strtod(text.c_str(), &end);
-    return end == text.c_str() + text.size();
-}
 
 ArealSurface solvedSurface(const InterfaceSpec& spec)
 {
@@ -177,7 +172,7 @@ BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
         throw ParameterError("hardness", "give a hardness or hardnessFromYield, not both");
     }
     if (spec.hardness) {
-        hardness_ = requirePositive("hardness", *spec.hardness);
+        hardness_ = limits::requireInRange("hardness", *spec.hardness, limits::minimumHardness, limits::maximumHardness, "Pa");
     } else if (spec.hardnessFromYield) {
         hardness_ = materials.hardness("boundaryElement hardnessFromYield");
     }
@@ -185,9 +180,8 @@ BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
     tolerance_ = defaults.tolerance;
     precondition_ = defaults.precondition;
     pointsPerDecade_ = spec.bemPointsPerDecade;
-    if (pointsPerDecade_ < 1 || pointsPerDecade_ > 1000) {
-        throw ParameterError("pointsPerDecade", "must be from 1 to 1000");
-    }
+    limits::requireInRange("pointsPerDecade", double(pointsPerDecade_), double(limits::minimumPointsPerDecade),
+                           double(limits::maximumPointsPerDecade), "");
     const double minP = spec.minPressure.value_or(1e-6 * Eprime_);
     const double maxP = spec.maxPressure.value_or(hardness_ ? std::min(0.1 * Eprime_, 0.95 * *hardness_)
                                                             : 0.1 * Eprime_);
@@ -246,9 +240,11 @@ BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
     inputs_ = os.str();
 }
 
-BoundaryElementTablePoints BoundaryElementTable::build(const Progress& progress) const
+BoundaryElementTablePoints BoundaryElementTable::build(const Progress& progress,
+                                                       const SolveProgressCallback& solveProgress) const
 {
     BoundaryElementOptions bo;
+    bo.progress = solveProgress;
     bo.periodic = periodic_;
     bo.hardness = hardness_;
     bo.tolerance = tolerance_;
@@ -320,6 +316,7 @@ std::string BoundaryElementTable::write(const BoundaryElementTablePoints& points
         s += number(points.pressures[k]) + "," + number(points.areaFractions[k]) + "," +
              number(points.conductancesPerConductivity[k]) + "," + number(points.separations[k]) + "\n";
     }
+    s += digestTag + digest(s) + "\n";
     return s;
 }
 
@@ -343,8 +340,9 @@ BoundaryElementTableRead BoundaryElementTable::parse(const std::string& text) co
         }
         if (!lines.empty() && lines[0] != boundaryElementTableHeader && lines[0].rfind(headerStem, 0) == 0) {
             r.status = BoundaryElementTableRead::Status::foreign;
-            r.reason = "it is a table of format " + lines[0].substr(std::string(headerStem).size() - 1) +
-                       ", not this version's (" + boundaryElementTableHeader + "; v2 added the mean separation)";
+            r.reason = "it is a table of format " + detail::printable(lines[0].substr(std::string(headerStem).size() - 1), 20) +
+                       ", not this version's (" + boundaryElementTableHeader +
+                       "; v2 added the mean separation, v3 the digest)";
             return r;
         }
         if (lines.empty() || lines[0] != boundaryElementTableHeader) {
@@ -357,7 +355,7 @@ BoundaryElementTableRead BoundaryElementTable::parse(const std::string& text) co
         const std::string key = lines[1].substr(keyTag.size());
         if (key != key_) {
             r.status = BoundaryElementTableRead::Status::foreign;
-            r.reason = "its key " + key + " is not this table's " + key_ +
+            r.reason = "its key " + detail::printable(key, 80) + " is not this table's " + key_ +
                        " (made for another surface, material, hardness, load list or solver)";
             return r;
         }
@@ -382,13 +380,17 @@ BoundaryElementTableRead BoundaryElementTable::parse(const std::string& text) co
             } else if (name == "conductanceCeiling") {
                 p.end = ContactTable::End::conductanceCeiling;
             } else {
-                return corrupt("line 4: unknown end '" + name + "'");
+                return corrupt("line 4: unknown end '" + detail::printable(name, 40) + "'");
             }
             if (!parseNumber(value, p.completeContactPressure) || std::isnan(p.completeContactPressure)) {
-                return corrupt("line 4: '" + value + "' is not a pressure");
+                return corrupt("line 4: '" + detail::printable(value, 40) + "' is not a pressure");
             }
         }
-        for (std::size_t i = 5; i < lines.size(); ++i) {
+        // The last line is the digest of everything above it.
+        if (lines.back().rfind(digestTag, 0) != 0) {
+            return corrupt(std::string("the last line is not '") + digestTag + "<hash>' (cut short?)");
+        }
+        for (std::size_t i = 5; i + 1 < lines.size(); ++i) {
             const std::string& line = lines[i];
             // Four comma-separated finite numbers.
             double v[4];
@@ -406,7 +408,7 @@ BoundaryElementTableRead BoundaryElementTable::parse(const std::string& text) co
                 from = comma + 1;
             }
             if (!good) {
-                return corrupt("line " + std::to_string(i + 1) + " '" + line +
+                return corrupt("line " + std::to_string(i + 1) + " '" + detail::printable(line, 80) +
                                "' is not four finite numbers P,area,h_per_k,separation");
             }
             const std::size_t k = i - 5;
@@ -441,6 +443,13 @@ BoundaryElementTableRead BoundaryElementTable::parse(const std::string& text) co
                            " loads do not make a whole table ending at " + endName(p.end) + " (cut short?)");
         }
         (void)p.table(Eprime_); // the checks of a table: increasing, in range, non-decreasing
+        // Last, the contents against their digest: a file whose numbers were changed (by hand, or
+        // damaged) cannot be told from a valid one by the checks above.
+        const std::size_t digestLine = text.rfind(digestTag);
+        if (lines.back().substr(std::string(digestTag).size()) != digest(text.substr(0, digestLine))) {
+            return corrupt("its contents do not match their digest (the last line): the file was changed "
+                           "after it was written");
+        }
         r.status = BoundaryElementTableRead::Status::ok;
         r.reason.clear();
         r.points = std::move(p);
@@ -452,8 +461,20 @@ BoundaryElementTableRead BoundaryElementTable::parse(const std::string& text) co
     }
 }
 
+std::string BoundaryElementTable::digest(const std::string& text)
+{
+    return sha256Hex(text.data(), text.size());
+}
+
 BoundaryElementTableRead BoundaryElementTable::read(const std::string& path) const
 {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+        BoundaryElementTableRead r;
+        r.status = BoundaryElementTableRead::Status::corrupt;
+        r.reason = path + (S_ISDIR(st.st_mode) ? " is a directory, not a file" : " is not a regular file");
+        return r;
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         BoundaryElementTableRead r;
@@ -488,6 +509,53 @@ void BoundaryElementTable::writeFile(const std::string& path, const BoundaryElem
         std::remove(temporary.c_str());
         throw ParameterError("boundary-element table", "cannot rename '" + temporary + "' to '" + path + "'");
     }
+}
+
+BoundaryElementTablePoints BoundaryElementTable::loadOrBuild(const std::string& path, const Progress& progress,
+                                                             const LogCallback& log,
+                                                             const SolveProgressCallback& solveProgress) const
+{
+    const auto say = [&](const std::string& line, bool warning) {
+        if (log) {
+            log(line, warning);
+        }
+    };
+    // Where the table will be written: checked before minutes of solving.
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+        throw ParameterError("boundary-element table",
+                             "'" + path + "' is " + (S_ISDIR(st.st_mode) ? "a directory" : "not a regular file") +
+                                 "; the table is read from and written to this name: remove it or choose another");
+    }
+    const std::size_t slash = path.rfind('/');
+    const std::string directory = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
+    if (::access(directory.c_str(), W_OK | X_OK) != 0) {
+        throw ParameterError("boundary-element table", "cannot write into the directory '" + directory +
+                                                           "' of '" + path + "' (missing, or not writable)");
+    }
+    const BoundaryElementTableRead r = read(path);
+    if (r.status == BoundaryElementTableRead::Status::ok) {
+        say("reusing " + path + " (key " + key_ + "): " + std::to_string(r.points->pressures.size()) + " points",
+            false);
+        return *r.points;
+    }
+    if (r.status != BoundaryElementTableRead::Status::missing) {
+        say("the boundary-element table " + path + " is " +
+                (r.status == BoundaryElementTableRead::Status::foreign ? "foreign" : "corrupt") + ": " + r.reason +
+                "; it is rebuilt and replaced",
+            true);
+    }
+    say("building the boundary-element table: " + std::to_string(pressures_.size()) + " loads; " + inputs_, false);
+    const auto start = std::chrono::steady_clock::now();
+    const BoundaryElementTablePoints points = build(progress, solveProgress);
+    writeFile(path, points);
+    std::ostringstream os;
+    os.precision(3);
+    os << "built the boundary-element table in "
+       << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s: "
+       << points.pressures.size() << " points; wrote " << path << " (key " << key_ << ")";
+    say(os.str(), false);
+    return points;
 }
 
 } // namespace roughContact

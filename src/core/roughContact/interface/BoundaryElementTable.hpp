@@ -4,15 +4,19 @@
 // for large maps) and so kept in a small self-describing text file keyed by a hash of every
 // input that changes it, which a later run reads instead of solving again.
 //
-// The file (v2; v1 had no separation column and is read as foreign, i.e. rebuilt):
-//     # roughContact boundary-element table v2
+// The file (v3; v1 had no separation column, v2 no digest; both are read as foreign, i.e. rebuilt):
+//     # roughContact boundary-element table v3
 //     # key <64 hex digits: SHA-256 of the inputs, see key()>
 //     # inputs: <one human-readable line: surface, grid, periodic, E', hardness, loads, tolerance>
 //     # end <maxPressure|completeContact|conductanceCeiling> <complete-contact pressure [Pa] or inf>
 //     pressure,area,h_per_k,separation
 //     <P [Pa]>,<A_r/A_n>,<h_c/k_s [1/m]>,<Y [m]>   one line per point, 17 significant digits
+//     # sha256 <64 hex digits: SHA-256 of every byte above this line>
+// A file is reused only when it is this version's, its key is the inputs' and its contents
+// match their digest: a table edited by hand (or damaged) is rebuilt, not trusted.
 #pragma once
 
+#include "roughContact/bem/PolonskyKeer.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/thermal/ContactTable.hpp"
 
@@ -92,7 +96,8 @@ public:
     /// h_c/k_s > 1e9 1/m (End::conductanceCeiling), or at the last load (End::maxPressure).
     /// The values are the solve's (a running maximum keeps the area and h_c non-decreasing, a
     /// running minimum the separation non-increasing, should a solve dip by its tolerance). ParameterError when fewer than 2 points lie below complete contact.
-    BoundaryElementTablePoints build(const Progress& progress = {}) const;
+    /// solveProgress (optional): every progressInterval seconds of a long solve (PolonskyKeer.hpp).
+    BoundaryElementTablePoints build(const Progress& progress = {}, const SolveProgressCallback& solveProgress = {}) const;
 
     /// The file's text for points (17 significant digits: reading it back is exact).
     /// ParameterError for points without their separations (every build() has them).
@@ -101,11 +106,26 @@ public:
     /// NaN, a pressure not of this table's loads) or foreign (a key not this table's, or a file
     /// of another format version, e.g. v1 without the separation column). Never throws.
     BoundaryElementTableRead parse(const std::string& text) const;
+    /// SHA-256 of text as 64 lower-case hex digits: what a file's last line holds for the text
+    /// above it (write() puts it there, parse() checks it).
+    static std::string digest(const std::string& text);
     /// parse() of a file; missing when it cannot be opened.
     BoundaryElementTableRead read(const std::string& path) const;
     /// Writes write(points) to path atomically: to a temporary name beside it, then renamed
     /// over it. ParameterError when it cannot.
     void writeFile(const std::string& path, const BoundaryElementTablePoints& points) const;
+
+    /// What loadOrBuild says as it goes: one line for a log, and whether it is a warning (a file
+    /// that was there but is not used).
+    using LogCallback = std::function<void(const std::string& line, bool warning)>;
+    /// The cache: the points of the file at path when read() finds them ok (this version, this
+    /// key, contents matching their digest); otherwise build(progress), then writeFile(path).
+    /// Before anything is solved, path must be a name a file can be written to (not a directory,
+    /// in a writable directory): ParameterError naming it otherwise, so that minutes of solving
+    /// are not lost at the end. log (optional) receives: reusing, why a file is not used, the
+    /// build's start and end.
+    BoundaryElementTablePoints loadOrBuild(const std::string& path, const Progress& progress = {},
+                                           const LogCallback& log = {}, const SolveProgressCallback& solveProgress = {}) const;
 
 private:
     bool periodic_; // before surface_: both are set from the spec in this order
@@ -122,6 +142,6 @@ private:
 };
 
 /// The first line of a table file.
-inline constexpr const char* boundaryElementTableHeader = "# roughContact boundary-element table v2";
+inline constexpr const char* boundaryElementTableHeader = "# roughContact boundary-element table v3";
 
 } // namespace roughContact

@@ -4,6 +4,7 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/io/SpectrumReader.hpp"
 #include "roughContact/models/ModelFactory.hpp"
+#include "roughContact/surface/SurfaceChecksum.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 
@@ -109,6 +110,7 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
         os << bem.surface().nx() << " x " << bem.surface().ny() << " "
            << (bem.periodic() ? "periodic" : "non-periodic") << " " << bem.surface().source();
         bemSurface_ = os.str();
+        surfaceChecksum_ = checksumHex(roughContact::surfaceChecksum(surface_, bem.surface(), bem.periodic()));
         buildGap(spec);
         return;
     }
@@ -129,6 +131,7 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
         throw ParameterError("model", "unknown multi-scale model '" + spec.model + "' (one of " + names +
                                           ", or boundaryElement)");
     }
+    surfaceChecksum_ = surfaceChecksumHex(surface_);
     const double Ep = materials_.reducedModulus();
     model_ = std::make_unique<MultiscaleModel>(surface_, Ep, makeAsperityModel(spec.model, materials_));
     conductanceLaw_ = spec.conductanceLaw.empty() ? defaultConductanceLaw() : spec.conductanceLaw;

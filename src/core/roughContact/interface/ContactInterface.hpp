@@ -145,6 +145,11 @@ public:
     /// The model's name: a multi-scale model's or boundaryElement.
     const std::string& modelName() const noexcept { return modelName_; }
     const Spectrum& surface() const noexcept { return surface_; }
+    /// What identifies the surface this interface was built on, so that a restart can tell a
+    /// changed surface (16 hex digits, SurfaceChecksum.hpp): the spectrum's checksum; for
+    /// boundaryElement, continued over the solved areal surface (grid, heights, periodic), which
+    /// a synthesized surface's seed and grid size change too.
+    const std::string& surfaceChecksum() const noexcept { return surfaceChecksum_; }
     double reducedModulus() const noexcept { return materials_.reducedModulus(); }
     /// A few lines for a log: surface, levels, E', model, table range, complete contact.
     std::string summary() const;
@@ -157,6 +162,7 @@ private:
     std::string conductanceLaw_;
     std::string modelName_;
     std::string bemSurface_; ///< boundaryElement: what was solved (for summary())
+    std::string surfaceChecksum_;
     std::optional<InterfaceGap> gap_;
 
     /// Builds gap_ from spec.gap (after the table).

@@ -2,6 +2,7 @@
 #include "roughContact/interface/FaceCoupling.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 #include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 #include "roughContact/thermal/InterfaceCoupling.hpp"
@@ -42,8 +43,9 @@ namespace {
 /// the fast test in couple() fails, to throw the error that names what is wrong.
 [[noreturn]] void badFace(const CouplingInputs& in, std::size_t i)
 {
-    requirePositive("kappa", in.kappa[i]);
-    requirePositive("neighbour kappa", in.kappaNbr[i]);
+    limits::requireInRange("kappa", in.kappa[i], limits::minimumConductivity, limits::maximumConductivity, "W/(m K)");
+    limits::requireInRange("neighbour kappa", in.kappaNbr[i], limits::minimumConductivity,
+                           limits::maximumConductivity, "W/(m K)");
     requirePositive("deltaCoeffs", in.deltaCoeffs[i]);
     requirePositive("neighbour deltaCoeffs", in.deltaCoeffsNbr[i]);
     requirePositive("kappa*deltaCoeffs", in.kappa[i] * in.deltaCoeffs[i]);
@@ -52,6 +54,7 @@ namespace {
 }
 
 inline bool positiveFinite(double x) { return x > 0.0 && x < std::numeric_limits<double>::infinity(); }
+inline bool conductivity(double k) { return k >= limits::minimumConductivity && k <= limits::maximumConductivity; }
 
 } // namespace
 
@@ -92,9 +95,9 @@ void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCac
             const double k2 = in.kappaNbr[i];
             const double kDelta = k1 * in.deltaCoeffs[i];
             const double kDeltaNbr = k2 * in.deltaCoeffsNbr[i];
-            // One test on the fast path (finite kDelta > 0 with finite k > 0 implies finite
+            // One test on the fast path (finite kDelta > 0 with k in range implies finite
             // deltaCoeffs > 0); the named error otherwise.
-            if (!(positiveFinite(k1) && positiveFinite(k2) && positiveFinite(kDelta) && positiveFinite(kDeltaNbr))) {
+            if (!(conductivity(k1) && conductivity(k2) && positiveFinite(kDelta) && positiveFinite(kDeltaNbr))) {
                 badFace(in, i);
             }
             const double ks = 2.0 * k1 * k2 / (k1 + k2); // harmonicMeanConductivity, checked above

@@ -43,7 +43,7 @@ InterfaceGap::InterfaceGap(const GapSpec& spec, std::function<double(double)> se
     }
     if (!separation_) {
         requirePositive("rms roughness sigma (gap separation)", sigma);
-        requirePositive("microhardness H_c (gap separation)", Hc);
+        limits::requireInRange("microhardness H_c (gap separation)", Hc, limits::minimumHardness, limits::maximumHardness, "Pa");
     }
     firstTouch_ = this->separation(requirePositive("first-touch pressure", firstTouchPressure));
 }
@@ -97,8 +97,8 @@ std::string InterfaceGap::summary() const
     std::ostringstream os;
     if (gas_) {
         const GasGapSpec& g = gas_->spec();
-        os << "gap: " << g.gas.name << " at " << g.pressure << " Pa (accommodation " << g.accommodation1 << ", "
-           << g.accommodation2 << "; M = " << gas_->rarefaction(300.0) << " m at 300 K)";
+        os << "gap: " << g.gas.name << " at " << g.pressure << " Pa (accommodation " << *g.accommodation1 << ", "
+           << *g.accommodation2 << "; M = " << gas_->rarefaction(300.0) << " m at 300 K)";
     } else {
         os << "gap: vacuum";
     }

@@ -2,20 +2,18 @@
 #include "roughContact/interface/InterfaceMonitor.hpp"
 
 #include "roughContact/interface/ContactInterface.hpp"
+#include "roughContact/io/Numbers.hpp"
 
-#include <cstdio>
 #include <sstream>
 
 namespace roughContact {
 
 namespace {
 
-/// %.10g: every number to ten digits, whatever the stream's state.
+/// Every number to ten digits, whatever the stream's state or the process's locale.
 std::string number(double x)
 {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.10g", x);
-    return buffer;
+    return formatNumber(x, 10);
 }
 
 /// sum/area, or empty where no face counts (area 0).

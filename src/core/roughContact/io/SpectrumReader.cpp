@@ -3,6 +3,7 @@
 #include "roughContact/io/SpectrumReader.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/io/Numbers.hpp"
 #include "roughContact/io/TableReader.hpp"
 
 #include <cstdlib>
@@ -25,7 +26,8 @@ std::string shortest(double v)
         os.precision(digits);
         os << v;
         text = os.str();
-        if (std::strtod(text.c_str(), nullptr) == v) {
+        double back = 0.0;
+        if (parseNumber(text, back) && back == v) {
             break;
         }
     }

@@ -3,7 +3,9 @@
 #include "roughContact/io/TableReader.hpp"
 
 #include "roughContact/Error.hpp"
-#include "roughContact/FloatingPoint.hpp"
+#include "roughContact/io/Numbers.hpp"
+
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -87,25 +89,7 @@ std::vector<std::string> splitFields(const std::string& line)
 
 bool parseNumber(const std::string& field, double& value)
 {
-    const std::string t = trim(field);
-    if (t.empty() || t.find_first_of("xX") != std::string::npos) {
-        return false;
-    }
-    const char* begin = t.c_str();
-    char* end = nullptr;
-    errno = 0;
-    double v = 0.0;
-    {
-        const QuietFloatingPoint quiet; // "1e999" raises overflow on its way to inf
-        v = std::strtod(begin, &end);
-    }
-    if (end != begin + t.size()) {
-        return false;
-    }
-    // Overflow gives +-HUGE_VAL (infinite) and is rejected as non-finite by the caller;
-    // underflow gives a tiny or zero value, which is what the field means.
-    value = v;
-    return true;
+    return roughContact::parseNumber(field, value);
 }
 
 namespace {
@@ -278,6 +262,14 @@ std::string printable(const std::string& text, std::size_t maxLength)
 
 std::ifstream openInputFile(const std::string& path)
 {
+    if (path.find('\0') != std::string::npos) {
+        // The operating system would open the name up to the NUL: another file than was named.
+        throw InputError(printable(path, 200), 0, "the file name holds a NUL byte; give the name alone");
+    }
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+        throw InputError(path, 0, "is a directory, not a file");
+    }
     std::ifstream in(path, std::ios::in | std::ios::binary);
     if (!in) {
         throw InputError(path, 0, "cannot open the file for reading");

@@ -2,11 +2,35 @@
 // Reading an areal surface from an ISO 25178-72 X3P file (the ISO 5436-2 XML container).
 #pragma once
 
+#include "roughContact/Limits.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
 
 namespace roughContact {
+
+/// What the X3P reader holds in memory at most, so that a small archive that inflates to
+/// gigabytes (a zip bomb, or a header that lies about its sizes) is refused, with an InputError
+/// naming the file, the entry, its size and the cap, before any large allocation. The reader
+/// never holds main.xml whole: it inflates it in pieces, reads Record3/DataList's Datum values
+/// as they pass (8 bytes a point), and parses the rest, the metadata, as a document tree.
+namespace x3pLimits {
+/// The most bytes main.xml may inflate to, checked against its zip header before inflating and
+/// against the running count while inflating: inline data of the largest map (4096 x 4096
+/// points) at 64 characters a point ("      <Datum>-1.2345678901234567e-06</Datum>" and its
+/// line end take 45). It bounds the time spent inflating, not memory (main.xml is not held).
+constexpr std::uint64_t maximumXmlBytes = 64ull * limits::maximumGridPoints;
+/// The most bytes of main.xml outside the content of Record3/DataList (the metadata: records 1
+/// to 4, a few kB in a real file) that are parsed into a document tree. A tree costs pugixml up
+/// to 16 times its text (64 bytes for a 4-byte element, <a/>), so a 1 GiB main.xml of markup or
+/// whitespace would take gigabytes; 4 MiB of it take at most about 80 MB (measured: 77 MB peak
+/// for a main.xml of a million <a/> elements).
+constexpr std::size_t maximumMarkupBytes = std::size_t(4) << 20;
+/// The most characters of one Datum's text (a number, with any whitespace around it).
+constexpr std::size_t maximumDatumCharacters = 1024;
+} // namespace x3pLimits
 
 /// How to treat an X3P file.
 struct X3pReadOptions {
@@ -30,7 +54,11 @@ struct X3pReadOptions {
 /// Heights are returned as read (not detrended); the surface's source is path.
 /// Throws InputError(path, 0, ...) naming what is wrong: not a zip, a corrupt or truncated
 /// archive, a missing file or XML element (by its path, e.g. Record1/Axes/CX/Increment), a
-/// checksum mismatch, sizes that disagree with the data, invalid points.
+/// checksum mismatch, sizes that disagree with the data, invalid points, an entry or main.xml's
+/// metadata larger than x3pLimits allow, an entry that inflates to more than its header says.
+/// Record3/DataList may hold only Datum elements (ISO 5436-2), comments and whitespace; its
+/// Datum values are read as main.xml inflates, so that the text of a large inline map is never
+/// held whole.
 ArealSurface readX3p(const std::string& path, const X3pReadOptions& options = {});
 
 /// The same from the bytes of an X3P file held in memory; name is the file name that errors and

@@ -2,6 +2,7 @@
 #include "roughContact/models/BoundaryElement.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,8 +16,16 @@ BoundaryElementModel::BoundaryElementModel(const ArealSurface& surface, double E
                                            BoundaryElementOptions options)
     : surface_(surface.detrended()), Eprime_(requirePositive("reduced modulus E'", Eprime)), options_(options)
 {
+    // The roughness floor of every model (Limits.hpp): a smaller rms is a unit mistake or a
+    // constant map (a mask with one valid point, filled), which the solver cannot resolve.
     if (surface_.rms() == 0.0) {
         throw ParameterError("surface " + surface_.source(), "has zero roughness: nothing to solve");
+    }
+    if (surface_.rms() < limits::minimumRoughness) {
+        std::ostringstream os;
+        os << "rms height " << surface_.rms() << " m (its mean plane removed) is below " << limits::minimumRoughness
+           << " m (a femtometre): not a physical roughness (a constant map?); check the units";
+        throw ParameterError("surface " + surface_.source(), os.str());
     }
     const std::size_t n = surface_.nx() * surface_.ny();
     const double bytes =
@@ -37,12 +46,22 @@ BoundaryElementModel::BoundaryElementModel(const ArealSurface& surface, double E
     po.maxIterations = options_.maxIterations;
     po.hardness = options_.hardness;
     po.precondition = options_.precondition;
+    po.progress = options_.progress;
+    po.progressEvery = options_.progressEvery;
     solver_ = std::make_unique<PolonskyKeer>(*op_, surface_.heights(), po);
     patchConductance_ = std::numeric_limits<double>::infinity();
     if (!options_.periodic) {
+        SolveProgressCallback patchProgress;
+        if (options_.progress) {
+            patchProgress = [this](const SolveProgress& s) {
+                SolveProgress p = s;
+                p.stage = "bonded-patch conductance";
+                options_.progress(p);
+            };
+        }
         const SpotConductance patch = spotConductance(*op_, std::vector<bool>(n, true), conductanceTolerance,
                                                       options_.maxIterations, nullptr, nullptr,
-                                                      options_.precondition);
+                                                      options_.precondition, patchProgress, options_.progressEvery);
         if (!patch.converged || !(patch.perConductivity > 0.0)) {
             throw ParameterError("boundaryElement", "the conductance of the bonded patch did not converge");
         }
@@ -73,7 +92,7 @@ BoundaryElementPoint BoundaryElementModel::solve(double load, std::vector<double
     if (!s.converged) {
         std::ostringstream os;
         os << "the contact solve at F/(A_n E') = " << load << " did not converge in " << s.iterations
-           << " iterations (residual " << s.residual << ", tolerance " << options_.tolerance << ")";
+           << " iterations (residual " << s.residual << ", tolerance " << s.tolerance << ")";
         throw ParameterError("boundaryElement", os.str());
     }
     out.areaFraction = s.areaFraction;
@@ -86,7 +105,8 @@ BoundaryElementPoint BoundaryElementModel::solve(double load, std::vector<double
         contact[i] = s.pressure[i] > 0.0;
     }
     const SpotConductance c = spotConductance(*op_, contact, conductanceTolerance, options_.maxIterations,
-                                              warmFlux, flux, options_.precondition);
+                                              warmFlux, flux, options_.precondition, options_.progress,
+                                              options_.progressEvery);
     if (!c.converged) {
         std::ostringstream os;
         os << "the conductance solve at F/(A_n E') = " << load << " did not converge in " << c.iterations

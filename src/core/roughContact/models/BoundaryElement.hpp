@@ -36,6 +36,10 @@ struct BoundaryElementOptions {
     bool precondition = true;
     /// The most memory [bytes] the solver may take (checked before allocating).
     double memoryLimit = 8e9;
+    /// Called every progressInterval seconds while a contact or conductance solve runs
+    /// (PolonskyKeer.hpp), the bonded patch's included (optional); every progressEvery seconds.
+    SolveProgressCallback progress;
+    double progressEvery = progressInterval;
 };
 
 /// One load point of a boundary-element curve.

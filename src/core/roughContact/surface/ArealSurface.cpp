@@ -47,8 +47,8 @@ ArealSurface::ArealSurface(std::vector<double> heights, std::size_t nx, std::siz
     for (std::size_t i = 0; i < z_.size(); ++i) {
         if (!std::isfinite(z_[i]) || std::abs(z_[i]) > limits::maximumHeight) {
             std::ostringstream os;
-            os << "height at x index " << i % nx_ << ", y index " << i / nx_ << " is " << z_[i]
-               << " m; heights must be finite and within +-" << limits::maximumHeight << " m";
+            os << "height at x index " << i % nx_ << ", y index " << i / nx_ << " is "
+               << limits::valueText(z_[i], "m") << "; heights must be finite and within +-" << limits::maximumHeight << " m";
             throw InputError(w, 0, os.str());
         }
     }

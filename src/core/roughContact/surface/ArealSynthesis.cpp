@@ -181,10 +181,10 @@ double IsotropicSpectrum::powerOutside(double q) const
 namespace {
 void requireGridSize(std::size_t n)
 {
-    if (n < minimumSynthesisSize || n > maximumSynthesisSize || n % 2 != 0) {
+    if (n < limits::minimumSynthesisSize || n > limits::maximumSynthesisSize || n % 2 != 0) {
         std::ostringstream os;
-        os << "the grid size must be even and within [" << minimumSynthesisSize << ", "
-           << maximumSynthesisSize << "], got " << n;
+        os << "the grid size must be even and within [" << limits::minimumSynthesisSize << ", "
+           << limits::maximumSynthesisSize << "], got " << n;
         throw ParameterError("n", os.str());
     }
 }

@@ -109,8 +109,4 @@ std::vector<double> isotropicGridPower(const Spectrum& lineScan, std::size_t n);
 ArealSurface synthesizeIsotropic(const Spectrum& lineScan, std::size_t n, std::uint64_t seed,
                                  std::string source = "");
 
-/// The accepted grid sizes of synthesizeIsotropic.
-constexpr std::size_t minimumSynthesisSize = 8;
-constexpr std::size_t maximumSynthesisSize = 4096;
-
 } // namespace roughContact

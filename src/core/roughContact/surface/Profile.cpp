@@ -23,7 +23,8 @@ Profile::Profile(std::vector<double> heights, double spacing, std::string source
     for (std::size_t i = 0; i < z_.size(); ++i) {
         if (!std::isfinite(z_[i]) || std::abs(z_[i]) > limits::maximumHeight) {
             std::ostringstream os;
-            os << "height number " << i + 1 << " is " << z_[i] << " m; heights must be finite and within +-"
+            os << "height number " << i + 1 << " is " << limits::valueText(z_[i], "m")
+               << "; heights must be finite and within +-"
                << limits::maximumHeight << " m";
             throw InputError(what, 0, os.str());
         }

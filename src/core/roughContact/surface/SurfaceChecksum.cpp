@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/surface/SurfaceChecksum.hpp"
 
+#include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 
 #include <cstring>
@@ -39,6 +40,19 @@ std::uint64_t surfaceChecksum(const Spectrum& surface)
         hash = addDouble(hash, beta[i]);
     }
     return addDouble(hash, surface.length());
+}
+
+std::uint64_t surfaceChecksum(const Spectrum& lineScan, const ArealSurface& solved, bool periodic)
+{
+    std::uint64_t hash = surfaceChecksum(lineScan);
+    hash = addDouble(hash, double(solved.nx()));
+    hash = addDouble(hash, double(solved.ny()));
+    hash = addDouble(hash, solved.dx());
+    hash = addDouble(hash, solved.dy());
+    for (double z : solved.heights()) {
+        hash = addDouble(hash, z);
+    }
+    return addDouble(hash, periodic ? 1.0 : 0.0);
 }
 
 std::string checksumHex(std::uint64_t value)

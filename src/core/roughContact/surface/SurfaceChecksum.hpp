@@ -8,6 +8,7 @@
 
 namespace roughContact {
 
+class ArealSurface;
 class Spectrum;
 
 /// FNV-1a (64 bit: offset basis 0xcbf29ce484222325, prime 0x100000001b3) over the IEEE-754
@@ -16,6 +17,12 @@ class Spectrum;
 /// host's memory layout); -0.0 is hashed as +0.0. Any change of a frequency, an amplitude, the
 /// number of levels or L changes it (up to the 2^-64 chance of a collision).
 std::uint64_t surfaceChecksum(const Spectrum& surface);
+
+/// What a boundary-element interface solves: surfaceChecksum(lineScan) continued over the grid
+/// (nx, ny, as binary64), the spacings dx, dy, every height of the solved areal surface, row by
+/// row, and whether it is solved periodic (1.0 or 0.0). A synthesized surface's seed or grid
+/// size changes its heights, so it changes this (the spectrum alone does not: issue 18).
+std::uint64_t surfaceChecksum(const Spectrum& lineScan, const ArealSurface& solved, bool periodic);
 
 /// value as 16 lower-case hexadecimal digits (leading zeros kept).
 std::string checksumHex(std::uint64_t value);

@@ -2,6 +2,7 @@
 #include "roughContact/thermal/ConductanceLaw.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
 #include "roughContact/models/Persson.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
@@ -80,7 +81,7 @@ public:
     {
         checkRoughness(r_);
         if (Hc_) {
-            requirePositive("microhardness H_c", *Hc_);
+            limits::requireInRange("microhardness H_c", *Hc_, limits::minimumHardness, limits::maximumHardness, "Pa");
         } else {
             checkVickersCoefficients(*vickers_);
         }

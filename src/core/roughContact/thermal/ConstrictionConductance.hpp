@@ -6,6 +6,7 @@
 #pragma once
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
 
 #include <vector>
@@ -30,12 +31,16 @@ double constrictionConductancePerConductivity(const std::vector<LevelState>& tra
 /// h_c / k_s [1/m] of a multi-scale model at the load F/(A_n E').
 double constrictionConductancePerConductivity(const MultiscaleModel& model, double load);
 
-/// k_s = 2 k1 k2 / (k1 + k2) [W/(m K)]; both conductivities finite and > 0 (ParameterError
-/// otherwise). Inline: called per face and per evaluation.
+/// k_s = 2 k1 k2 / (k1 + k2) [W/(m K)]; both conductivities within limits::minimumConductivity..
+/// maximumConductivity (ParameterError naming "conductivity k1"/"k2" otherwise), where 2 k1 k2
+/// cannot overflow (it did for k from 1e154 on: issue 18). Inline: called per face and per
+/// evaluation (the checks cost two comparisons each and build no string unless they fail).
 inline double harmonicMeanConductivity(double k1, double k2)
 {
-    requirePositive("conductivity k1", k1);
-    requirePositive("conductivity k2", k2);
+    limits::requireInRange("conductivity k1", k1, limits::minimumConductivity, limits::maximumConductivity,
+                           "W/(m K)");
+    limits::requireInRange("conductivity k2", k2, limits::minimumConductivity, limits::maximumConductivity,
+                           "W/(m K)");
     return 2.0 * k1 * k2 / (k1 + k2);
 }
 

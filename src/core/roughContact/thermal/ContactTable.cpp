@@ -64,9 +64,8 @@ ContactTable::ContactTable(const MultiscaleModel& model, double minPressure, dou
     if (!(maxPressure > minPressure)) {
         throw ParameterError("maximum pressure", "must exceed the minimum pressure");
     }
-    if (pointsPerDecade < 2) {
-        throw ParameterError("points per decade", "must be at least 2");
-    }
+    limits::requireInRange("pointsPerDecade", double(pointsPerDecade), double(limits::minimumPointsPerDecade),
+                           double(limits::maximumPointsPerDecade), "");
     pComplete_ = completeContactLoad(model) * Eprime_;
     if (!(minPressure < pComplete_)) {
         std::ostringstream os;

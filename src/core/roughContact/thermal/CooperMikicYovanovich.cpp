@@ -2,6 +2,7 @@
 #include "roughContact/thermal/CooperMikicYovanovich.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 
 #include <cmath>
 
@@ -33,7 +34,7 @@ double cooperMikicYovanovichFromRelativePressure(double relativePressure, const 
 double cooperMikicYovanovichConductancePerConductivity(double P, const SurfaceRoughness& r, double Hc)
 {
     checkPressure(P, "contact pressure P");
-    requirePositive("microhardness H_c", Hc);
+    limits::requireInRange("microhardness H_c", Hc, limits::minimumHardness, limits::maximumHardness, "Pa");
     return cooperMikicYovanovichFromRelativePressure(P / Hc, r);
 }
 

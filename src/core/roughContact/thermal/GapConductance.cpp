@@ -24,19 +24,19 @@ double requireTemperature(const char* what, double T)
     return limits::requireInRange(what, T, limits::minimumTemperature, limits::maximumTemperature, "K");
 }
 
-// 0 means the gas's default; otherwise within [minimumAccommodation, 1].
-double resolveAccommodation(const char* what, double given, double gasDefault)
+// Unset: the gas's default; otherwise within [limits::minimumAccommodation, 1].
+double resolveAccommodation(const char* what, std::optional<double> given, double gasDefault)
 {
-    if (given == 0.0) {
+    if (!given) {
         return gasDefault;
     }
-    if (!std::isfinite(given) || given < minimumAccommodation || given > 1.0) {
+    if (!std::isfinite(*given) || *given < limits::minimumAccommodation || *given > 1.0) {
         std::ostringstream os;
-        os << "must lie in (0, 1] (at least " << minimumAccommodation << "), or be 0 for the gas's default "
-           << gasDefault << "; got " << given;
+        os << "must lie in (0, 1] (at least " << limits::minimumAccommodation << "; leave it out for the gas's default "
+           << gasDefault << "), got " << limits::valueText(*given, "");
         throw ParameterError(what, os.str());
     }
-    return given;
+    return *given;
 }
 
 double jump(double a) { return (2.0 - a) / a; }
@@ -51,7 +51,7 @@ SeparationInputs separationInputs(double P, double sigma, double Hc)
 {
     requirePositive("contact pressure P", P);
     limits::requireInRange("rms roughness sigma", sigma, limits::minimumRoughness, limits::maximumHeight, "m");
-    requirePositive("microhardness H_c", Hc);
+    limits::requireInRange("microhardness H_c", Hc, limits::minimumHardness, limits::maximumHardness, "Pa");
     // Compare before dividing: P/H_c itself could overflow.
     if (P >= 0.5 * Hc) {
         return {0.5, true, sigma};
@@ -79,7 +79,7 @@ GasGap::GasGap(const GasGapSpec& spec) : spec_(spec), alphaBeta_(0.0)
     spec_.accommodation2 = resolveAccommodation("accommodation coefficient a2", spec_.accommodation2,
                                                 spec_.gas.accommodation);
     const double gamma = spec_.gas.heatCapacityRatio;
-    alphaBeta_ = (jump(spec_.accommodation1) + jump(spec_.accommodation2)) * (2.0 * gamma / (gamma + 1.0)) /
+    alphaBeta_ = (jump(*spec_.accommodation1) + jump(*spec_.accommodation2)) * (2.0 * gamma / (gamma + 1.0)) /
                  spec_.gas.prandtl;
 }
 

@@ -64,6 +64,7 @@
 #include "roughContact/thermal/Gas.hpp"
 
 #include <cmath>
+#include <optional>
 
 namespace roughContact {
 
@@ -73,14 +74,18 @@ constexpr double stefanBoltzmann = 5.670374419e-8;
 struct GasGapSpec {
     GasProperties gas;
     double pressure = 101325;                      ///< gas pressure P_g [Pa]
-    double accommodation1 = 0, accommodation2 = 0; ///< 0: the gas's default
+    /// The thermal accommodation coefficients of the two surfaces, in (0, 1]; unset: the gas's
+    /// default (GasProperties::accommodation). There is no number meaning "default": 0 is an
+    /// error, as any value outside the range (issue 18: 0 and 1e-300, which OpenFOAM reads as
+    /// 0, were taken as the default).
+    std::optional<double> accommodation1, accommodation2;
 };
 
 class GasGap {
 public:
     /// Validates: checkGas(spec.gas), "gas pressure P_g" within limits::minimumGasPressure..
-    /// maximumGasPressure, "accommodation coefficient a1"/"a2" 0 (the gas's default) or within
-    /// [minimumAccommodation, 1]. ParameterError naming the entry otherwise.
+    /// maximumGasPressure, "accommodation coefficient a1"/"a2" unset (the gas's default) or within
+    /// [limits::minimumAccommodation, 1]. ParameterError naming the entry otherwise.
     explicit GasGap(const GasGapSpec& spec);
 
     /// k_g(T) [W/(m K)]; T [K] within limits::minimumTemperature..maximumTemperature
@@ -101,8 +106,8 @@ public:
     {
         return conductivityOfChecked(T) / (Y + alphaBeta_ * meanFreePathOfChecked(T));
     }
-    /// The spec as validated, with the accommodation coefficients resolved (a 0 given is replaced
-    /// by the gas's default).
+    /// The spec as validated, with the accommodation coefficients resolved (both set: an unset
+    /// one is the gas's default).
     const GasGapSpec& spec() const { return spec_; }
 
 private:

@@ -101,20 +101,20 @@ GasProperties gasByName(const std::string& name)
 
 void checkGas(const GasProperties& gas)
 {
-    requireGasRange("gas conductivity k_g", gas, gas.conductivity, minimumGasConductivity, maximumGasConductivity,
+    requireGasRange("gas conductivity k_g", gas, gas.conductivity, limits::minimumGasConductivity, limits::maximumGasConductivity,
                     false, " W/(m K)");
-    requireGasRange("gas conductivity exponent", gas, gas.conductivityExponent, 0.0, maximumConductivityExponent,
+    requireGasRange("gas conductivity exponent", gas, gas.conductivityExponent, 0.0, limits::maximumConductivityExponent,
                     true, "");
     requireGasRange("gas reference temperature T0", gas, gas.referenceTemperature, limits::minimumTemperature,
                     limits::maximumTemperature, false, " K");
-    requireGasRange("gas heat capacity ratio gamma", gas, gas.heatCapacityRatio, 1.0, maximumHeatCapacityRatio,
+    requireGasRange("gas heat capacity ratio gamma", gas, gas.heatCapacityRatio, 1.0, limits::maximumHeatCapacityRatio,
                     true, "");
-    requireGasRange("gas Prandtl number Pr", gas, gas.prandtl, minimumPrandtl, maximumPrandtl, false, "");
+    requireGasRange("gas Prandtl number Pr", gas, gas.prandtl, limits::minimumPrandtl, limits::maximumPrandtl, false, "");
     requireGasRange("gas mean free path Lambda0", gas, gas.meanFreePath, limits::minimumLength,
                     limits::maximumLength, false, " m");
     requireGasRange("gas reference pressure P0", gas, gas.referencePressure, limits::minimumGasPressure,
                     limits::maximumGasPressure, false, " Pa");
-    requireGasRange("gas accommodation coefficient", gas, gas.accommodation, minimumAccommodation, 1.0, false, "");
+    requireGasRange("gas accommodation coefficient", gas, gas.accommodation, limits::minimumAccommodation, 1.0, false, "");
 }
 
 } // namespace roughContact

@@ -67,27 +67,10 @@ const std::vector<std::string>& gasNames();
 /// and listing the known names for any other name (the match is exact, lower case).
 GasProperties gasByName(const std::string& name);
 
-/// Accepted ranges of a gas's numbers (beyond the physical ones, they keep every product of
-/// GasGap finite). Conductivity [W/(m K)]: gases have 0.005-0.2; liquids and liquid metals, which
-/// a "user" gas may stand for, reach 100.
-constexpr double minimumGasConductivity = 1e-6;
-constexpr double maximumGasConductivity = 1e3;
-/// The exponent of k_g(T): real gases have 0.5-1 (kinetic theory 0.5 for hard spheres); 2 keeps
-/// (T/T0)^n finite over the accepted temperatures.
-constexpr double maximumConductivityExponent = 2.0;
-/// gamma must exceed 1 (c_p > c_v); the monatomic ideal gas has the largest, 5/3.
-constexpr double maximumHeatCapacityRatio = 10.0;
-/// Pr: gases 0.6-1.
-constexpr double minimumPrandtl = 1e-3;
-constexpr double maximumPrandtl = 1e3;
-/// Accommodation coefficients lie in (0, 1]; below 1e-6 (no measured surface comes near: the
-/// temperature jump would pass a million mean free paths) they are refused.
-constexpr double minimumAccommodation = 1e-6;
-
 /// ParameterError naming the first bad field ("gas conductivity k_g", "gas conductivity
 /// exponent", "gas reference temperature T0", "gas heat capacity ratio gamma", "gas Prandtl
 /// number Pr", "gas mean free path Lambda0", "gas reference pressure P0", "gas accommodation
-/// coefficient"): every number finite and > 0 and within the ranges above, gamma > 1,
+/// coefficient"): every number finite and > 0 and within the ranges of Limits.hpp (limits::minimumGasConductivity ...), gamma > 1,
 /// accommodation in (0, 1], T0 within limits::minimumTemperature..maximumTemperature, P0 within
 /// limits::minimumGasPressure..maximumGasPressure, Lambda0 within the accepted lengths
 /// (limits::minimumLength..maximumLength).

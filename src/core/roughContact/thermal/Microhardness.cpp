@@ -2,6 +2,7 @@
 #include "roughContact/thermal/Microhardness.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -25,7 +26,7 @@ void checkPressure(double P)
 
 void checkVickersCoefficients(const VickersCoefficients& v)
 {
-    requirePositive("Vickers coefficient c1", v.c1);
+    limits::requireInRange("Vickers coefficient c1", v.c1, limits::minimumHardness, limits::maximumHardness, "Pa");
     if (std::isnan(v.c2) || v.c2 < minimumC2 || v.c2 > maximumC2) {
         std::ostringstream os;
         os << "is " << v.c2 << "; must lie in [" << minimumC2 << ", " << maximumC2
