@@ -37,6 +37,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -60,6 +61,7 @@ struct Options {
     bool fillInvalid = false;
     std::string synthesize; // "N[,SEED]"
     bool periodic = false;
+    std::optional<std::string> detrend; // boundaryElement: none | mean | plane
     std::optional<double> hardness;
     bool hardnessFromYield = false;
     std::string pressureMap; // boundaryElement: the pressure field of the highest load, to this file
@@ -383,7 +385,8 @@ std::pair<ArealSurface, bool> arealSurfaceOf(const Options& o)
         const ArealReadOptions ro = arealReadOptions(o);
         std::optional<ArealSurface> total;
         for (const std::string& path : o.areals) {
-            const ArealSurface one = readAreal(path, ro).detrended();
+            // As read: BoundaryElementModel detrends the composite (--detrend).
+            const ArealSurface one = readAreal(path, ro);
             total = total ? compositeSurface(*total, one) : one;
         }
         return {*total, o.periodic};
@@ -449,6 +452,9 @@ int runBoundaryElement(const Options& o)
     const ContactMaterials materials = materialsOf(o);
     BoundaryElementOptions bo;
     bo.periodic = periodic;
+    if (o.detrend) {
+        bo.detrend = parseDetrend(*o.detrend, "--detrend");
+    }
     bo.hardness = hardnessOf(o, materials, "boundaryElement --hardness-from-yield");
     std::vector<double> pressures; // --pressures [Pa]: the first column
     const std::vector<double> loads = loadsOf(o, materials.reducedModulus(), &pressures);
@@ -471,6 +477,17 @@ int runBoundaryElement(const Options& o)
                   << "), " << s.seconds << " s in this solve; " << seconds() << " s in all" << std::endl;
     };
     const BoundaryElementModel model(surface, materials.reducedModulus(), bo);
+    {
+        // Before a long run, what to expect (a timed FFT pair times the solves' evaluations).
+        const HalfSpaceOperator op(surface.nx(), surface.ny(), surface.dx(), surface.dy(), materials.reducedModulus(),
+                                   periodic);
+        const double expected = estimatedCurveSeconds(op, loads.size() + (o.pressureMap.empty() ? 0 : 1));
+        if (expected > 3.0) {
+            std::cerr << "multiscaleContact: boundaryElement " << surface.nx() << " x " << surface.ny() << ": "
+                      << loads.size() << " load" << (loads.size() == 1 ? "" : "s") << ", about "
+                      << std::setprecision(2) << expected << std::setprecision(6) << " s" << std::endl;
+        }
+    }
     const std::vector<BoundaryElementPoint> points =
         model.curve(loads, [&](std::size_t done, std::size_t total, const BoundaryElementPoint& p) {
             current = done + 1;
@@ -540,6 +557,7 @@ int run(const Options& o)
     const bool cmy = o.conductanceLaw == "cooperMikicYovanovich" || o.conductanceLaw == "all";
     for (const auto& [given, what] : {std::pair<bool, const char*>{!o.synthesize.empty(), "--synthesize"},
                                       {o.periodic, "--periodic"},
+                                      {o.detrend.has_value(), "--detrend"},
                                       {o.hardness.has_value() && !cmy, "--hardness"},
                                       {o.hardnessFromYield && !cmy, "--hardness-from-yield"},
                                       {!o.pressureMap.empty(), "--pressure-map"}}) {
@@ -795,6 +813,10 @@ int main(int argc, char** argv)
     app.add_flag("--periodic", o.periodic,
                  "boundaryElement: solve an --areal map as one period of a periodic surface (default: "
                  "non-periodic, zero-padded)");
+    app.add_option("--detrend", o.detrend,
+                   "boundaryElement: what is removed from the heights before the solve: none, mean or plane "
+                   "(default: mean for a periodic solve, which has no trend to remove; plane for a "
+                   "non-periodic map, whose fixture tilts it)");
     app.add_option("--hardness", o.hardness, "boundaryElement: perfectly plastic cap p <= H [Pa]");
     app.add_option("--pressure-map", o.pressureMap,
                    "boundaryElement: write the contact pressure [Pa] at the highest load to this file, as a "

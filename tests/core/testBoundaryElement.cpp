@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <random>
 #include <string>
 #include <utility>
@@ -639,12 +640,17 @@ TEST(BoundaryElementModel, CompleteContactAndHardnessLimits)
     EXPECT_NEAR(part.areaFraction, 1.0 / 3.0, 2.0 / double(n));
     // Its conductance (was: only "finite"): Westergaard's mean gap at x = p/p* is
     // D (1 - x + x ln x), so du/dp = (D/p*) ln x = (L/(pi E')) ln x, and Barber's relation
-    // h_c/k_s = -(1/E') dp/du gives pi/(L ln(1/x)) = pi/(2 L ln(1/sin(pi a/L))): with
-    // sin(pi a/L) = 1/2 at x = 1/4, pi/(2 L ln 2) = 22662 1/m. The contact's edges are resolved
-    // to a cell: half a cell (a/L +- 1/128) moves the closed form by 7.85/128 = 6 %; measured
-    // +1.8 % (the bonded square's +1.8 % below has the same cause); bound 3 %.
-    const double strips = pi / (2.0 * L * std::log(2.0));
-    EXPECT_NEAR(part.conductancePerConductivity / strips, 1.0, 0.03) << part.conductancePerConductivity;
+    // h_c/k_s = -(1/E') dp/du gives pi/(L ln(1/x)) = pi/(2 L ln(1/sin(pi a/L))). The contact's
+    // edges are resolved to a cell: half a cell (a/L +- 1/128) moves the closed form by 6 %, so
+    // it is checked at the load whose edges fall on cell edges, a = 10.5 cells (x = 0.2429):
+    // measured -2.3 % at n = 64, -1.15 % at 128, -0.58 % at 256 (first order in the cell, the
+    // uniform flux of each cell); bound 3 %. (The ridge is solved with its mean removed only; a
+    // plane fitted to the cells 0..63 of one period tilted it and moved the edge: issue 19.)
+    const double edge = std::sin(pi * 10.5 / double(n));
+    const BoundaryElementPoint aligned = model.solve(edge * edge * pStar / Ep);
+    EXPECT_EQ(aligned.areaFraction, 21.0 / double(n));
+    const double strips = pi / (2.0 * L * std::log(1.0 / edge));
+    EXPECT_NEAR(aligned.conductancePerConductivity / strips, 1.0, 0.03) << aligned.conductancePerConductivity;
     o.hardness = 0.1 * pStar;
     const BoundaryElementModel soft(ArealSurface(ridge(n, n, D), n, n, L / n, L / n, "ridge"), Ep, o);
     EXPECT_EQ(soft.solve(0.2 * pStar / Ep).areaFraction, 1.0);
@@ -714,7 +720,7 @@ TEST(BoundaryElementModel, AConstantMapIsRefusedAsEveryModelRefusesIt)
     // refuses an rms height below limits::minimumRoughness.
     const std::size_t n = 16;
     std::vector<double> z(n * n, 3.7e-6);
-    z[5] += 1e-22; // a trace of roughness, far below the floor
+    z[5] += 1e-21; // a trace of roughness (above the last digit of 3.7e-6, 4e-22), far below the floor
     for (bool periodic : {false, true}) {
         BoundaryElementOptions o;
         o.periodic = periodic;
@@ -807,4 +813,104 @@ TEST(BoundaryElementModel, ALongSolveReportsWhereItIs)
     quiet.progress = [&](const SolveProgress&) { ADD_FAILURE() << "a short solve reported progress"; };
     const BoundaryElementModel q(ArealSurface(randomSurface(n, 4, 1e-7), n, n, L / n, L / n, "r"), Ep, quiet);
     q.solve(1e-3);
+}
+
+TEST(BoundaryElementModel, TheSurfaceSolvedIsTheSurfaceGiven)
+{
+    // Issue 19, item 1: every surface was solved less its least-squares plane, periodic ones too.
+    // A plane fitted to one period of a periodic surface is a property of the sample (on this
+    // one it tilts by a fair part of the rms height): removing it breaks the periodicity and
+    // moves the summits (5 % less contact area at p/E' = 1e-4 on a 512^2 surface;
+    // testContactMechanicsReference). A periodic solve removes the mean only, a measured map
+    // (non-periodic) the plane; detrend chooses either, or nothing.
+    const std::size_t n = 32;
+    const double L = 1e-4;
+    const ArealSurface given(randomSurface(n, 9, 1e-7), n, n, L / n, L / n, "random");
+    const ArealSurface plane = given.detrended();
+    const ArealSurface mean = given.detrended(Detrend::mean);
+    ASSERT_NE(plane.heights(), mean.heights()); // the fitted plane is not zero
+    double average = 0.0;
+    for (double z : given.heights()) {
+        average += z / double(n * n);
+    }
+    for (std::size_t i = 0; i < n * n; ++i) {
+        EXPECT_EQ(mean.heights()[i], given.heights()[i] - average);
+    }
+    EXPECT_EQ(given.detrended(Detrend::none).heights(), given.heights());
+    EXPECT_EQ(given.detrended(Detrend::plane).heights(), plane.heights());
+    const auto solved = [&](bool periodic, std::optional<Detrend> detrend) {
+        BoundaryElementOptions o;
+        o.periodic = periodic;
+        o.detrend = detrend;
+        return BoundaryElementModel(given, Ep, o).surface().heights();
+    };
+    EXPECT_EQ(solved(true, std::nullopt), mean.heights());
+    EXPECT_EQ(solved(false, std::nullopt), plane.heights());
+    EXPECT_EQ(solved(true, Detrend::plane), plane.heights());
+    EXPECT_EQ(solved(false, Detrend::mean), mean.heights());
+    EXPECT_EQ(solved(true, Detrend::none), given.heights());
+    EXPECT_EQ(defaultDetrend(true), Detrend::mean);
+    EXPECT_EQ(defaultDetrend(false), Detrend::plane);
+    for (const char* name : {"none", "mean", "plane"}) {
+        EXPECT_STREQ(detrendName(parseDetrend(name, "detrend")), name);
+    }
+    try {
+        parseDetrend("tilt", "--detrend");
+        ADD_FAILURE() << "tilt accepted";
+    } catch (const ParameterError& e) {
+        EXPECT_NE(std::string(e.what()).find("--detrend: 'tilt' is not a detrending: none, mean"), std::string::npos)
+            << e.what();
+    }
+}
+
+TEST(PolonskyKeer, TheCappedConjugateGradientsAreTheProjectedGradients)
+{
+    // Issue 19, item 3: the capped contact is solved by bound-constrained conjugate gradients
+    // with the elastic solve's preconditioner (PolonskyKeer.cpp); the accelerated projected
+    // gradients it replaced (CappedMethod::projectedGradient, no preconditioner) are an
+    // independent method for the same convex problem. Held to them, tightly converged, on
+    // self-affine surfaces (Hurst 0.8, rms gradient 0.1) from P/H = 0.01 to 0.9: the same contact
+    // and plastic cells (within one: an edge cell within round-off of 0 or H may fall either
+    // way) and mean gaps within 1e-6. Measured on 288 such points (n 32-128, 4 seeds, p/E' 1e-5
+    // to 1e-2, P/H 1e-3 to 0.9): no cell differs and the gaps agree to 1e-7, in 16 iterations on
+    // average against 167; 7 of them stalled and were finished by the projected gradients
+    // (PolonskyKeer.cpp: stallLimit), among them the 64^2 point below.
+    const double L = 1e-4;
+    const double Eprime = 1e11;
+    std::size_t capped = 0;
+    std::size_t elastic = 0;
+    bool fellBack = false;
+    for (const auto& [n, seed] : {std::pair<std::size_t, std::uint64_t>{32, 1}, {32, 2}, {64, 1}}) {
+        const Spectrum s = Spectrum::powerLaw(15.9, 1.8, 1.0 / L, double(n) / (4.0 * L), L);
+        const ArealSurface a = synthesizeIsotropic(s, n, seed).detrended(Detrend::mean);
+        const HalfSpaceOperator K(n, n, L / double(n), L / double(n), Eprime, true);
+        for (double load : {1e-4, 1e-3, 1e-2}) {
+            const double P = load * Eprime;
+            elastic += PolonskyKeer(K, a.heights()).solve(P).iterations;
+            for (double ratio : {0.01, 0.1, 0.45, 0.9}) { // (0.5: W = 512 H or 2048 H exactly, all at the cap: the approach is any in an interval)
+                SCOPED_TRACE(std::to_string(n) + "^2, seed " + std::to_string(seed) + ", p/E' " + std::to_string(load) +
+                             ", P/H " + std::to_string(ratio));
+                PolonskyKeerOptions o;
+                o.hardness = P / ratio;
+                const ContactSolution cg = PolonskyKeer(K, a.heights(), o).solve(P);
+                o.cappedMethod = CappedMethod::projectedGradient;
+                o.tolerance = 1e-11;
+                o.maxIterations = 100000;
+                const ContactSolution pg = PolonskyKeer(K, a.heights(), o).solve(P);
+                ASSERT_TRUE(cg.converged && pg.converged);
+                const double cells = double(n * n);
+                EXPECT_NEAR(cg.areaFraction * cells, pg.areaFraction * cells, 1.0);
+                EXPECT_NEAR(cg.plasticFraction * cells, pg.plasticFraction * cells, 1.0);
+                EXPECT_NEAR(cg.meanSeparation, pg.meanSeparation, 1e-6 * pg.meanSeparation);
+                capped += cg.iterations;
+                fellBack = fellBack || cg.fallback;
+                if (n == 64 && load == 1e-3 && ratio == 0.1) {
+                    EXPECT_TRUE(cg.fallback) << "this point stalled (it cycled between two active sets)";
+                }
+            }
+        }
+    }
+    EXPECT_TRUE(fellBack);
+    // In all, at most twice the elastic solves' iterations (measured: 1.1 times here).
+    EXPECT_LE(capped, 2 * 4 * elastic);
 }

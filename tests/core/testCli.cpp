@@ -583,6 +583,18 @@ TEST(Cli, BoundaryElementInputsAHostileUserTried)
     ASSERT_EQ(largest.status, 0) << largest.err;
     ASSERT_EQ(zero.status, 0) << zero.err;
     EXPECT_NE(largest.out, zero.out); // another seed, another surface
+    // Issue 19, item 1: --detrend chooses what is removed before the solve (default: mean for a
+    // periodic solve, plane for a map); it is for boundaryElement only.
+    expectError(p + " --synthesize 16" + bem + " --detrend tilt --loads 1e-3", {"--detrend", "'tilt' is not a detrending"});
+    expectError(p + " --model hertz --Eprime 2e11 --detrend mean --loads 1e-3", {"--detrend", "boundaryElement"});
+    {
+        const CommandResult byDefault = run(p + " --synthesize 16,3" + bem + " --loads 1e-3");
+        const CommandResult mean = run(p + " --synthesize 16,3" + bem + " --detrend mean --loads 1e-3");
+        const CommandResult plane = run(p + " --synthesize 16,3" + bem + " --detrend plane --loads 1e-3");
+        ASSERT_EQ(plane.status, 0) << plane.err;
+        EXPECT_EQ(byDefault.out, mean.out); // a synthesized surface is periodic: its mean only
+        EXPECT_NE(byDefault.out, plane.out);
+    }
     // Item 9: --pressure-map never replaces an input, and a failed run writes nothing.
     TempDir dir;
     const ArealSurface a = synthesizeIsotropic(Spectrum::fromProfile(readProfile(standin)), 16, 3);

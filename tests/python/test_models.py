@@ -137,3 +137,49 @@ def test_boundary_element_equals_the_cli(cli, spectrum):
     assert math.isinf(bem.patch_conductance_per_conductivity)
     # area_fraction solves each pressure from scratch: the same contact set up to the tolerance.
     np.testing.assert_allclose(bem.area_fraction([2e6, 2e7]), c["area"], rtol=1e-6)
+
+
+def test_boundary_element_detrend(cli, spectrum):
+    """detrend: what is removed before the solve (issue 19): by default the mean of a periodic
+    surface and the plane of a map; the CLI's --detrend gives the same numbers."""
+    surface = rc.synthesize_isotropic(spectrum, 16, 3)
+    materials = rc.ContactMaterials.from_reduced_modulus(2e11)
+    default = rc.BoundaryElement(surface, materials, periodic=True).curve([2e7])
+    mean = rc.BoundaryElement(surface, materials, periodic=True, detrend="mean").curve([2e7])
+    plane = rc.BoundaryElement(surface, materials, periodic=True, detrend="plane").curve([2e7])
+    assert default["area_fraction"][0] == mean["area_fraction"][0]
+    assert default["mean_separation"][0] == mean["mean_separation"][0]
+    assert plane["mean_separation"][0] != mean["mean_separation"][0]
+    r = cli("--profile", STANDIN, "--synthesize", "16,3", "--model", "boundaryElement", "--Eprime", "2e11",
+            "--detrend", "plane", "--loads", "1e-4")
+    assert r.status == 0, r.err
+    np.testing.assert_allclose(plane["mean_separation"], r.columns()["separation"], rtol=1e-9)
+    with pytest.raises(rc.ParameterError, match="^detrend: 'tilt' is not a detrending"):
+        rc.BoundaryElement(surface, materials, periodic=True, detrend="tilt")
+
+
+def test_boundary_element_progress(spectrum, capsys):
+    """A long solve reports where it is (issue 19, item 4): progress(dict) every progress_every
+    seconds (3 by default; 0 here: every iteration), or verbose=True on sys.stderr."""
+    surface = rc.synthesize_isotropic(spectrum, 32, 3)
+    materials = rc.ContactMaterials.from_reduced_modulus(2e11)
+    seen = []
+    bem = rc.BoundaryElement(surface, materials, periodic=True, progress=seen.append, progress_every=0)
+    curve = bem.curve([2e7])
+    assert len(seen) >= curve["iterations"][0] - 1 > 0
+    assert {d["stage"] for d in seen} <= {"contact", "conductance"}
+    assert all(set(d) == {"stage", "iteration", "residual", "tolerance", "seconds"} for d in seen)
+    assert seen[0]["stage"] == "contact" and seen[0]["iteration"] == 1
+    quiet = []
+    rc.BoundaryElement(surface, materials, periodic=True, progress=quiet.append).curve([2e7])
+    assert quiet == []  # a solve shorter than 3 s says nothing
+    rc.BoundaryElement(surface, materials, periodic=True, verbose=True, progress_every=0).curve([2e7])
+    assert "roughcontact: boundaryElement contact solve: iteration 1, residual" in capsys.readouterr().err
+    with pytest.raises(TypeError, match="progress: expected a callable"):
+        rc.BoundaryElement(surface, materials, periodic=True, progress=3)
+
+    def stop(d):
+        raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        rc.BoundaryElement(surface, materials, periodic=True, progress=stop, progress_every=0).curve([2e7])

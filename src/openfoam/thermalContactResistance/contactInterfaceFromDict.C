@@ -10,6 +10,7 @@
 #include "PtrList.H"
 #include "Pstream.H"
 
+#include "roughContact/Limits.hpp"
 #include "roughContact/interface/BoundaryElementTable.hpp"
 #include "roughContact/models/BoundaryElement.hpp"
 
@@ -503,6 +504,11 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
         {
             spec.periodic = flag;
         }
+        word detrend;
+        if (dict.readIfPresent("detrend", detrend))
+        {
+            spec.detrend = roughContact::parseDetrend(detrend, "detrend");
+        }
         scalar H;
         if (dict.readIfPresent("hardness", H))
         {
@@ -512,11 +518,15 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
             dict.getOrDefault<bool>("hardnessFromYield", false);
         if (dict.readIfPresent("pointsPerDecade", n))
         {
-            if (n < 1)
+            // (its range is the core's: Limits.hpp)
+            if (n < 0)
             {
                 FatalIOErrorInFunction(dict)
-                    << "entry pointsPerDecade: expected a whole number >= 1,"
-                    << " got " << n << exit(FatalIOError);
+                    << "entry pointsPerDecade: expected a whole number from "
+                    << label(roughContact::limits::minimumPointsPerDecade)
+                    << " to "
+                    << label(roughContact::limits::maximumPointsPerDecade)
+                    << ", got " << n << exit(FatalIOError);
             }
             (spec.model == "boundaryElement"
                 ? spec.bemPointsPerDecade : spec.pointsPerDecade) =

@@ -83,11 +83,110 @@ PolonskyKeer::PolonskyKeer(const HalfSpaceOperator& op, std::vector<double> heig
 ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmStart) const
 {
     requirePositive("mean pressure", P);
-    if (options_.hardness) {
-        return solveCapped(P, warmStart);
+    if (options_.hardness && P > *options_.hardness) {
+        std::ostringstream os;
+        os << "the mean pressure " << P << " Pa exceeds the hardness " << *options_.hardness
+           << " Pa: every point would flow";
+        throw ParameterError("mean pressure", os.str());
     }
+    if (options_.hardness && options_.cappedMethod == CappedMethod::projectedGradient) {
+        return solveCapped(P, warmStart, options_.maxIterations);
+    }
+    // Polonsky & Keer's constrained conjugate gradients, preconditioned (Vollebregt 2014), with
+    // the bounds 0 <= p <= H (Vollebregt's bound-constrained CG, J. Optim. Theory Appl. 162
+    // (2014) 931, for the upper bound): the conjugate directions live on the active points
+    // 0 < p < H, where the separation must vanish; a point at 0 that the surface penetrates
+    // gets pressure (the overlap correction), a point at H where the surfaces part gives some
+    // back (its mirror), and the load W is kept by scaling the active points. Without a cap
+    // (H = inf) this is the elastic solve, operation for operation.
+    const bool capped = options_.hardness.has_value();
+    const double H = capped ? *options_.hardness : std::numeric_limits<double>::infinity();
     const std::size_t n = h_.size();
     const double W = P * double(n); // the sum of the cells' pressures
+    const auto active = [H](double v) { return v > 0.0 && v < H; };
+    // The load W with 0 <= p <= H: the active points scaled onto W less the capped points' share
+    // (those the scaling lifts to H join them); when that would take more than half the active
+    // points' load, every point is scaled down instead; when the points below the cap carry
+    // nothing, the rest goes to the unloaded points in the order of `rank` (the separation:
+    // the most penetrating first), H each, as a rigid-plastic contact would take it. Says
+    // whether a point changed its set (reached H, left it, or was added), and otherwise the
+    // factor k the active points were scaled by and how many points are at the cap.
+    struct Balanced {
+        bool changed = false;
+        double k = 1.0;
+        std::size_t atCap = 0;
+    };
+    const auto balance = [&](std::vector<double>& q, const std::vector<double>& rank) {
+        Balanced b;
+        bool& changed = b.changed;
+        for (int pass = 0; pass < 100; ++pass) {
+            double sumActive = 0.0;
+            std::size_t atCap = 0;
+            for (double v : q) {
+                if (v >= H) {
+                    ++atCap;
+                } else {
+                    sumActive += v;
+                }
+            }
+            const double target = W - double(atCap) * H;
+            // (Round-off of W - atCap H counts as 0: a load exactly carried by the cap.)
+            const double slack = 1e-12 * W;
+            b.atCap = atCap;
+            if (!(sumActive > 0.0) && std::abs(target) <= slack) {
+                b.k = 1.0;
+                return b;
+            }
+            if (atCap > 0 && target <= slack) {
+                // The active points would lose more than half their load (a new contact point
+                // beside a contact that is all at the cap): every loaded point gives its share,
+                // those at H leave it.
+                const double k = W / (sumActive + double(atCap) * H);
+                for (double& v : q) {
+                    v *= k;
+                }
+                changed = true;
+                continue;
+            }
+            if (!(sumActive > 0.0)) {
+                // Nothing below the cap carries load: new contact points, H each, the most
+                // penetrating first.
+                std::vector<std::size_t> order;
+                for (std::size_t i = 0; i < n; ++i) {
+                    if (q[i] <= 0.0) {
+                        order.push_back(i);
+                    }
+                }
+                const auto need = std::min(order.size(), static_cast<std::size_t>(std::ceil(target / H)) + 1);
+                std::partial_sort(order.begin(), order.begin() + need, order.end(),
+                                  [&](std::size_t a, std::size_t b) { return rank[a] < rank[b]; });
+                double left = target;
+                for (std::size_t k = 0; k < need && left > 0.0; ++k) {
+                    q[order[k]] = std::min(H, left);
+                    left -= q[order[k]];
+                }
+                b.changed = true;
+                return b;
+            }
+            const double k = target / sumActive;
+            b.k = k;
+            bool lifted = false;
+            for (double& v : q) {
+                if (v < H) {
+                    v *= k;
+                    if (v >= H) {
+                        v = H;
+                        lifted = true;
+                    }
+                }
+            }
+            if (!lifted) {
+                break;
+            }
+            changed = true;
+        }
+        return b;
+    };
     std::vector<double> p(n, P);
     if (warmStart != nullptr && warmStart->size() == n) {
         double sum = 0.0;
@@ -98,20 +197,40 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
             for (std::size_t i = 0; i < n; ++i) {
                 p[i] = std::max(0.0, (*warmStart)[i]) * W / sum;
             }
+            if (capped) {
+                for (double& v : p) {
+                    v = std::min(v, H);
+                }
+                std::vector<double> minusHeight(n);
+                for (std::size_t i = 0; i < n; ++i) {
+                    minusHeight[i] = -h_[i];
+                }
+                (void)balance(p, minusHeight);
+            }
         }
     }
     std::vector<double> u(n); // K p
-    std::vector<double> g(n); // separation: u - h less its mean on the contact set
+    std::vector<double> g(n); // separation: u - h less its mean on the active set
     std::vector<double> t(n, 0.0);
     std::vector<double> r(n);
     std::vector<double> z(options_.precondition ? n : 0);    // the preconditioned gap
     std::vector<double> zOut(options_.precondition ? n : 0); // S of the penetration outside
+    std::vector<double> zRel(options_.precondition && capped ? n : 0); // S of the opening at H
+    std::vector<double> uH(capped ? n : 0); // K of the points at H alone
+    bool uHCurrent = false;
     double delta = 0.0;
     double Gold = 1.0;
     ContactSolution out;
     bool uCurrent = false; // u = K p already (updated by linearity in the last iteration)
     std::size_t sinceExact = 0;
     ProgressClock clock(options_.progress, "contact", options_.tolerance, options_.progressEvery);
+    // With the cap, the active set can cycle (a contact nearly all at H, a point or two active:
+    // their mean gap is a poor estimate of the approach, and the points it finds penetrating
+    // push the rest off the cap and back): when the residual has not halved in stallLimit
+    // iterations, the projected gradients (which always converge) finish from the best iterate.
+    constexpr std::size_t stallLimit = 50;
+    double bestResidual = std::numeric_limits<double>::infinity();
+    std::size_t bestAt = 0;
     for (std::size_t it = 1; it <= options_.maxIterations; ++it) {
         // The displacement: by an FFT, or (when the last step neither clamped nor added a
         // point) by linearity, K(k (p - tau t)) = k (u - tau r); an exact one every 20
@@ -126,58 +245,88 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
         for (std::size_t i = 0; i < n; ++i) {
             uMax = std::max(uMax, std::abs(u[i]));
             g[i] = u[i] - h_[i];
-            if (p[i] > 0.0) {
+            if (active(p[i])) {
                 gbar += g[i];
                 ++na;
             }
         }
         if (na == 0) {
-            throw ParameterError("mean pressure", "no point carries load: the solve lost its contact set");
+            if (!capped) {
+                throw ParameterError("mean pressure", "no point carries load: the solve lost its contact set");
+            }
+            // Every loaded point at the cap: the approach that leaves none of them apart.
+            gbar = -std::numeric_limits<double>::infinity();
+            for (std::size_t i = 0; i < n; ++i) {
+                if (p[i] >= H) {
+                    gbar = std::max(gbar, g[i]);
+                }
+            }
+        } else {
+            gbar /= double(na);
         }
-        gbar /= double(na);
         double G = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
             g[i] -= gbar;
-            if (p[i] > 0.0) {
+            if (active(p[i])) {
                 G += g[i] * g[i];
             }
         }
-        const double gapResidual = std::sqrt(G / double(na)) / hScale_;
+        const double gapResidual = na == 0 ? 0.0 : std::sqrt(G / double(na)) / hScale_;
+        if (capped && na > 1 && gapResidual < 0.5 * bestResidual) {
+            bestResidual = gapResidual;
+            bestAt = it;
+        } else if (capped && it > bestAt + stallLimit) {
+            ContactSolution rest = solveCapped(P, &p, options_.maxIterations - it);
+            rest.iterations += it;
+            rest.fallback = true;
+            return rest;
+        }
         const double tolerance = std::max(options_.tolerance, displacementRoundOff * uMax / hScale_);
-        if (options_.precondition) {
+        if (options_.precondition && na > 0) {
             // The preconditioned gap z = P S P g, P the projection onto the fields on the
-            // contact set with zero sum (the load stays W), S the stiffness (HalfSpaceOperator).
+            // active set with zero sum (the load stays W), S the stiffness (HalfSpaceOperator).
             for (std::size_t i = 0; i < n; ++i) {
-                z[i] = p[i] > 0.0 ? g[i] : 0.0;
+                z[i] = active(p[i]) ? g[i] : 0.0;
             }
             op_.applyStiffness(z.data(), z.data());
             double zbar = 0.0;
             for (std::size_t i = 0; i < n; ++i) {
-                if (p[i] > 0.0) {
+                if (active(p[i])) {
                     zbar += z[i];
                 }
             }
             zbar /= double(na);
             G = 0.0;
             for (std::size_t i = 0; i < n; ++i) {
-                z[i] = p[i] > 0.0 ? z[i] - zbar : 0.0;
+                z[i] = active(p[i]) ? z[i] - zbar : 0.0;
                 G += z[i] * g[i];
             }
+        } else if (options_.precondition) {
+            std::fill(z.begin(), z.end(), 0.0);
         }
         // The overlap correction turns a penetration outside the contact set into a pressure
         // there: with the plain gap as the direction, tau is a stiffness [Pa/m] and the
         // pressure -tau g (Polonsky & Keer); preconditioned, tau is a number and the pressure
         // -tau (S g_out), g_out the penetration alone, so that a patch of penetrating points
         // gets the patch's stiffness, not each point's (which would overshoot the load
-        // many times over), and at least the stiffness of the longest wavelength.
-        bool penetrating = false;
+        // many times over), and at least the stiffness of the longest wavelength. Its mirror at
+        // the cap: where the surfaces part at a point carrying H, tau (S g_open) is taken off.
         if (options_.precondition) {
+            bool penetrating = false;
+            bool opening = false;
             for (std::size_t i = 0; i < n; ++i) {
                 zOut[i] = p[i] <= 0.0 && g[i] < 0.0 ? g[i] : 0.0;
                 penetrating = penetrating || zOut[i] < 0.0;
+                if (capped) {
+                    zRel[i] = p[i] >= H && g[i] > 0.0 ? g[i] : 0.0;
+                    opening = opening || zRel[i] > 0.0;
+                }
             }
             if (penetrating) {
                 op_.applyStiffness(zOut.data(), zOut.data());
+            }
+            if (opening) {
+                op_.applyStiffness(zRel.data(), zRel.data());
             }
         }
         const std::vector<double>& direction = options_.precondition ? z : g;
@@ -185,21 +334,21 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
         // point in contact): restart the conjugate direction then instead of dividing by it.
         const double beta = delta > 0.0 && Gold > 0.0 ? delta * G / Gold : 0.0;
         for (std::size_t i = 0; i < n; ++i) {
-            t[i] = p[i] > 0.0 ? direction[i] + beta * t[i] : 0.0;
+            t[i] = active(p[i]) ? direction[i] + beta * t[i] : 0.0;
         }
         Gold = G;
         op_.apply(t.data(), r.data());
         double rbar = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
-            if (p[i] > 0.0) {
+            if (active(p[i])) {
                 rbar += r[i];
             }
         }
-        rbar /= double(na);
+        rbar /= double(std::max<std::size_t>(na, 1));
         double num = 0.0;
         double den = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
-            if (p[i] > 0.0) {
+            if (active(p[i])) {
                 num += g[i] * t[i];
                 den += (r[i] - rbar) * t[i];
             }
@@ -210,38 +359,72 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
         // from a neighbouring load starts so at light loads), the stiffness itself, so that a
         // penetration is never left standing (that "converged" to one point at any load).
         const double tauOverlap = tau > 0.0 ? tau : (options_.precondition ? 1.0 : op_.smallestStiffness());
-        // The step, the clamp p >= 0 and, where the surface penetrates a point without
-        // pressure, some pressure there (Polonsky & Keer's overlap correction).
+        // The step, the clamps 0 <= p <= H and, where the surface penetrates a point without
+        // pressure, some pressure there (Polonsky & Keer's overlap correction); where it parts
+        // from a point at H, less.
         bool clamped = false;
         bool overlap = false;
         double sum = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
             const double old = p[i];
-            if (old > 0.0) {
+            if (active(old)) {
                 const double v = old - tau * t[i];
-                clamped = clamped || v < 0.0;
-                p[i] = std::max(0.0, v);
-            } else if (g[i] < 0.0) {
+                clamped = clamped || v < 0.0 || v > H;
+                p[i] = std::min(H, std::max(0.0, v));
+            } else if (old <= 0.0 && g[i] < 0.0) {
                 p[i] = options_.precondition
                            ? tauOverlap * std::max(-zOut[i], -g[i] * op_.smallestStiffness())
                            : -tauOverlap * g[i];
+                p[i] = std::min(H, p[i]);
+                overlap = true;
+            } else if (old >= H && g[i] > 0.0) { // (capped only: nothing reaches H = inf)
+                const double give = options_.precondition
+                                        ? tauOverlap * std::max(zRel[i], g[i] * op_.smallestStiffness())
+                                        : tauOverlap * g[i];
+                p[i] = std::max(0.0, H - give);
                 overlap = true;
             }
             sum += p[i];
         }
         delta = overlap ? 0.0 : 1.0;
-        // The load: scale to the sum W.
-        const double k = sum > 0.0 ? W / sum : 1.0;
-        uCurrent = !clamped && !overlap;
-        for (std::size_t i = 0; i < n; ++i) {
-            p[i] *= k;
+        // The load: scale to the sum W (with the cap: the active points, balance()).
+        if (capped) {
+            // Without a change of sets u follows by linearity as in the elastic solve: the
+            // active points were scaled by k, those at H kept it, so with u_H = K p_H (the
+            // points at H alone; made once for each set of them),
+            // K p = k (u - tau r) + (1 - k) u_H.
+            const Balanced b = balance(p, g);
+            clamped = b.changed || clamped;
+            uCurrent = !clamped && !overlap;
+            if (clamped || overlap) {
+                uHCurrent = false;
+            }
+            if (uCurrent && b.atCap > 0 && !uHCurrent) {
+                for (std::size_t i = 0; i < n; ++i) {
+                    uH[i] = p[i] >= H ? H : 0.0;
+                }
+                op_.apply(uH.data(), uH.data());
+                uHCurrent = true;
+            }
             if (uCurrent) {
-                u[i] = k * (u[i] - tau * r[i]);
+                for (std::size_t i = 0; i < n; ++i) {
+                    u[i] = b.k * (u[i] - tau * r[i]) + (b.atCap > 0 ? (1.0 - b.k) * uH[i] : 0.0);
+                }
+            }
+        } else {
+            const double k = sum > 0.0 ? W / sum : 1.0;
+            uCurrent = !clamped && !overlap;
+            for (std::size_t i = 0; i < n; ++i) {
+                p[i] *= k;
+                if (uCurrent) {
+                    u[i] = k * (u[i] - tau * r[i]);
+                }
             }
         }
         ++sinceExact;
-        // Converged: the separation vanishes on the contact set (to the tolerance), no point
-        // was clamped and none penetrated: the complementarity conditions hold.
+        // Converged: the separation vanishes on the active set (to the tolerance), no point
+        // was clamped, none penetrated and none at the cap parts: the complementarity
+        // conditions hold.
         out.iterations = it;
         out.residual = gapResidual;
         out.tolerance = tolerance;
@@ -276,11 +459,16 @@ ContactSolution PolonskyKeer::finish(std::vector<double> p, double P, ContactSol
             ++nd;
         }
     }
-    if (nd == 0) { // all plastic: the approach makes the least separation of the free points 0
-        D = std::numeric_limits<double>::infinity();
+    if (nd == 0) {
+        // All contact points at the cap: the approach is any that leaves the free points apart
+        // (u - h + D >= 0) and the capped ones pressed (<= 0); the least, at which the nearest
+        // free point just touches: D = max over the free points of h - u. (It was the min, which
+        // left every free point's separation at 0: found by the capped solver's test, where
+        // W = 2048 H exactly on a 64^2 grid.)
+        D = -std::numeric_limits<double>::infinity();
         for (std::size_t i = 0; i < n; ++i) {
             if (p[i] == 0.0) {
-                D = std::min(D, h_[i] - u[i]);
+                D = std::max(D, h_[i] - u[i]);
             }
         }
         if (!std::isfinite(D)) {
@@ -355,7 +543,8 @@ void projectCapped(const std::vector<double>& z, double H, double W, std::vector
 }
 } // namespace
 
-ContactSolution PolonskyKeer::solveCapped(double P, const std::vector<double>* warmStart) const
+ContactSolution PolonskyKeer::solveCapped(double P, const std::vector<double>* warmStart,
+                                          std::size_t maxIterations) const
 {
     const double H = *options_.hardness;
     if (P > H) {
@@ -378,7 +567,7 @@ ContactSolution PolonskyKeer::solveCapped(double P, const std::vector<double>* w
     ContactSolution out;
     out.tolerance = options_.tolerance;
     ProgressClock clock(options_.progress, "contact", options_.tolerance, options_.progressEvery);
-    for (std::size_t it = 1; it <= options_.maxIterations; ++it) {
+    for (std::size_t it = 1; it <= maxIterations; ++it) {
         op_.apply(y.data(), grad.data()); // the gradient of 1/2 p.Kp - p.h at y: K y - h
         for (std::size_t i = 0; i < n; ++i) {
             grad[i] -= h_[i];

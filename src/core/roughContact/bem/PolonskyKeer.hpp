@@ -37,12 +37,22 @@ using SolveProgressCallback = std::function<void(const SolveProgress&)>;
 /// Seconds between two progress reports of one solve (and before the first).
 inline constexpr double progressInterval = 3.0;
 
+/// How a solve with a cap p <= H is done.
+enum class CappedMethod {
+    /// Bound-constrained conjugate gradients, preconditioned as the elastic solve (the default).
+    conjugateGradient,
+    /// Accelerated projected gradients with adaptive restart: slower (no preconditioner), kept as
+    /// an independent method the tests hold the default to.
+    projectedGradient
+};
+
 struct PolonskyKeerOptions {
     /// Convergence: the relative residual (below) at most this.
     double tolerance = 1e-8;
     std::size_t maxIterations = 20000;
     /// Perfectly plastic cap p <= H [Pa]; none when unset.
     std::optional<double> hardness;
+    CappedMethod cappedMethod = CappedMethod::conjugateGradient;
     /// Elastic solve: precondition the conjugate directions with the half-space's stiffness
     /// (HalfSpaceOperator::applyStiffness, Vollebregt 2014): the same solution in fewer
     /// iterations of one more FFT pair each (README, benchmarks).
@@ -73,6 +83,9 @@ struct ContactSolution {
     /// the displacements when that is higher (PolonskyKeer.cpp: displacementRoundOff).
     double tolerance = 0.0;
     bool converged = false;
+    /// With the cap: the conjugate gradients stalled and the projected gradients finished
+    /// (PolonskyKeer.cpp); iterations counts both.
+    bool fallback = false;
 };
 
 class PolonskyKeer {
@@ -90,7 +103,8 @@ public:
     const PolonskyKeerOptions& options() const noexcept { return options_; }
 
 private:
-    ContactSolution solveCapped(double meanPressure, const std::vector<double>* warmStart) const;
+    ContactSolution solveCapped(double meanPressure, const std::vector<double>* warmStart,
+                                std::size_t maxIterations) const;
     ContactSolution finish(std::vector<double> p, double meanPressure, ContactSolution out) const;
 
     const HalfSpaceOperator& op_;

@@ -4,6 +4,7 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
 #include "roughContact/interface/ContactInterface.hpp"
+#include "roughContact/bem/HalfSpaceOperator.hpp"
 #include "roughContact/io/ArealReader.hpp"
 #include "roughContact/io/Numbers.hpp"
 #include "roughContact/io/TableReader.hpp"
@@ -128,7 +129,9 @@ ArealSurface solvedSurface(const InterfaceSpec& spec)
         }
         std::optional<ArealSurface> total;
         for (const SurfaceSpec& s : spec.surfaces) {
-            const ArealSurface one = readAreal(s.file, s.arealOptions).detrended();
+            // As read: the detrending (BoundaryElementModel) is of the composite, and both kinds
+            // are linear, so it is the composite of the detrended maps.
+            const ArealSurface one = readAreal(s.file, s.arealOptions);
             total = total ? compositeSurface(*total, one) : one;
         }
         return *total;
@@ -202,7 +205,8 @@ BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
         loads_.push_back(checkLoad(P / Eprime_));
     }
 
-    const ArealSurface solved = surface_.detrended(); // what BoundaryElementModel solves
+    detrend_ = spec.detrend.value_or(defaultDetrend(periodic_));
+    const ArealSurface solved = surface_.detrended(detrend_); // what BoundaryElementModel solves
     KeyBytes k;
     k.u64(formatVersion);
     k.u64(solved.nx());
@@ -229,7 +233,7 @@ BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
     os.precision(6);
     os << "surface " << surface_.source() << ", " << solved.nx() << " x " << solved.ny() << " points at "
        << solved.dx() << " x " << solved.dy() << " m, " << (periodic_ ? "periodic" : "non-periodic")
-       << ", rms height " << solved.rms() << " m; E' = " << Eprime_ << " Pa; hardness ";
+       << ", detrended " << detrendName(detrend_) << ", rms height " << solved.rms() << " m; E' = " << Eprime_ << " Pa; hardness ";
     if (hardness_) {
         os << *hardness_ << " Pa";
     } else {
@@ -240,11 +244,18 @@ BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
     inputs_ = os.str();
 }
 
+double BoundaryElementTable::estimatedSeconds() const
+{
+    const HalfSpaceOperator op(surface_.nx(), surface_.ny(), surface_.dx(), surface_.dy(), Eprime_, periodic_);
+    return estimatedCurveSeconds(op, pressures_.size());
+}
+
 BoundaryElementTablePoints BoundaryElementTable::build(const Progress& progress,
                                                        const SolveProgressCallback& solveProgress) const
 {
     BoundaryElementOptions bo;
     bo.progress = solveProgress;
+    bo.detrend = detrend_;
     bo.periodic = periodic_;
     bo.hardness = hardness_;
     bo.tolerance = tolerance_;
@@ -545,7 +556,13 @@ BoundaryElementTablePoints BoundaryElementTable::loadOrBuild(const std::string& 
                 "; it is rebuilt and replaced",
             true);
     }
-    say("building the boundary-element table: " + std::to_string(pressures_.size()) + " loads; " + inputs_, false);
+    {
+        std::ostringstream os;
+        os.precision(2);
+        os << "building the boundary-element table: " << pressures_.size() << " loads, about " << estimatedSeconds()
+           << " s; " << inputs_;
+        say(os.str(), false);
+    }
     const auto start = std::chrono::steady_clock::now();
     const BoundaryElementTablePoints points = build(progress, solveProgress);
     writeFile(path, points);

@@ -74,7 +74,8 @@ public:
     explicit BoundaryElementTable(const InterfaceSpec& spec);
 
     /// SHA-256 (64 hex digits) over, as little-endian IEEE-754 binary64 and 64-bit integers:
-    /// the format version, nx, ny, dx, dy, the heights solved (after detrending), periodic,
+    /// the format version, nx, ny, dx, dy, the heights solved (after detrending as the spec's
+    /// detrend, or defaultDetrend(periodic), says), periodic,
     /// E', the hardness (or none), the loads, the contact and conductance tolerances and the
     /// preconditioning. Any change of them changes it.
     const std::string& key() const noexcept { return key_; }
@@ -84,7 +85,10 @@ public:
     const std::vector<double>& pressures() const noexcept { return pressures_; }
     const std::vector<double>& loads() const noexcept { return loads_; }
     double reducedModulus() const noexcept { return Eprime_; }
+    /// The surface as given (the composite of the maps, or the synthesized one), before detrend().
     const ArealSurface& surface() const noexcept { return surface_; }
+    /// What the solve removes from it (the spec's detrend, or defaultDetrend(periodic())).
+    Detrend detrend() const noexcept { return detrend_; }
     bool periodic() const noexcept { return periodic_; }
 
     /// Progress of build(): after each load, the loads done, their number, the point and the
@@ -98,6 +102,12 @@ public:
     /// running minimum the separation non-increasing, should a solve dip by its tolerance). ParameterError when fewer than 2 points lie below complete contact.
     /// solveProgress (optional): every progressInterval seconds of a long solve (PolonskyKeer.hpp).
     BoundaryElementTablePoints build(const Progress& progress = {}, const SolveProgressCallback& solveProgress = {}) const;
+
+    /// About how long build() takes [s], before it starts: one displacement evaluation on this
+    /// grid (an FFT pair) timed here, times the evaluations a table of these loads takes
+    /// (BoundaryElementTable.cpp: measured on periodic and non-periodic tables). A guide for a
+    /// log line, not a bound: a hard surface or a load near complete contact takes longer.
+    double estimatedSeconds() const;
 
     /// The file's text for points (17 significant digits: reading it back is exact).
     /// ParameterError for points without their separations (every build() has them).
@@ -130,6 +140,7 @@ public:
 private:
     bool periodic_; // before surface_: both are set from the spec in this order
     ArealSurface surface_;
+    Detrend detrend_ = Detrend::plane;
     double Eprime_ = 0.0;
     std::optional<double> hardness_;
     double tolerance_ = 0.0;

@@ -110,12 +110,14 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
         os << bem.surface().nx() << " x " << bem.surface().ny() << " "
            << (bem.periodic() ? "periodic" : "non-periodic") << " " << bem.surface().source();
         bemSurface_ = os.str();
-        surfaceChecksum_ = checksumHex(roughContact::surfaceChecksum(surface_, bem.surface(), bem.periodic()));
+        surfaceChecksum_ =
+            checksumHex(roughContact::surfaceChecksum(surface_, bem.surface().detrended(bem.detrend()), bem.periodic()));
         buildGap(spec);
         return;
     }
     for (const auto& [given, what] : {std::pair<bool, const char*>{spec.synthesize.has_value(), "synthesize"},
                                       {spec.periodic.has_value(), "periodic"},
+                                      {spec.detrend.has_value(), "detrend"},
                                       {spec.hardness.has_value(), "hardness"},
                                       {spec.hardnessFromYield, "hardnessFromYield"},
                                       {boundaryElementTable != nullptr, "boundary-element table"}}) {

@@ -80,6 +80,9 @@ struct InterfaceSpec {
     /// Solve an areal map as one period of a periodic surface; unset: false for a map, true
     /// for a synthesized surface (which cannot be solved non-periodic).
     std::optional<bool> periodic;
+    /// What is removed from the solved heights; unset: defaultDetrend(periodic) (the mean of a
+    /// periodic surface, the plane of a measured map: ArealSurface.hpp).
+    std::optional<Detrend> detrend;
     /// The perfectly plastic cap p <= H [Pa] of the solve, or H = 2.84 S_y of the softer side.
     std::optional<double> hardness;
     bool hardnessFromYield = false;

@@ -3,6 +3,7 @@
 #include "roughContact/io/SpectrumReader.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 #include "roughContact/io/Numbers.hpp"
 #include "roughContact/io/TableReader.hpp"
 
@@ -84,6 +85,14 @@ Spectrum readSpectrum(std::istream& in, const std::string& path, std::optional<d
         }
         f.push_back(fi);
         beta.push_back(bi);
+    }
+    if (!length && !(f.front() >= 1.0 / limits::maximumLength)) {
+        // (checked before 1/f: the reciprocal of a subnormal frequency overflows, a trap under
+        // OpenFOAM; found by fuzz.spectrumReader)
+        std::ostringstream os;
+        os << "the lowest frequency " << shortest(f.front()) << " 1/m makes the scan length 1/f beyond "
+           << limits::maximumLength << " m; give the length, or check the units";
+        throw InputError(path, table.rows.front().line, os.str());
     }
     const double L = length ? *length : 1.0 / f.front();
     return Spectrum(std::move(f), std::move(beta), L, path);

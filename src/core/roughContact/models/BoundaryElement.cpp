@@ -5,6 +5,7 @@
 #include "roughContact/Limits.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -14,16 +15,28 @@ namespace roughContact {
 
 BoundaryElementModel::BoundaryElementModel(const ArealSurface& surface, double Eprime,
                                            BoundaryElementOptions options)
-    : surface_(surface.detrended()), Eprime_(requirePositive("reduced modulus E'", Eprime)), options_(options)
+    : surface_(surface.detrended(options.detrend.value_or(defaultDetrend(options.periodic)))), Eprime_(requirePositive("reduced modulus E'", Eprime)), options_(options)
 {
     // The roughness floor of every model (Limits.hpp): a smaller rms is a unit mistake or a
     // constant map (a mask with one valid point, filled), which the solver cannot resolve.
-    if (surface_.rms() == 0.0) {
+    double mean = 0.0;
+    for (double z : surface_.heights()) {
+        mean += z;
+    }
+    mean /= double(surface_.heights().size());
+    double rms = 0.0;
+    for (double z : surface_.heights()) {
+        rms += (z - mean) * (z - mean);
+    }
+    rms = std::sqrt(rms / double(surface_.heights().size()));
+    if (rms == 0.0) {
         throw ParameterError("surface " + surface_.source(), "has zero roughness: nothing to solve");
     }
-    if (surface_.rms() < limits::minimumRoughness) {
+    if (rms < limits::minimumRoughness) {
         std::ostringstream os;
-        os << "rms height " << surface_.rms() << " m (its mean plane removed) is below " << limits::minimumRoughness
+        os << "rms height " << rms << " m (detrended: "
+           << detrendName(options_.detrend.value_or(defaultDetrend(options_.periodic))) << ") is below "
+           << limits::minimumRoughness
            << " m (a femtometre): not a physical roughness (a constant map?); check the units";
         throw ParameterError("surface " + surface_.source(), os.str());
     }
@@ -179,6 +192,27 @@ std::vector<BoundaryElementPoint> BoundaryElementModel::curve(
         }
     }
     return out;
+}
+
+// What estimatedCurveSeconds() counts a curve's solves as, in displacement evaluations (K or S,
+// each an FFT pair): the first load from a cold start, each further one warm-started, and a
+// non-periodic map's bonded patch.
+constexpr double firstLoadEvaluations = 150.0;
+constexpr double perLoadEvaluations = 100.0;
+constexpr double patchEvaluations = 60.0;
+
+double estimatedCurveSeconds(const HalfSpaceOperator& op, std::size_t loads)
+{
+    std::vector<double> p(op.size(), 1.0);
+    double best = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 3; ++k) {
+        const auto start = std::chrono::steady_clock::now();
+        op.apply(p.data(), p.data());
+        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    const double evaluations = (loads > 0 ? firstLoadEvaluations + perLoadEvaluations * double(loads - 1) : 0.0) +
+                               (op.periodic() ? 0.0 : patchEvaluations);
+    return best * evaluations;
 }
 
 ArealSurface compositeSurface(const ArealSurface& a, const ArealSurface& b)

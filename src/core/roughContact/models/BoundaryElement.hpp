@@ -30,6 +30,9 @@ struct BoundaryElementOptions {
     bool periodic = false;
     /// Perfectly plastic cap p <= H [Pa]; none when unset.
     std::optional<double> hardness;
+    /// What is removed from the heights before the solve; unset: defaultDetrend(periodic), the
+    /// mean of a periodic surface, the plane of a measured map (ArealSurface.hpp says why).
+    std::optional<Detrend> detrend;
     double tolerance = 1e-8;
     std::size_t maxIterations = 20000;
     /// Precondition the contact and conductance solves (PolonskyKeerOptions::precondition).
@@ -74,8 +77,8 @@ struct BoundaryElementPoint {
 /// Without it h_c of the map would stay below h_patch (9200 1/m for the X3P map) at any load.
 class BoundaryElementModel final : public ContactModel {
 public:
-    /// surface: the composite surface (compositeSurface() of two rough ones), detrended here;
-    /// Eprime: E' of the pair.
+    /// surface: the composite surface (compositeSurface() of two rough ones), detrended here as
+    /// options.detrend says; Eprime: E' of the pair.
     BoundaryElementModel(const ArealSurface& surface, double Eprime, BoundaryElementOptions options = {});
 
     std::string name() const override { return "boundaryElement"; }
@@ -110,6 +113,12 @@ private:
     std::unique_ptr<PolonskyKeer> solver_;
     double patchConductance_ = 0.0;
 };
+
+/// About how long a curve of `loads` loads takes [s] on op's grid, before it starts (with the
+/// bonded patch of a non-periodic map): one displacement evaluation (an FFT pair) timed here,
+/// times the evaluations such a curve takes (BoundaryElement.cpp: measured). A guide for a log
+/// line, not a bound: a hard surface or a load near complete contact takes longer.
+double estimatedCurveSeconds(const HalfSpaceOperator& op, std::size_t loads);
 
 /// The composite of two rough surfaces on the same grid, each given as its heights towards the
 /// other: the gap between them is that of their sum against a flat (Johnson 1985 §13.1), so

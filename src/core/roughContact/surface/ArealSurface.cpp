@@ -92,6 +92,62 @@ ArealSurface ArealSurface::detrended() const
     return ArealSurface(std::move(out), nx_, ny_, dx_, dy_, source_);
 }
 
+ArealSurface ArealSurface::detrended(Detrend how) const
+{
+    switch (how) {
+    case Detrend::none:
+        return *this;
+    case Detrend::mean: {
+        double mean = 0.0;
+        for (double v : z_) {
+            mean += v;
+        }
+        mean /= static_cast<double>(z_.size());
+        std::vector<double> out(z_.size());
+        for (std::size_t i = 0; i < z_.size(); ++i) {
+            out[i] = z_[i] - mean;
+        }
+        return ArealSurface(std::move(out), nx_, ny_, dx_, dy_, source_);
+    }
+    case Detrend::plane:
+        break;
+    }
+    return detrended();
+}
+
+Detrend defaultDetrend(bool periodic)
+{
+    return periodic ? Detrend::mean : Detrend::plane;
+}
+
+Detrend parseDetrend(const std::string& text, const std::string& what)
+{
+    if (text == "none") {
+        return Detrend::none;
+    }
+    if (text == "mean") {
+        return Detrend::mean;
+    }
+    if (text == "plane") {
+        return Detrend::plane;
+    }
+    throw ParameterError(what, "'" + text + "' is not a detrending: none, mean (the mean height) or plane (the "
+                                            "least-squares plane)");
+}
+
+const char* detrendName(Detrend d)
+{
+    switch (d) {
+    case Detrend::none:
+        return "none";
+    case Detrend::mean:
+        return "mean";
+    case Detrend::plane:
+        return "plane";
+    }
+    return "plane";
+}
+
 double ArealSurface::rms() const
 {
     double s = 0.0;

@@ -12,6 +12,19 @@ namespace roughContact {
 class Profile;
 class Spectrum;
 
+/// What is removed from an areal surface's heights before it is solved (BoundaryElementModel):
+/// nothing, the mean height, or the least-squares plane (mean and both tilts: form removal).
+/// A periodic surface has no trend: a plane fitted to one period of it is a property of the
+/// sample, and removing it breaks the periodicity (a step at the period's edges) and moves the
+/// summits, so a periodic solve removes the mean only (defaultDetrend). A measured map is not
+/// periodic and carries its fixture's tilt: the plane is removed.
+enum class Detrend { none, mean, plane };
+/// mean for a periodic solve, plane for a non-periodic one (the reasons above).
+Detrend defaultDetrend(bool periodic);
+/// "none", "mean" or "plane"; ParameterError naming `what` (an option, an entry) otherwise.
+Detrend parseDetrend(const std::string& text, const std::string& what);
+const char* detrendName(Detrend d);
+
 class ArealSurface {
 public:
     /// Heights [m] of nx points along x by ny along y, stored row by row: rows run along x and
@@ -37,6 +50,8 @@ public:
 
     /// The surface less its least-squares plane (mean and both tilts removed).
     ArealSurface detrended() const;
+    /// The surface less what `how` says (Detrend): itself, less its mean, or detrended().
+    ArealSurface detrended(Detrend how) const;
     /// Root-mean-square height about zero [m].
     double rms() const;
     /// Row iy (along x) and column ix (along y) as line profiles.
