@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// What the fuzz targets (tests/fuzz/fuzz*.cpp) and the corpus replay (tests/core/testFuzzCorpus.cpp)
-// check of one input: the reader either returns sound data or throws InputError/ParameterError
-// with a short, printable message. Anything else is a bug, described by the returned text.
+// What the fuzz targets (tests/fuzz/fuzz*.cpp) and the corpus replay
+// (tests/core/acceptance/testFuzzCorpus.cpp) check of one input: the reader either returns sound
+// data or throws InputError/ParameterError with a short, printable message. Anything else is a
+// bug, described by the returned text.
 //
 // An input is the file's content after a few option bytes, so that one input also chooses the
 // reader's options:

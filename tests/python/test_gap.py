@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """The gap beside the contact from Python: gases, h_g, h_r, the separation, ContactInterface's gap.
 
-Independent numbers (as tests/core/testFaceCoupling.cpp): air at 300 K and 1 atm has k_g =
-0.0262 W/(m K) and, with the default accommodation 0.9 on both sides, M = [2 (2 - 0.9)/0.9]
+Independent numbers (as tests/core/interface/testFaceCoupling.cpp): air at 300 K and 1 atm has
+k_g = 0.0262 W/(m K) and, with the default accommodation 0.9 on both sides, M = [2 (2 - 0.9)/0.9]
 [2 (1.4)/2.4] 61.52 nm/0.712 = 246.4 nm; at Y = 10 um, h_g = 0.0262/10.2464e-6 = 2557.0 W/(m^2 K).
 Two grey plates at 300 K with e = 0.5: h_r = 4 sigma_SB T^3/3 = 2.0413 W/(m^2 K). Tolerance
 1e-3 relative: the constants are written here to four or five digits.

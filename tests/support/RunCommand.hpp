@@ -2,6 +2,8 @@
 // Run a shell command and capture its stdout, stderr and exit status (for the CLI tests).
 #pragma once
 
+#include "FileContents.hpp" // slurp
+
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -18,14 +20,6 @@ struct CommandResult {
     std::string out;
     std::string err;
 };
-
-inline std::string slurp(const std::filesystem::path& p)
-{
-    std::ifstream in(p);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
 
 /// A fresh directory under the system's temp directory, removed by the destructor.
 class TempDir {

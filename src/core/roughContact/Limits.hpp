@@ -4,7 +4,7 @@
 // infinity) or the input has no physical meaning; either way the core refuses it with a
 // ParameterError or InputError that names the input and the range, before any large
 // allocation. Inside them every model runs with floating-point traps on (as OpenFOAM runs):
-// tests/core/testExtremeInputs.cpp holds each model to that at the corners of these ranges.
+// tests/core/acceptance/testExtremeInputs.cpp holds each model to that at the corners of these ranges.
 #pragma once
 
 #include <cmath>

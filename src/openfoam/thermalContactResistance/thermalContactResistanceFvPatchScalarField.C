@@ -674,6 +674,7 @@ thermalContactResistanceFvPatchScalarField
     checkedNeighbour_(false),
     warnedNoContact_(false),
     warnedBeyondTable_(false),
+    warnedInput_(0),
     warnedContactChanged_(false)
 {
     this->refValue() = 0.0;
@@ -716,6 +717,7 @@ thermalContactResistanceFvPatchScalarField
     checkedNeighbour_(false),
     warnedNoContact_(false),
     warnedBeyondTable_(false),
+    warnedInput_(0),
     warnedContactChanged_(false)
 {
     checkPatch();
@@ -777,6 +779,7 @@ thermalContactResistanceFvPatchScalarField
     checkedNeighbour_(false),
     warnedNoContact_(ptf.warnedNoContact_),
     warnedBeyondTable_(ptf.warnedBeyondTable_),
+    warnedInput_(ptf.warnedInput_),
     warnedContactChanged_(ptf.warnedContactChanged_)
 {
     if (ptf.pressure_.valid())
@@ -828,6 +831,7 @@ thermalContactResistanceFvPatchScalarField
     checkedNeighbour_(ptf.checkedNeighbour_),
     warnedNoContact_(ptf.warnedNoContact_),
     warnedBeyondTable_(ptf.warnedBeyondTable_),
+    warnedInput_(ptf.warnedInput_),
     warnedContactChanged_(ptf.warnedContactChanged_)
 {}
 
@@ -870,6 +874,7 @@ thermalContactResistanceFvPatchScalarField
     checkedNeighbour_(ptf.checkedNeighbour_),
     warnedNoContact_(ptf.warnedNoContact_),
     warnedBeyondTable_(ptf.warnedBeyondTable_),
+    warnedInput_(ptf.warnedInput_),
     warnedContactChanged_(ptf.warnedContactChanged_)
 {}
 
@@ -1207,6 +1212,36 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
                 << " Pa): h is held at the table's last value"
                 << " there. Raise maxPressure." << endl;
             warnedBeyondTable_ = true;
+        }
+        // Input that is probably a mistake: the core counts it, says it in
+        // words; here the sums over processors and one warning of each kind.
+        roughContact::CouplingDiagnostics d;
+        d.add(out);
+        scalar belowTable(d.belowTable);
+        scalar mismatch(d.pressureMismatch);
+        scalar firstTouch(d.apartAtFirstTouch);
+        reduce(belowTable, sumOp<scalar>());
+        reduce(d.belowTablePressureSum, sumOp<scalar>());
+        reduce(mismatch, sumOp<scalar>());
+        reduce(d.largestPressureMismatch, maxOp<scalar>());
+        reduce(firstTouch, sumOp<scalar>());
+        d.belowTable = std::size_t(belowTable);
+        d.pressureMismatch = std::size_t(mismatch);
+        d.apartAtFirstTouch = std::size_t(firstTouch);
+        const std::string messages[3] =
+        {
+            d.belowTableMessage(*interface_),
+            d.pressureMismatchMessage(),
+            d.apartAtFirstTouchMessage(*interface_)
+        };
+        for (label k = 0; k < 3; ++k)
+        {
+            if (!messages[k].empty() && !(warnedInput_ & (1 << k)))
+            {
+                WarningInFunction
+                    << who().c_str() << ": " << messages[k].c_str() << endl;
+                warnedInput_ |= (1 << k);
+            }
         }
     }
     this->refGrad() = 0.0;

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace roughContact {
 
@@ -78,6 +79,12 @@ void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCac
     // ContactInterface::heldAtTableEnd(P), its constant part hoisted.
     const bool tableCut = table.end() == ContactTable::End::maxPressure;
     const double tableEnd = iface.tableEnd();
+    const double tableStart = table.pressures().front();
+    out.belowTable = 0;
+    out.belowTablePressureSum = 0.0;
+    out.pressureMismatch = 0;
+    out.largestPressureMismatch = 0.0;
+    out.apartAtFirstTouch = 0;
     for (std::size_t i = 0; i < n; ++i) {
         try {
             const double P = requireFinite("nominal pressure", nominalPressure(in.pressure[i], in.pressureNbr[i]));
@@ -113,6 +120,23 @@ void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCac
                 ++out.beyondTable;
             } else {
                 state = FaceState::partial;
+            }
+            // Input that is probably a mistake (counted; the caller warns).
+            if (state == FaceState::partial && P < tableStart) {
+                ++out.belowTable;
+                out.belowTablePressureSum += P;
+            }
+            {
+                const double a = in.pressure[i];
+                const double b = in.pressureNbr[i];
+                const double larger = std::max(std::abs(a), std::abs(b));
+                if (larger > 0.0 && std::abs(a - b) > pressureMismatchTolerance * larger) {
+                    ++out.pressureMismatch;
+                    out.largestPressureMismatch = std::max(out.largestPressureMismatch, std::abs(a - b) / larger);
+                }
+            }
+            if (state == FaceState::apart && gap && gap->hasGas() && !in.gapWidth) {
+                ++out.apartAtFirstTouch;
             }
             const double hc = ks * cache.conductancePerConductivity[i];
             double hg = 0.0;
@@ -156,6 +180,11 @@ void coupleConstant(double h, const CouplingInputs& in, CouplingOutputs& out)
     out.resize(n);
     out.apart = 0;
     out.beyondTable = 0;
+    out.belowTable = 0;
+    out.belowTablePressureSum = 0.0;
+    out.pressureMismatch = 0;
+    out.largestPressureMismatch = 0.0;
+    out.apartAtFirstTouch = 0;
     for (std::size_t i = 0; i < n; ++i) {
         try {
             const double kDelta =
@@ -174,6 +203,67 @@ void coupleConstant(double h, const CouplingInputs& in, CouplingOutputs& out)
             throw FaceError(i, e);
         }
     }
+}
+
+void CouplingDiagnostics::add(const CouplingOutputs& out)
+{
+    belowTable += out.belowTable;
+    belowTablePressureSum += out.belowTablePressureSum;
+    pressureMismatch += out.pressureMismatch;
+    largestPressureMismatch = std::max(largestPressureMismatch, out.largestPressureMismatch);
+    apartAtFirstTouch += out.apartAtFirstTouch;
+}
+
+std::string CouplingDiagnostics::belowTableMessage(const ContactInterface& iface) const
+{
+    if (belowTable == 0) {
+        return "";
+    }
+    const double first = iface.table().pressures().front();
+    const double mean = belowTablePressureSum / double(belowTable);
+    std::ostringstream os;
+    os << belowTable << " face" << (belowTable == 1 ? " has a pressure" : "s have pressures")
+       << " below the table's first point ("
+       << first << " Pa; their mean " << mean << " Pa): A_r/A_n and h are extrapolated there.";
+    if (mean * 1e6 >= first && mean * 1e6 <= iface.tableEnd()) {
+        os << " A pressure given in MPa? " << mean << " MPa would be " << mean * 1e6
+           << " Pa, inside the table: give pressures in Pa.";
+    } else if (mean * 1e3 >= first && mean * 1e3 <= iface.tableEnd()) {
+        os << " A pressure given in kPa? Give pressures in Pa.";
+    } else {
+        os << " Lower minPressure if such pressures are meant.";
+    }
+    return os.str();
+}
+
+std::string CouplingDiagnostics::pressureMismatchMessage() const
+{
+    if (pressureMismatch == 0) {
+        return "";
+    }
+    std::ostringstream os;
+    os.precision(3);
+    os << pressureMismatch << " face" << (pressureMismatch == 1 ? "" : "s")
+       << ": the two sides' pressures differ by up to " << 100.0 * largestPressureMismatch << " % (more than "
+       << 100.0 * pressureMismatchTolerance
+       << " % of the larger); their mean is used. Check that both sides give the same pressure (pressure, "
+          "pressureField: the same field, units and sign).";
+    return os.str();
+}
+
+std::string CouplingDiagnostics::apartAtFirstTouchMessage(const ContactInterface& iface) const
+{
+    if (apartAtFirstTouch == 0) {
+        return "";
+    }
+    std::ostringstream os;
+    os << apartAtFirstTouch << " face" << (apartAtFirstTouch == 1 ? " is" : "s are")
+       << " apart (pressure <= 0) with a gas in the gap and no gap width given: their separation is taken as "
+          "the interface's at first touch ("
+       << iface.gap().firstTouchSeparation()
+       << " m), so the gas conducts as if the surfaces just touched. Give the width of faces that are apart "
+          "(gap or gapField).";
+    return os.str();
 }
 
 void CouplingSummary::add(const CouplingOutputs& out, const double* magSf, const double* shown)

@@ -101,8 +101,42 @@ struct CouplingOutputs {
     std::vector<double> refValue;             ///< the mixed condition's reference temperature [K]
     std::size_t apart = 0;                    ///< faces apart (couple(); 0 in coupleConstant)
     std::size_t beyondTable = 0;              ///< faces beyond the table (couple())
+    /// Input that is probably a mistake (couple(); CouplingDiagnostics turns them into words):
+    /// faces in contact below the table's first pressure (their values extrapolated), and the
+    /// sum of their pressures [Pa];
+    std::size_t belowTable = 0;
+    double belowTablePressureSum = 0.0;
+    /// faces whose two sides give pressures differing by more than pressureMismatchTolerance of
+    /// the larger (the mean is used), and the largest such relative difference;
+    std::size_t pressureMismatch = 0;
+    double largestPressureMismatch = 0.0;
+    /// faces apart with a gas in the gap and no gap width given (their separation is then the
+    /// interface's at first touch, which may not be what is meant).
+    std::size_t apartAtFirstTouch = 0;
 
     void resize(std::size_t n);
+};
+
+/// Two sides' pressures further apart than this, relative to the larger, are reported
+/// (CouplingOutputs::pressureMismatch): a side that gives another pressure field than the other
+/// (a unit, a sign, a field name) would otherwise be averaged away without a word. A mapped
+/// field interpolated onto the other side's faces differs by far less on a conforming mesh.
+inline constexpr double pressureMismatchTolerance = 0.05;
+
+/// The warnings a boundary condition gives for CouplingOutputs' counts, summed over the faces
+/// of every processor: one message each (empty when the count is 0), naming what was seen, the
+/// likely cause and what to do. ContactInterface: the table's range and first-touch separation.
+struct CouplingDiagnostics {
+    std::size_t belowTable = 0;
+    double belowTablePressureSum = 0.0;
+    std::size_t pressureMismatch = 0;
+    double largestPressureMismatch = 0.0;
+    std::size_t apartAtFirstTouch = 0;
+    /// Adds one processor's counts.
+    void add(const CouplingOutputs& out);
+    std::string belowTableMessage(const ContactInterface& iface) const;
+    std::string pressureMismatchMessage() const;
+    std::string apartAtFirstTouchMessage(const ContactInterface& iface) const;
 };
 
 /// Per-face memory of couple(): each face's last pressure and its table values, re-used while

@@ -22,8 +22,9 @@
 // h_rms^2 = (1/pi) integral_0^inf C^1D(q) dq with q = 2 pi f in rad/m. Their C^1D(q) and
 // C^iso(q) are then numerically our C1(f) and C2(f), and (1) in their variables reads
 // C^1D(q_x) = (1/(2 pi)) integral C^iso(sqrt(q_x^2 + q_y^2)) dq_y; integrated over q_x it turns
-// one of their two normalisations into the other, so (1) and theirs agree. tests/core/testArealSynthesis.cpp
-// checks (2) against (1) numerically and against the closed form of a power law. (1) and (2) hold for a C2
+// one of their two normalisations into the other, so (1) and theirs agree.
+// tests/core/surface/testArealSynthesis.cpp checks (2) against (1) numerically and against the
+// closed form of a power law. (1) and (2) hold for a C2
 // that is zero beyond some q only if C1 is continued by its jump: a C1 that ends at f_c with value C1(f_c)
 // contributes C1(f_c) / (pi sqrt(f_c^2 - q^2)) to (2), an integrable pile-up of 2-D power just inside f_c.
 // Also used: the power outside a radius r, swapping the integrals of (2),

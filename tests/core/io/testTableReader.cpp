@@ -4,6 +4,7 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/io/TableReader.hpp"
 
+#include "InputErrors.hpp"
 #include "TempDirTest.hpp"
 
 #include <gtest/gtest.h>
@@ -24,27 +25,14 @@ namespace {
 /// A fresh directory per test (tests/support/TempDirTest.hpp).
 class TableReaderTest : public roughContactTest::TempDirTest {};
 
+// The error names the file and the line as "FILE:LINE: " and its message contains text (every
+// line checked here is >= 1).
+using roughContactTest::expectLocated; // tests/support/InputErrors.hpp
+
 /// The InputError that readTable(path) throws; fails the test when it throws none.
 InputError tableError(const std::string& path, const TableReadOptions& options = {})
 {
-    try {
-        readTable(path, options);
-    } catch (const InputError& e) {
-        return e;
-    }
-    ADD_FAILURE() << path << " was read without an error";
-    return InputError("", 0, "");
-}
-
-/// The error names the file and the line as "FILE:LINE: " and its message contains text.
-void expectLocated(const InputError& e, const std::string& path, long line,
-                   const std::string& text)
-{
-    EXPECT_EQ(e.file(), path);
-    EXPECT_EQ(e.line(), line);
-    const std::string what = e.what();
-    EXPECT_EQ(what.rfind(path + ":" + std::to_string(line) + ": ", 0), 0u) << what;
-    EXPECT_NE(what.find(text), std::string::npos) << what;
+    return roughContactTest::thrownInputError([&] { readTable(path, options); }, path);
 }
 
 using Fields = std::vector<std::string>;

@@ -13,6 +13,8 @@
 #include <boost/math/quadrature/exp_sinh.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
 
+#include "ClosedForms.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -33,10 +35,10 @@ constexpr double Sy = 0.2e9;
 // Seed Table 1's summit statistics (sigma read as sigma_s); alpha is not used by the model.
 const SummitParameters table1{3.88e11, 9.299e-6, 0.115e-6, 5.0};
 
-double phi(double s)
-{
-    return std::exp(-0.5 * s * s) / std::sqrt(2.0 * pi);
-}
+// The Gaussian density of the summit heights phi(s), and F_1(h) = phi(h) - h Q(h) in closed form,
+// Q(h) = erfc(h/sqrt 2)/2 (docs/theory.md §4.2): tests/support/ClosedForms.hpp.
+constexpr auto phi = roughContactTest::closedForm::gaussianDensity;
+constexpr auto F1closed = roughContactTest::closedForm::gaussianF1;
 
 // F_n(h) = int_h^inf (s-h)^n phi(s) ds = int_0^inf t^n phi(t+h) dt by exp-sinh quadrature
 // (tolerance 1e-13 relative; its own accuracy is checked against F_1's closed form below).
@@ -44,12 +46,6 @@ double Fn(double n, double h)
 {
     boost::math::quadrature::exp_sinh<double> q;
     return q.integrate([&](double t) { return std::pow(t, n) * phi(t + h); }, 1e-13);
-}
-
-// F_1(h) = phi(h) - h Q(h), Q(h) = erfc(h/sqrt 2)/2 (docs/theory.md §4.2).
-double F1closed(double h)
-{
-    return phi(h) - h * 0.5 * std::erfc(h / std::sqrt(2.0));
 }
 
 const std::vector<double> separations{-3.0, -1.0, -0.3, 0.0, 0.5, 1.2, 2.0, 3.5, 5.0, 7.0};

@@ -5,6 +5,7 @@
 #include "roughContact/io/MatrixReader.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 
+#include "InputErrors.hpp"
 #include "TempDirTest.hpp"
 
 #include <gtest/gtest.h>
@@ -51,19 +52,9 @@ MatrixReadOptions spacing(double dx)
     return o;
 }
 
-/// Runs f, which must throw InputError naming file and line; returns its message.
-std::string inputError(const std::function<void()>& f, const std::string& file, long line)
-{
-    try {
-        f();
-    } catch (const InputError& e) {
-        EXPECT_EQ(e.file(), file);
-        EXPECT_EQ(e.line(), line) << e.what();
-        return e.message();
-    }
-    ADD_FAILURE() << "no InputError";
-    return "";
-}
+// inputErrorMessage(f, file, line): runs f, which must throw InputError naming file and line;
+// returns its message (tests/support/InputErrors.hpp).
+using roughContactTest::inputErrorMessage;
 
 TEST_F(MatrixReaderTest, readsBackExactlyRowsAlongY)
 {
@@ -127,7 +118,7 @@ TEST_F(MatrixReaderTest, raggedRowNamesItsLine)
     std::string text = "# comment\n" + matrix(8, 8); // data rows on lines 2..9
     text += "1 2 3 4 5 6 7\n";                       // line 10: one short
     const std::string path = write("ragged.txt", text);
-    const std::string m = inputError([&] { readMatrix(path, spacing(1e-6)); }, path, 10);
+    const std::string m = inputErrorMessage([&] { readMatrix(path, spacing(1e-6)); }, path, 10);
     EXPECT_NE(m.find("7 columns where line 2 has 8"), std::string::npos) << m;
 }
 
@@ -135,11 +126,11 @@ TEST_F(MatrixReaderTest, nonNumericFieldNamesItsLine)
 {
     std::string text = matrix(8, 3) + "1 2 3 x4 5 6 7 8\n" + matrix(8, 5); // line 4
     const std::string path = write("text.txt", text);
-    const std::string m = inputError([&] { readMatrix(path, spacing(1e-6)); }, path, 4);
+    const std::string m = inputErrorMessage([&] { readMatrix(path, spacing(1e-6)); }, path, 4);
     EXPECT_NE(m.find("'x4'"), std::string::npos) << m;
     // A first line of text is no header in a matrix.
     const std::string headed = write("headed.txt", "\n  z0 z1 z2\n" + matrix(8, 8));
-    const std::string h = inputError([&] { readMatrix(headed, spacing(1e-6)); }, headed, 2);
+    const std::string h = inputErrorMessage([&] { readMatrix(headed, spacing(1e-6)); }, headed, 2);
     EXPECT_NE(h.find("'z0'"), std::string::npos) << h;
 }
 
@@ -148,7 +139,7 @@ TEST_F(MatrixReaderTest, nanAndInfinityNameTheirLine)
     for (const char* bad : {"nan", "inf", "-inf", "1e999"}) {
         const std::string text = matrix(8, 5) + "1 2 3 4 " + std::string(bad) + " 6 7 8\n" + matrix(8, 3);
         const std::string path = write("bad.txt", text);
-        const std::string m = inputError([&] { readMatrix(path, spacing(1e-6)); }, path, 6);
+        const std::string m = inputErrorMessage([&] { readMatrix(path, spacing(1e-6)); }, path, 6);
         EXPECT_NE(m.find("not a finite number"), std::string::npos) << bad << ": " << m;
     }
 }
@@ -158,7 +149,7 @@ TEST_F(MatrixReaderTest, fewerThanEightByEightPoints)
     for (const auto& size : {std::pair<int, int>{7, 8}, {8, 7}, {0, 0}}) {
         const std::string path = write(
             "small.txt", matrix(static_cast<std::size_t>(size.first), static_cast<std::size_t>(size.second)));
-        const std::string m = inputError([&] { readMatrix(path, spacing(1e-6)); }, path, 0);
+        const std::string m = inputErrorMessage([&] { readMatrix(path, spacing(1e-6)); }, path, 0);
         EXPECT_NE(m.find("at least 8 x 8"), std::string::npos) << m;
     }
     EXPECT_NO_THROW(readMatrix(write("eight.txt", matrix(8, 8)), spacing(1e-6)));
@@ -167,13 +158,13 @@ TEST_F(MatrixReaderTest, fewerThanEightByEightPoints)
 TEST_F(MatrixReaderTest, heightBeyondRangeNamesItsLine)
 {
     const std::string path = write("tall.txt", matrix(8, 2) + "1 2 3 4 5 6 7 2e3\n" + matrix(8, 6));
-    inputError([&] { readMatrix(path, spacing(1e-6)); }, path, 3);
+    inputErrorMessage([&] { readMatrix(path, spacing(1e-6)); }, path, 3);
 }
 
 TEST_F(MatrixReaderTest, missingFileNamesIt)
 {
     const std::string path = (dir_ / "none.txt").string();
-    inputError([&] { readMatrix(path, spacing(1e-6)); }, path, 0);
+    inputErrorMessage([&] { readMatrix(path, spacing(1e-6)); }, path, 0);
 }
 
 } // namespace

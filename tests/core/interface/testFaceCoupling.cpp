@@ -533,3 +533,65 @@ TEST(FaceCoupling, TheGapTakesTheModelsSeparation)
     EXPECT_FALSE(byCorrelation.gap().separationFromModel());
     EXPECT_NE(byCorrelation.gap().separation(1e6), ci.gap().separation(1e6));
 }
+
+TEST(FaceCoupling, InputThatIsProbablyAMistakeIsCountedAndSaid)
+{
+    // Issue 22, item 3: a pressure typed in MPa ran with A_r/A_n = 2.7e-8 below the table's first
+    // point without a word; two sides' pressures 50 % apart were averaged silently; faces apart
+    // with a gas and no width took the first-touch separation (helium: 53 kW/m^2/K for slabs
+    // "apart"). couple() counts each; CouplingDiagnostics says what and why.
+    const ContactInterface& ci = interface();
+    const double first = ci.table().pressures().front();
+    Side s(5);
+    s.P = {40.0, 70.0, 1e6, 1e6, 2e6};    // 40 and 70 "MPa"; a matching face; two apart by 50 %
+    s.Pnbr = {40.0, 70.0, 1e6, 1.5e6, 1e6};
+    ASSERT_LT(70.0, first);
+    CouplingCache cache;
+    CouplingOutputs out;
+    couple(ci, s.inputs(), cache, out);
+    EXPECT_EQ(out.belowTable, 2u);
+    EXPECT_EQ(out.belowTablePressureSum, 110.0);
+    EXPECT_EQ(out.pressureMismatch, 2u);
+    EXPECT_DOUBLE_EQ(out.largestPressureMismatch, 0.5);
+    EXPECT_EQ(out.apartAtFirstTouch, 0u); // no gap
+    CouplingDiagnostics d;
+    d.add(out);
+    d.add(out); // a second processor's faces
+    EXPECT_EQ(d.belowTable, 4u);
+    const std::string below = d.belowTableMessage(ci);
+    EXPECT_NE(below.find("4 faces have pressures below the table's first point"), std::string::npos) << below;
+    EXPECT_NE(below.find("A pressure given in MPa? 55 MPa would be 5.5e+07 Pa"), std::string::npos) << below;
+    const std::string mismatch = d.pressureMismatchMessage();
+    EXPECT_NE(mismatch.find("4 faces: the two sides' pressures differ by up to 50 % (more than 5 %"), std::string::npos)
+        << mismatch;
+    EXPECT_EQ(CouplingDiagnostics{}.belowTableMessage(ci), "");
+    EXPECT_EQ(CouplingDiagnostics{}.pressureMismatchMessage(), "");
+    // Within the tolerance: not counted.
+    Side t(2);
+    t.P = {1e6, 1e6};
+    t.Pnbr = {1.04e6, 0.97e6};
+    couple(ci, t.inputs(), cache, out);
+    EXPECT_EQ(out.pressureMismatch, 0u);
+    EXPECT_EQ(out.belowTable, 0u);
+
+    // Apart with a gas and no width: counted; with widths given, not.
+    const ContactInterface gas(withAirAndRadiation());
+    Side a(3);
+    a.P = {0.0, -1e5, 1e6};
+    a.Pnbr = a.P;
+    CouplingCache gasCache;
+    couple(gas, a.inputs(), gasCache, out);
+    EXPECT_EQ(out.apartAtFirstTouch, 2u);
+    CouplingDiagnostics g;
+    g.add(out);
+    const std::string firstTouch = g.apartAtFirstTouchMessage(gas);
+    EXPECT_NE(firstTouch.find("2 faces are apart (pressure <= 0) with a gas in the gap and no gap width given"),
+              std::string::npos)
+        << firstTouch;
+    std::vector<double> width = {1e-5, 1e-5, 0.0};
+    CouplingInputs in = a.inputs();
+    in.gapWidth = width.data();
+    in.gapWidthNbr = width.data();
+    couple(gas, in, gasCache, out);
+    EXPECT_EQ(out.apartAtFirstTouch, 0u);
+}

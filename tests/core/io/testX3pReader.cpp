@@ -7,6 +7,8 @@
 #include "roughContact/io/X3pReader.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 
+#include "FileContents.hpp"
+#include "InputErrors.hpp"
 #include "TempDirTest.hpp"
 
 #include <gtest/gtest.h>
@@ -206,24 +208,11 @@ protected:
     }
 };
 
-std::string readFile(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using roughContactTest::slurp; // tests/support/FileContents.hpp
 
-/// Runs f, which must throw InputError naming file; returns its message.
-std::string inputError(const std::function<void()>& f, const std::string& file)
-{
-    try {
-        f();
-    } catch (const InputError& e) {
-        EXPECT_EQ(e.file(), file);
-        return e.message();
-    }
-    ADD_FAILURE() << "no InputError";
-    return "";
-}
+// inputErrorMessage(f, file): runs f, which must throw InputError naming file; returns its
+// message (tests/support/InputErrors.hpp).
+using roughContactTest::inputErrorMessage;
 
 bool has(const std::string& text, const std::string& part)
 {
@@ -277,7 +266,7 @@ TEST_F(X3pReaderTest, inlineDataList)
     // One Datum short.
     const std::string xml = mainXml(f);
     const std::string path = x3p("short.x3p", f, without(xml, "Datum"));
-    EXPECT_TRUE(has(inputError([&] { readX3p(path); }, path), "has 79 Datum elements"));
+    EXPECT_TRUE(has(inputErrorMessage([&] { readX3p(path); }, path), "has 79 Datum elements"));
 }
 
 TEST_F(X3pReaderTest, wrongChecksum)
@@ -285,7 +274,7 @@ TEST_F(X3pReaderTest, wrongChecksum)
     X3pFile f = sample('D');
     f.md5 = md5Hex("something else");
     const std::string path = x3p("md5.x3p", f);
-    const std::string m = inputError([&] { readX3p(path); }, path);
+    const std::string m = inputErrorMessage([&] { readX3p(path); }, path);
     EXPECT_TRUE(has(m, "checksum mismatch")) << m;
     EXPECT_TRUE(has(m, "bin/data.bin")) << m;
     // The checksum in lower case is the same checksum.
@@ -306,28 +295,28 @@ TEST_F(X3pReaderTest, missingElementIsNamed)
         {"Record1", "Record1"}};
     for (const auto& c : cases) {
         const std::string path = x3p("missing.x3p", f, without(xml, c.first));
-        const std::string m = inputError([&] { readX3p(path); }, path);
+        const std::string m = inputErrorMessage([&] { readX3p(path); }, path);
         EXPECT_TRUE(has(m, "no " + c.second + " element")) << c.first << ": " << m;
     }
     const std::string noData = x3p("nodata.x3p", f, without(xml, "DataLink"));
-    EXPECT_TRUE(has(inputError([&] { readX3p(noData); }, noData), "neither Record3/DataLink nor"));
+    EXPECT_TRUE(has(inputErrorMessage([&] { readX3p(noData); }, noData), "neither Record3/DataLink nor"));
     // No main.xml at all, or no data file.
     const std::string noXml = zipFile("noxml.x3p", {{"bin/data.bin", dataBin(f)}});
-    EXPECT_TRUE(has(inputError([&] { readX3p(noXml); }, noXml), "no main.xml"));
+    EXPECT_TRUE(has(inputErrorMessage([&] { readX3p(noXml); }, noXml), "no main.xml"));
     const std::string noBin = zipFile("nobin.x3p", {{"main.xml", xml}});
-    EXPECT_TRUE(has(inputError([&] { readX3p(noBin); }, noBin), "no bin/data.bin"));
+    EXPECT_TRUE(has(inputErrorMessage([&] { readX3p(noBin); }, noBin), "no bin/data.bin"));
 }
 
 TEST_F(X3pReaderTest, truncatedOrCorruptArchive)
 {
-    const std::string good = readFile(x3p("good.x3p", sample('D'), "", true));
+    const std::string good = slurp(x3p("good.x3p", sample('D'), "", true));
     for (std::size_t keep : {good.size() / 2, good.size() - 10, std::size_t(1)}) {
         const std::string path = write("cut.x3p", good.substr(0, keep));
-        const std::string m = inputError([&] { readX3p(path); }, path);
+        const std::string m = inputErrorMessage([&] { readX3p(path); }, path);
         EXPECT_TRUE(has(m, "not a readable zip archive")) << keep << ": " << m;
     }
     const std::string empty = write("empty.x3p", "");
-    EXPECT_TRUE(has(inputError([&] { readX3p(empty); }, empty), "the file is empty"));
+    EXPECT_TRUE(has(inputErrorMessage([&] { readX3p(empty); }, empty), "the file is empty"));
     // A flipped byte inside the (stored) point data: the zip's CRC catches it.
     const std::string data = dataBin(sample('D'));
     std::string corrupt = good;
@@ -335,10 +324,10 @@ TEST_F(X3pReaderTest, truncatedOrCorruptArchive)
     ASSERT_NE(at, std::string::npos);
     corrupt[at + 100] = static_cast<char>(corrupt[at + 100] ^ 0x10);
     const std::string path = write("crc.x3p", corrupt);
-    const std::string m = inputError([&] { readX3p(path); }, path);
+    const std::string m = inputErrorMessage([&] { readX3p(path); }, path);
     EXPECT_TRUE(has(m, "corrupt")) << m;
     const std::string text = write("text.x3p", "not a zip at all\n");
-    EXPECT_TRUE(has(inputError([&] { readX3p(text); }, text), "not a readable zip archive"));
+    EXPECT_TRUE(has(inputErrorMessage([&] { readX3p(text); }, text), "not a readable zip archive"));
 }
 
 TEST_F(X3pReaderTest, sizesThatDisagreeWithTheData)
@@ -346,13 +335,13 @@ TEST_F(X3pReaderTest, sizesThatDisagreeWithTheData)
     X3pFile f = sample('F');
     f.raw.pop_back();
     const std::string path = x3p("size.x3p", f);
-    const std::string m = inputError([&] { readX3p(path); }, path);
+    const std::string m = inputErrorMessage([&] { readX3p(path); }, path);
     EXPECT_TRUE(has(m, "has 316 bytes")) << m;
     EXPECT_TRUE(has(m, "need 320")) << m;
     X3pFile big = sample('I');
     big.raw.push_back(1.0);
     const std::string path2 = x3p("big.x3p", big);
-    EXPECT_TRUE(has(inputError([&] { readX3p(path2); }, path2), "at most 160"));
+    EXPECT_TRUE(has(inputErrorMessage([&] { readX3p(path2); }, path2), "at most 160"));
 }
 
 TEST_F(X3pReaderTest, unsupportedAxesAndLayouts)
@@ -360,26 +349,26 @@ TEST_F(X3pReaderTest, unsupportedAxesAndLayouts)
     X3pFile absolute = sample('D');
     absolute.axisTypeX = "A";
     const std::string a = x3p("absolute.x3p", absolute);
-    EXPECT_TRUE(has(inputError([&] { readX3p(a); }, a), "Record1/Axes/CX/AxisType is A"));
+    EXPECT_TRUE(has(inputErrorMessage([&] { readX3p(a); }, a), "Record1/Axes/CX/AxisType is A"));
     X3pFile layers = sample('D');
     layers.sizeZ = "2";
     const std::string z = x3p("layers.x3p", layers);
-    EXPECT_TRUE(has(inputError([&] { readX3p(z); }, z), "SizeZ is 2"));
+    EXPECT_TRUE(has(inputErrorMessage([&] { readX3p(z); }, z), "SizeZ is 2"));
     X3pFile badType = sample('D');
     const std::string xml = mainXml(badType);
     const std::string cz = "<CZ><AxisType>A</AxisType><DataType>D</DataType>";
     std::string xmlQ = xml;
     xmlQ.replace(xml.find(cz), cz.size(), "<CZ><AxisType>A</AxisType><DataType>Q</DataType>");
     const std::string q = x3p("type.x3p", badType, xmlQ);
-    EXPECT_TRUE(has(inputError([&] { readX3p(q); }, q), "CZ/DataType is 'Q'"));
+    EXPECT_TRUE(has(inputErrorMessage([&] { readX3p(q); }, q), "CZ/DataType is 'Q'"));
     X3pFile small = sample('D');
     small.nx = 7;
     small.raw.resize(70);
     const std::string s = x3p("small.x3p", small);
-    EXPECT_TRUE(has(inputError([&] { readX3p(s); }, s), "at least 8 x 8"));
+    EXPECT_TRUE(has(inputErrorMessage([&] { readX3p(s); }, s), "at least 8 x 8"));
     const std::string broken =
         x3p("xml.x3p", sample('D'), "<?xml version=\"1.0\"?>\n<p:ISO5436_2>\n<Record1>\n");
-    EXPECT_TRUE(has(inputError([&] { readX3p(broken); }, broken), "main.xml line"));
+    EXPECT_TRUE(has(inputErrorMessage([&] { readX3p(broken); }, broken), "main.xml line"));
 }
 
 /// The mean of z at the given (ix, iy) points of an 8-wide map.
@@ -408,7 +397,7 @@ TEST_F(X3pReaderTest, invalidPointsAreAnErrorUnlessFilled)
         }
     }
     const std::string path = x3p("nan.x3p", f);
-    const std::string m = inputError([&] { readX3p(path); }, path);
+    const std::string m = inputErrorMessage([&] { readX3p(path); }, path);
     EXPECT_TRUE(has(m, "10 of 80 points are invalid")) << m;
 
     X3pReadOptions fill;
@@ -448,7 +437,8 @@ TEST_F(X3pReaderTest, invalidPointsAreAnErrorUnlessFilled)
     text.inlineData = true;
     text.raw[10] = nan;
     const std::string inlinePath = x3p("inline.x3p", text);
-    EXPECT_TRUE(has(inputError([&] { readX3p(inlinePath); }, inlinePath), "1 of 80 points are invalid"));
+    EXPECT_TRUE(
+        has(inputErrorMessage([&] { readX3p(inlinePath); }, inlinePath), "1 of 80 points are invalid"));
 }
 
 TEST_F(X3pReaderTest, validPointsMask)
@@ -457,7 +447,7 @@ TEST_F(X3pReaderTest, validPointsMask)
     f.mask.assign(10, '\xFF');
     f.mask[2] = static_cast<char>(0xFF & ~(1 << 1)); // point 17 = (1, 2): byte 2, bit 1
     const std::string path = x3p("mask.x3p", f);
-    EXPECT_TRUE(has(inputError([&] { readX3p(path); }, path), "1 of 80 points are invalid"));
+    EXPECT_TRUE(has(inputErrorMessage([&] { readX3p(path); }, path), "1 of 80 points are invalid"));
     X3pReadOptions fill;
     fill.fillInvalid = true;
     const ArealSurface s = readX3p(path, fill);
@@ -471,7 +461,7 @@ TEST_F(X3pReaderTest, validPointsMask)
     X3pFile shortMask = sample('I');
     shortMask.mask.assign(9, '\xFF');
     const std::string p2 = x3p("shortmask.x3p", shortMask);
-    EXPECT_TRUE(has(inputError([&] { readX3p(p2); }, p2), "needs 10"));
+    EXPECT_TRUE(has(inputErrorMessage([&] { readX3p(p2); }, p2), "needs 10"));
 }
 
 /// zip (an archive's bytes) with the inflated size of entry, in its local and its central header,
@@ -563,7 +553,7 @@ TEST_F(X3pReaderTest, markupBeyondItsCapIsRefusedAsItInflates)
     xml.insert(xml.find("</Record3>"), std::string(x3pLimits::maximumMarkupBytes + 1, ' '));
     const std::string path = x3p("whitespace.x3p", f, xml);
     const auto t0 = std::chrono::steady_clock::now();
-    const std::string m = inputError([&] { readX3p(path); }, path);
+    const std::string m = inputErrorMessage([&] { readX3p(path); }, path);
     EXPECT_LT(secondsSince(t0), 5.0);
     EXPECT_TRUE(
         has(m, "main.xml has more than 4194304 bytes (the cap) outside the Datum values of Record3/DataList"))
@@ -613,13 +603,13 @@ TEST_F(X3pReaderTest, inlineDataListIsReadAsItInflates)
 TEST_F(X3pReaderTest, zipHeadersThatLie)
 {
     const X3pFile f = sample('D');
-    const std::string good = readFile(x3p("good.x3p", f));
+    const std::string good = slurp(x3p("good.x3p", f));
     // main.xml declared larger than the cap: refused before inflating, at once.
     std::string big = good;
     declareSize(big, "main.xml", static_cast<std::uint32_t>(x3pLimits::maximumXmlBytes + 1));
     const std::string bigPath = write("big.x3p", big);
     auto t0 = std::chrono::steady_clock::now();
-    std::string m = inputError([&] { readX3p(bigPath); }, bigPath);
+    std::string m = inputErrorMessage([&] { readX3p(bigPath); }, bigPath);
     EXPECT_LT(secondsSince(t0), 1.0);
     EXPECT_TRUE(
         has(m, "main.xml has 1073741825 bytes (inflated, as its zip header says); at most 1073741824"))
@@ -630,7 +620,7 @@ TEST_F(X3pReaderTest, zipHeadersThatLie)
     std::string bin = good;
     declareSize(bin, "bin/data.bin", 2000000000u);
     const std::string binPath = write("bin.x3p", bin);
-    m = inputError([&] { readX3p(binPath); }, binPath);
+    m = inputErrorMessage([&] { readX3p(binPath); }, binPath);
     EXPECT_TRUE(has(m, "bin/data.bin has 2000000000 bytes (inflated, as its zip header says); at most 640"))
         << m;
     EXPECT_TRUE(has(m, "refused before inflating")) << m;
@@ -640,7 +630,7 @@ TEST_F(X3pReaderTest, zipHeadersThatLie)
     std::string small = good;
     declareSize(small, "main.xml", 100);
     const std::string smallPath = write("small.x3p", small);
-    m = inputError([&] { readX3p(smallPath); }, smallPath);
+    m = inputErrorMessage([&] { readX3p(smallPath); }, smallPath);
     EXPECT_TRUE(has(m, "main.xml inflates to more than the 100 bytes its zip header declares")) << m;
     // Declared as large as allowed but small: nothing allocated by the header's word.
     std::string claim = good;
@@ -680,7 +670,7 @@ TEST_F(X3pReaderTest, dataListContent)
     replaceDatum(10000, "<Datum>\t" + std::to_string(rawValue(10000)) + " </Datum><!---->");
     replaceDatum(3, "<Datum></Datum>");
     const std::string path = x3p("content.x3p", f, xml);
-    const std::string m = inputError([&] { readX3p(path); }, path);
+    const std::string m = inputErrorMessage([&] { readX3p(path); }, path);
     EXPECT_TRUE(has(m, "2 of 30000 points are invalid")) << m;
     X3pReadOptions fill;
     fill.fillInvalid = true;
@@ -709,17 +699,17 @@ TEST_F(X3pReaderTest, dataListContent)
         std::string bad = base;
         bad.insert(second, c.first);
         const std::string p = x3p("list.x3p", small, bad);
-        const std::string e = inputError([&] { readX3p(p); }, p);
+        const std::string e = inputErrorMessage([&] { readX3p(p); }, p);
         EXPECT_TRUE(has(e, c.second)) << c.first << ": " << e;
     }
     // main.xml ends inside the list; markup broken after it is on its own line.
     const std::string cut = x3p("cut.x3p", small, base.substr(0, second));
-    EXPECT_TRUE(has(inputError([&] { readX3p(cut); }, cut),
+    EXPECT_TRUE(has(inputErrorMessage([&] { readX3p(cut); }, cut),
                     "main.xml line 13: not well-formed XML (the file ends inside Record3/DataList)"));
     std::string after = base;
     after.replace(after.find("</Record3>"), 10, "</Record5>");
     const std::string afterPath = x3p("after.x3p", small, after);
-    const std::string a = inputError([&] { readX3p(afterPath); }, afterPath);
+    const std::string a = inputErrorMessage([&] { readX3p(afterPath); }, afterPath);
     EXPECT_TRUE(has(a, "main.xml line 93: not well-formed XML")) << a;
 }
 

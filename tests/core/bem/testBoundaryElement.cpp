@@ -12,6 +12,8 @@
 #include "roughContact/surface/ArealSynthesis.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 
+#include "ClosedForms.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,6 +27,7 @@
 #include <vector>
 
 using namespace roughContact;
+namespace closedForm = roughContactTest::closedForm; // tests/support/ClosedForms.hpp
 
 namespace {
 constexpr double pi = 3.14159265358979323846;
@@ -83,11 +86,12 @@ TEST(HalfSpaceOperator, LoveRectangleAgainstItsLimits)
     const double a = 1e-6;
     // Centre of a square of side 2a: the integral of 1/r over it is 8 a ln(1 + sqrt 2).
     EXPECT_NEAR(HalfSpaceOperator::loveRectangle(0, 0, a, a, 1.0, Ep),
-                8 * a * std::log(1 + std::sqrt(2.0)) / (pi * Ep), 1e-14 * a / Ep);
+                closedForm::loveSquareCentreDisplacement(1.0, a, Ep), 1e-14 * a / Ep);
     // Far away it is a point force: p (4 a b) / (pi E' r), to O((a/r)^2).
     for (double r : {100 * a, 1000 * a}) {
         const double u = HalfSpaceOperator::loveRectangle(0.6 * r, 0.8 * r, a, 2 * a, 1.0, Ep);
-        EXPECT_NEAR(u / (8 * a * a / (pi * Ep * r)), 1.0, 2 * (a / r) * (a / r)) << r;
+        EXPECT_NEAR(u / closedForm::pointForceDisplacement(8 * a * a, r, Ep), 1.0, 2 * (a / r) * (a / r))
+            << r;
     }
 }
 
@@ -102,7 +106,7 @@ TEST(HalfSpaceOperator, PeriodicMultiplierIsExactForOneWave)
     const std::vector<double> u = K.apply(p);
     const double q = 2 * pi / L;
     for (std::size_t i = 0; i < p.size(); ++i) {
-        EXPECT_NEAR(u[i], 2 * p[i] / (Ep * q), 1e-12 * 2e6 / (Ep * q)) << i;
+        EXPECT_NEAR(u[i], closedForm::periodicWaveDisplacement(p[i], q, Ep), 1e-12 * 2e6 / (Ep * q)) << i;
     }
 }
 
@@ -214,13 +218,12 @@ TEST(PolonskyKeer, WestergaardPartialAndCompleteContact)
     const double D = 1e-6;
     const HalfSpaceOperator K(nx, ny, lambda / nx, lambda / nx, Ep, true);
     const PolonskyKeer solver(K, ridge(nx, ny, D));
-    const double pStar = pi * Ep * D / lambda;
+    const double pStar = closedForm::westergaardCompleteContactPressure(Ep, D, lambda);
     for (double ratio : {0.05, 0.25, 0.6}) {
         const ContactSolution s = solver.solve(ratio * pStar);
         ASSERT_TRUE(s.converged) << ratio << " residual " << s.residual;
-        const double sinA = std::sqrt(ratio);
-        const double area = 2 * std::asin(sinA) / pi; // 2a / lambda
-        const double peak = 2 * ratio * pStar / sinA;
+        const double area = closedForm::westergaardAreaFraction(ratio); // 2a / lambda
+        const double peak = closedForm::westergaardPeakPressure(ratio * pStar, ratio);
         double pmax = 0.0;
         for (double v : s.pressure) {
             pmax = std::max(pmax, v);
@@ -235,7 +238,8 @@ TEST(PolonskyKeer, WestergaardPartialAndCompleteContact)
     ASSERT_TRUE(s.converged);
     EXPECT_EQ(s.areaFraction, 1.0);
     for (std::size_t ix = 0; ix < nx; ++ix) {
-        const double exact = P + pStar * std::cos(2 * pi * double(ix) / double(nx));
+        const double exact =
+            closedForm::westergaardCompleteContactPressureAt(P, pStar, double(ix), double(nx));
         EXPECT_NEAR(s.pressure[ix], exact, 0.01 * pStar) << ix;
     }
     EXPECT_NEAR(s.meanSeparation, 0.0, 1e-12 * D);
@@ -247,7 +251,7 @@ TEST(PolonskyKeer, WestergaardConvergesUnderGridRefinement)
     // and falling with the cell size.
     const double lambda = 1e-4;
     const double D = 1e-6;
-    const double pStar = pi * Ep * D / lambda;
+    const double pStar = closedForm::westergaardCompleteContactPressure(Ep, D, lambda);
     double previous = 1.0;
     for (std::size_t nx : {32u, 64u, 128u, 256u, 512u}) {
         const HalfSpaceOperator K(nx, 4, lambda / double(nx), lambda / double(nx), Ep, true);
@@ -280,7 +284,7 @@ TEST(PolonskyKeer, HertzContactRadiusAndCentralPressure)
     const HalfSpaceOperator K(n, n, dx, dx, Ep, false);
     const PolonskyKeer solver(K, h);
     const double aTarget = 0.25 * L; // a quarter of the patch: 40 cells
-    const double F = 4 * Ep * aTarget * aTarget * aTarget / (3 * R);
+    const double F = closedForm::hertzForce(aTarget, R, Ep);
     const ContactSolution s = solver.solve(F / (L * L));
     ASSERT_TRUE(s.converged) << s.residual;
     const double a = std::sqrt(s.areaFraction * L * L / pi);
@@ -288,11 +292,13 @@ TEST(PolonskyKeer, HertzContactRadiusAndCentralPressure)
     for (double v : s.pressure) {
         p0 = std::max(p0, v);
     }
-    std::printf("Hertz, %zu x %zu cells, a = 40 cells: a / a_Hertz = %.5f, p0 / p0_Hertz = %.5f, %zu iterations\n", n,
-                n, a / aTarget, p0 / (3 * F / (2 * pi * aTarget * aTarget)), s.iterations);
+    const double p0Hertz = closedForm::hertzPeakPressure(F, aTarget);
+    std::printf(
+        "Hertz, %zu x %zu cells, a = 40 cells: a / a_Hertz = %.5f, p0 / p0_Hertz = %.5f, %zu iterations\n", n,
+        n, a / aTarget, p0 / p0Hertz, s.iterations);
     // 2 %: the bound, met at 40 cells a radius (the cells' staircase edge).
     EXPECT_NEAR(a / aTarget, 1.0, 0.02);
-    EXPECT_NEAR(p0 / (3 * F / (2 * pi * aTarget * aTarget)), 1.0, 0.02);
+    EXPECT_NEAR(p0 / p0Hertz, 1.0, 0.02);
 }
 
 TEST(PolonskyKeer, BisinusoidCompleteContactPressure)
@@ -312,12 +318,15 @@ TEST(PolonskyKeer, BisinusoidCompleteContactPressure)
     }
     const HalfSpaceOperator K(n, n, lambda / n, lambda / n, Ep, true);
     const PolonskyKeer solver(K, h);
-    const double pStar = std::sqrt(2.0) * pi * Ep * D / lambda;
+    const double pStar = closedForm::bisinusoidCompleteContactPressure(Ep, D, lambda);
     EXPECT_EQ(solver.solve(1.02 * pStar).areaFraction, 1.0);
     EXPECT_LT(solver.solve(0.98 * pStar).areaFraction, 1.0);
     const ContactSolution s = solver.solve(1.5 * pStar);
     for (std::size_t i = 0; i < n * n; ++i) {
-        EXPECT_NEAR(s.pressure[i], 1.5 * pStar + pStar * h[i] / D, 1e-6 * pStar) << i;
+        EXPECT_NEAR(s.pressure[i],
+                    closedForm::bisinusoidCompleteContactPressureAt(1.5 * pStar, pStar, h[i], D),
+                    1e-6 * pStar)
+            << i;
     }
 }
 
@@ -345,9 +354,10 @@ TEST(SpotConductance, HolmsConductanceOfOneSpot)
     const double a = std::sqrt(double(cells) * dx * dx / pi);
     const SpotConductance c = spotConductance(K, contact);
     ASSERT_TRUE(c.converged) << c.residual;
+    const double holm = closedForm::holmSpotConductancePerConductivity(a);
     std::printf("Holm, a spot of %zu cells: h_c A_n / (2 a k_s) = %.5f, %zu CG iterations\n", cells,
-                c.perConductivity * L * L / (2 * a), c.iterations);
-    EXPECT_NEAR(c.perConductivity * L * L / (2 * a), 1.0, 0.02);
+                c.perConductivity * L * L / holm, c.iterations);
+    EXPECT_NEAR(c.perConductivity * L * L / holm, 1.0, 0.02);
 }
 
 TEST(SpotConductance, BarbersRelationOnARoughSurface)
@@ -576,7 +586,8 @@ TEST(SpotConductance, ABondedPatchConstrictsAsAPunchOfItsShape)
         const HalfSpaceOperator K(n, n, L / double(n), L / double(n), Ep, false);
         const SpotConductance c = spotConductance(K, std::vector<bool>(n * n, true));
         ASSERT_TRUE(c.converged);
-        const double ratio = c.perConductivity * L * L / (2.0 * std::sqrt(L * L / pi));
+        const double ratio =
+            c.perConductivity * L * L / closedForm::holmSpotConductancePerConductivity(std::sqrt(L * L / pi));
         EXPECT_GT(ratio, 1.0) << n;
         EXPECT_LT(ratio, 1.03) << n;
     }
@@ -632,7 +643,7 @@ TEST(BoundaryElementModel, CompleteContactAndHardnessLimits)
     BoundaryElementOptions o;
     o.periodic = true;
     const BoundaryElementModel model(ArealSurface(ridge(n, n, D), n, n, L / n, L / n, "ridge"), Ep, o);
-    const double pStar = pi * Ep * D / L;
+    const double pStar = closedForm::westergaardCompleteContactPressure(Ep, D, L);
     const BoundaryElementPoint full = model.solve(1.5 * pStar / Ep);
     EXPECT_EQ(full.areaFraction, 1.0);
     EXPECT_EQ(full.conductancePerConductivity, std::numeric_limits<double>::infinity());
@@ -649,7 +660,7 @@ TEST(BoundaryElementModel, CompleteContactAndHardnessLimits)
     const double edge = std::sin(pi * 10.5 / double(n));
     const BoundaryElementPoint aligned = model.solve(edge * edge * pStar / Ep);
     EXPECT_EQ(aligned.areaFraction, 21.0 / double(n));
-    const double strips = pi / (2.0 * L * std::log(1.0 / edge));
+    const double strips = closedForm::westergaardConductancePerConductivity(L, edge);
     EXPECT_NEAR(aligned.conductancePerConductivity / strips, 1.0, 0.03) << aligned.conductancePerConductivity;
     o.hardness = 0.1 * pStar;
     const BoundaryElementModel soft(ArealSurface(ridge(n, n, D), n, n, L / n, L / n, "ridge"), Ep, o);

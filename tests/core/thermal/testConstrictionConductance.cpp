@@ -9,6 +9,8 @@
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 #include "roughContact/thermal/ContactTable.hpp"
 
+#include "ClosedForms.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -37,11 +39,9 @@ Spectrum standin()
         readProfile(std::string(ROUGHCONTACT_SOURCE_DIR) + "/data/standin-2454.csv"));
 }
 
-// Hertz: the contact radius of a sphere of radius R pressed with F, a = (3 F R / (4 E'))^(1/3).
-double hertzRadius(double F, double R, double Eprime)
-{
-    return std::cbrt(3.0 * F * R / (4.0 * Eprime));
-}
+// Hertz: the contact radius of a sphere of radius R pressed with F, a = (3 F R / (4 E'))^(1/3)
+// (tests/support/ClosedForms.hpp).
+using roughContactTest::closedForm::hertzContactRadius;
 
 // The queries ContactTable.hpp documents, written out from the table's points with a plain
 // binary search (no bucket index): 0 at P <= 0; complete contact (1, +inf) at P >= the
@@ -92,8 +92,8 @@ TEST(ConstrictionConductance, HolmsLimitOfTheHarmonicMean)
     // One spot of radius a between half-spaces k1 and k2: Holm's R = (1/(4a))(1/k1 + 1/k2)
     // equals 1/(2 k_s a) with k_s = 2 k1 k2/(k1 + k2).
     const double a = 3e-6, k1 = 15.0, k2 = 200.0;
-    EXPECT_NEAR(1.0 / (2.0 * harmonicMeanConductivity(k1, k2) * a), (1.0 / (4.0 * a)) * (1.0 / k1 + 1.0 / k2),
-                1e-14 / (4.0 * a * k1));
+    EXPECT_NEAR(1.0 / (2.0 * harmonicMeanConductivity(k1, k2) * a),
+                roughContactTest::closedForm::holmSpotResistance(a, k1, k2), 1e-14 / (4.0 * a * k1));
     EXPECT_THROW(harmonicMeanConductivity(0.0, 1.0), std::invalid_argument);
     EXPECT_THROW(harmonicMeanConductivity(1.0, -1.0), std::invalid_argument);
 }
@@ -136,7 +136,7 @@ TEST(ConstrictionConductance, OneLevelClosedForm)
     for (double load : {1e-7, 1e-5, 1e-4}) {
         SCOPED_TRACE(load);
         const double N = eta * An;
-        const double a = hertzRadius(load * An * Ep / N, R, Ep);
+        const double a = hertzContactRadius(load * An * Ep / N, R, Ep);
         const double eps = a * std::sqrt(pi * eta);
         ASSERT_LT(eps, 1.0);
         const double expected = 2.0 * a * N / (std::pow(1.0 - eps, 1.5) * An);
@@ -157,10 +157,10 @@ TEST(ConstrictionConductance, TwoLevelsInSeries)
     const double eta1 = 2 * f1 * f1, eta2 = 2 * f2 * f2;
     const double R1 = 1 / (4 * pi * pi * b1 * f1 * f1), R2 = 1 / (4 * pi * pi * b2 * f2 * f2);
     const double N1 = eta1 * An;
-    const double a1 = hertzRadius(F / N1, R1, Ep);
+    const double a1 = hertzContactRadius(F / N1, R1, Ep);
     const double A1 = N1 * pi * a1 * a1;
     const double N2 = eta2 * A1;
-    const double a2 = hertzRadius(F / N2, R2, Ep);
+    const double a2 = hertzContactRadius(F / N2, R2, Ep);
     const double A2 = N2 * pi * a2 * a2;
     ASSERT_LT(A2, A1);
     const double r = std::pow(1 - std::sqrt(A1 / An), 1.5) / (2 * a1 * N1) +

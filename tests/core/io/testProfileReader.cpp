@@ -7,6 +7,8 @@
 #include "roughContact/surface/Profile.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 
+#include "FileContents.hpp"
+#include "InputErrors.hpp"
 #include "TempDirTest.hpp"
 
 #include <gtest/gtest.h>
@@ -58,37 +60,13 @@ double ramp(std::size_t i)
     return 1e-6 * (static_cast<double>(i % 5) - 2.0) + 3e-7 * static_cast<double>(i);
 }
 
+using roughContactTest::expectLocated; // tests/support/InputErrors.hpp
+using roughContactTest::slurp;         // tests/support/FileContents.hpp
+
 /// The InputError that readProfile(path, options) throws; fails the test when it throws none.
 InputError profileError(const std::string& path, const ProfileReadOptions& options = {})
 {
-    try {
-        readProfile(path, options);
-    } catch (const InputError& e) {
-        return e;
-    }
-    ADD_FAILURE() << path << " was read without an error";
-    return InputError("", 0, "");
-}
-
-/// The error names the file and the line as "FILE:LINE: " (just "FILE: " for line 0) and its
-/// message contains text.
-void expectLocated(const InputError& e, const std::string& path, long line,
-                   const std::string& text)
-{
-    EXPECT_EQ(e.file(), path);
-    EXPECT_EQ(e.line(), line);
-    const std::string prefix = line > 0 ? path + ":" + std::to_string(line) + ": " : path + ": ";
-    const std::string what = e.what();
-    EXPECT_EQ(what.rfind(prefix, 0), 0u) << what;
-    EXPECT_NE(what.find(text), std::string::npos) << what;
-}
-
-std::string slurp(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
+    return roughContactTest::thrownInputError([&] { readProfile(path, options); }, path);
 }
 
 /// The lines of text split at "\n" (the "\r" kept), and joined back.

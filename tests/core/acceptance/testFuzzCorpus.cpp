@@ -2,6 +2,7 @@
 // The fuzz corpus (tests/fuzz/corpus/<target>/: seeds and every input that ever made a fuzz
 // target fail) replayed through the fuzz targets' own checks (tests/fuzz/ReaderChecks.hpp), so
 // the regressions run in the ordinary build too, without clang.
+#include "FileContents.hpp"
 #include "ReaderChecks.hpp"
 
 #include <gtest/gtest.h>
@@ -31,11 +32,7 @@ std::vector<fs::path> corpus(const std::string& target)
     return files;
 }
 
-std::string content(const fs::path& file)
-{
-    std::ifstream in(file, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using roughContactTest::slurp; // a file's bytes: tests/support/FileContents.hpp
 
 /// Every file of the target's corpus passes check; the corpus has at least minimumFiles files
 /// (so that a missing or emptied corpus fails instead of passing on nothing).
@@ -44,7 +41,7 @@ template <class Check> void replay(const std::string& target, Check check, std::
     const std::vector<fs::path> files = corpus(target);
     ASSERT_GE(files.size(), minimumFiles) << "tests/fuzz/corpus/" << target;
     for (const fs::path& file : files) {
-        EXPECT_EQ(check(content(file)), "") << file.filename().string();
+        EXPECT_EQ(check(slurp(file)), "") << file.filename().string();
     }
 }
 } // namespace
@@ -87,7 +84,9 @@ TEST(FuzzCorpus, boundaryElementTableSeedsReachTheNumbers)
     using Status = roughContact::BoundaryElementTableRead::Status;
     const fs::path dir = fs::path(ROUGHCONTACT_SOURCE_DIR) / "tests/fuzz/corpus/boundaryElementTable";
     const roughContact::BoundaryElementTable& t = roughContactFuzz::boundaryElementTable();
-    const auto read = [&](const char* name) { return t.parse(roughContactFuzz::boundaryElementTableText(content(dir / name))); };
+    const auto read = [&](const char* name) {
+        return t.parse(roughContactFuzz::boundaryElementTableText(slurp(dir / name)));
+    };
     EXPECT_EQ(read("valid.csv").status, Status::ok) << read("valid.csv").reason << " (a seed of another table "
                                                                                     "version: make the seeds anew)";
     EXPECT_NE(read("overflow-1e999.csv").reason.find("is not four finite numbers"), std::string::npos);
@@ -102,7 +101,7 @@ TEST(FuzzCorpus, x3pSeedsReadPastTheChecksums)
     // files that reach the data; the NaN seed must fail on its one invalid point only.
     const fs::path dir = fs::path(ROUGHCONTACT_SOURCE_DIR) / "tests/fuzz/corpus/x3pReader";
     for (const char* name : {"d-binary.x3p", "i-mask-fill.x3p", "l-binary.x3p", "inline-fill.x3p"}) {
-        const std::string input = content(dir / name);
+        const std::string input = slurp(dir / name);
         roughContact::X3pReadOptions options;
         options.fillInvalid = input[0] == 'f';
         const roughContact::ArealSurface s = roughContact::readX3pBytes(input.substr(1), "seed", options);
@@ -110,7 +109,7 @@ TEST(FuzzCorpus, x3pSeedsReadPastTheChecksums)
         EXPECT_EQ(s.dy(), 2e-6) << name;
     }
     try {
-        roughContact::readX3pBytes(content(dir / "f-nan.x3p").substr(1), "seed");
+        roughContact::readX3pBytes(slurp(dir / "f-nan.x3p").substr(1), "seed");
         ADD_FAILURE() << "f-nan.x3p read";
     } catch (const roughContact::InputError& e) {
         EXPECT_NE(e.message().find("1 of 64 points are invalid"), std::string::npos) << e.what();

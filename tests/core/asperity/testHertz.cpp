@@ -2,6 +2,8 @@
 // Hertz asperity (seed Eq. 20).
 #include "roughContact/asperity/Hertz.hpp"
 
+#include "ClosedForms.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -32,7 +34,7 @@ TEST(Hertz, matchesSeedEquation20)
     const double R = 9.299e-6;
     const double F = 1e-3;
     const Hertz h(E);
-    const double a = std::cbrt(3.0 * F * R / (4.0 * E)); // contact radius
+    const double a = roughContactTest::closedForm::hertzContactRadius(F, R, E); // contact radius
     EXPECT_NEAR(h.areaAtForce(F, R) / (pi * a * a), 1.0, roundOff);
 }
 

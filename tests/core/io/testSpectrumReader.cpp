@@ -5,6 +5,7 @@
 #include "roughContact/io/SpectrumReader.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 
+#include "InputErrors.hpp"
 #include "TempDirTest.hpp"
 
 #include <gtest/gtest.h>
@@ -34,29 +35,12 @@ std::string g17(double v)
     return buffer;
 }
 
+using roughContactTest::expectLocated; // tests/support/InputErrors.hpp
+
 /// The InputError that readSpectrum(path, length) throws; fails the test when it throws none.
 InputError spectrumError(const std::string& path, std::optional<double> length = std::nullopt)
 {
-    try {
-        readSpectrum(path, length);
-    } catch (const InputError& e) {
-        return e;
-    }
-    ADD_FAILURE() << path << " was read without an error";
-    return InputError("", 0, "");
-}
-
-/// The error names the file and the line as "FILE:LINE: " (just "FILE: " for line 0) and its
-/// message contains text.
-void expectLocated(const InputError& e, const std::string& path, long line,
-                   const std::string& text)
-{
-    EXPECT_EQ(e.file(), path);
-    EXPECT_EQ(e.line(), line);
-    const std::string prefix = line > 0 ? path + ":" + std::to_string(line) + ": " : path + ": ";
-    const std::string what = e.what();
-    EXPECT_EQ(what.rfind(prefix, 0), 0u) << what;
-    EXPECT_NE(what.find(text), std::string::npos) << what;
+    return roughContactTest::thrownInputError([&] { readSpectrum(path, length); }, path);
 }
 
 // A power law beta = 1e-9 m * (f / 1e4 1/m)^-1.2 at f = 1e4, 2e4, ..., 8e4 1/m: the kind of

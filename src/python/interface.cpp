@@ -1,0 +1,235 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The module's interface: one rough surface as ContactInterface reads it (SurfaceSpec) and
+// ContactInterface, the pressure table a boundary condition interpolates, with its gap.
+#include <pybind11/pybind11.h>
+
+#include "doubleCaster.hpp" // first after pybind11.h: see there
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "convert.hpp"
+
+#include "roughContact/interface/ContactInterface.hpp"
+#include "roughContact/interface/InterfaceGap.hpp"
+#include "roughContact/io/Units.hpp"
+#include "roughContact/material/Materials.hpp"
+#include "roughContact/surface/ArealSurface.hpp"
+#include "roughContact/thermal/ContactTable.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+using namespace roughContact;
+
+namespace roughcontact_py {
+
+namespace {
+
+/// A SurfaceSpec given by its spectrum's parameters (power law, fractal) and length.
+SurfaceSpec parametricSurface(SurfaceSpec::Kind kind, std::vector<double> parameters, std::optional<double> length)
+{
+    SurfaceSpec s;
+    s.kind = kind;
+    s.parameters = std::move(parameters);
+    s.length = length;
+    return s;
+}
+
+} // namespace
+
+void bindInterface(py::module_& m)
+{
+    py::class_<SurfaceSpec>(m, "SurfaceSpec",
+                            "One rough surface as ContactInterface reads it (the OpenFOAM dictionary's "
+                            "surface entry): build it with the static methods.")
+        .def_static(
+            "profile",
+            [](const std::string& path, std::optional<std::string> units, std::optional<double> spacing,
+               std::size_t stride) {
+                SurfaceSpec s;
+                s.kind = SurfaceSpec::Kind::profile;
+                s.file = path;
+                s.profileOptions.units = unitsOf(units);
+                s.profileOptions.spacing = spacing;
+                s.stride = stride;
+                return s;
+            },
+            py::arg("path"), py::arg("units") = py::none(), py::arg("spacing") = py::none(), py::arg("stride") = 1,
+            "A profile file (read_profile's units and spacing), every stride-th sample.")
+        .def_static(
+            "spectrum",
+            [](const std::string& path, std::optional<double> length) {
+                SurfaceSpec s;
+                s.kind = SurfaceSpec::Kind::spectrum;
+                s.file = path;
+                s.length = length;
+                return s;
+            },
+            py::arg("path"), py::arg("length") = py::none(), "A spectrum table file; length [m].")
+        .def_static(
+            "power_law",
+            [](double bm, double mm, double fmin, double fmax, std::optional<double> length) {
+                return parametricSurface(SurfaceSpec::Kind::powerLaw, {bm, mm, fmin, fmax}, length);
+            },
+            py::arg("bm"), py::arg("m"), py::arg("fmin"), py::arg("fmax"), py::arg("length") = py::none(),
+            "A power-law spectrum bm f^-m [m], fmin, fmax [1/m], length [m].")
+        .def_static(
+            "fractal",
+            [](double D, double G, double fmin, double fmax, std::optional<double> length) {
+                return parametricSurface(SurfaceSpec::Kind::fractal, {D, G, fmin, fmax}, length);
+            },
+            py::arg("D"), py::arg("G"), py::arg("fmin"), py::arg("fmax"), py::arg("length") = py::none(),
+            "A Weierstrass-Mandelbrot spectrum: D, G [m], fmin, fmax [1/m], length [m].")
+        .def_static(
+            "areal",
+            [](const std::string& path, std::optional<std::string> units, std::optional<double> dx,
+               std::optional<double> dy, bool fillInvalid, const std::string& direction) {
+                SurfaceSpec s;
+                s.kind = SurfaceSpec::Kind::areal;
+                s.file = path;
+                s.arealOptions.units = unitsOf(units);
+                s.arealOptions.dx = dx;
+                s.arealOptions.dy = dy;
+                s.arealOptions.fillInvalid = fillInvalid;
+                s.direction = parseScanDirection(direction);
+                return s;
+            },
+            py::arg("path"), py::arg("units") = py::none(), py::arg("dx") = py::none(), py::arg("dy") = py::none(),
+            py::arg("fill_invalid") = false, py::arg("direction") = "x",
+            "An areal file (read_areal's options) and the line scans that make its spectrum.")
+        .def("read_spectrum", &SurfaceSpec::spectrum, "The surface's spectrum (reads the file; a Spectrum).")
+        .def("roughness", &SurfaceSpec::roughness, "Its sigma [m] and mean absolute slope.");
+
+    py::class_<ContactInterface>(m, "ContactInterface",
+                                 "Surfaces + materials + model + conductance law -> the pressure table "
+                                 "a boundary condition interpolates: A_r/A_n and h_c/k_s at a nominal pressure [Pa].")
+        .def(py::init([](const std::vector<SurfaceSpec>& surfaces, const Material& side1, const Material& side2,
+                         const std::string& model, const std::string& conductance,
+                         std::optional<double> microhardness, std::optional<std::pair<double, double>> vickers,
+                         std::optional<double> minPressure, std::optional<double> maxPressure,
+                         std::size_t pointsPerDecade, std::optional<std::size_t> synthesize, std::uint64_t seed,
+                         std::optional<bool> periodic, std::optional<double> hardness, bool hardnessFromYield,
+                         std::size_t bemPointsPerDecade, std::optional<GapSpec> gap, std::optional<std::string> detrend) {
+                 InterfaceSpec s;
+                 s.surfaces = surfaces;
+                 s.side1 = side1;
+                 s.side2 = side2;
+                 s.model = model;
+                 s.conductanceLaw = conductance;
+                 s.microhardness = microhardness;
+                 if (vickers) {
+                     s.vickers = VickersCoefficients{vickers->first, vickers->second};
+                 }
+                 s.minPressure = minPressure;
+                 s.maxPressure = maxPressure;
+                 s.pointsPerDecade = pointsPerDecade;
+                 s.synthesize = synthesize;
+                 s.seed = seed;
+                 s.periodic = periodic;
+                 s.hardness = hardness;
+                 s.hardnessFromYield = hardnessFromYield;
+                 s.bemPointsPerDecade = bemPointsPerDecade;
+                 s.gap = gap;
+                 if (detrend) {
+                     s.detrend = parseDetrend(*detrend, "detrend");
+                 }
+                 py::gil_scoped_release release;
+                 return std::make_unique<ContactInterface>(s);
+             }),
+             py::kw_only(), py::arg("surfaces"), py::arg("side1"), py::arg("side2"), py::arg("model") = "jacksonGreen",
+             py::arg("conductance") = "", py::arg("microhardness") = py::none(), py::arg("vickers") = py::none(),
+             py::arg("min_pressure") = py::none(), py::arg("max_pressure") = py::none(),
+             py::arg("points_per_decade") = 40, py::arg("synthesize") = py::none(), py::arg("seed") = 1,
+             py::arg("periodic") = py::none(), py::arg("hardness") = py::none(),
+             py::arg("hardness_from_yield") = false, py::arg("bem_points_per_decade") = 6,
+             py::arg("gap") = py::none(), py::arg("detrend") = py::none(),
+             "ContactInterface(*, surfaces, side1, side2, model='jacksonGreen', conductance='', ...): "
+             "surfaces a list of one or two SurfaceSpec; side1, side2 the Materials of the two solids; model a "
+             "multi-scale model or 'boundaryElement'; conductance a law name ('' the default); microhardness "
+             "[Pa] or vickers (c1 [Pa], c2) for cooperMikicYovanovich; min_pressure, max_pressure [Pa] the "
+             "table's range (default 1e-9 E' to E'); points_per_decade; boundaryElement only: synthesize N "
+             "(an N x N surface from the 1-D surfaces), seed, periodic, detrend ('none', 'mean' or 'plane'; None: "
+             "'mean' when periodic, 'plane' otherwise), hardness [Pa], hardness_from_yield, "
+             "bem_points_per_decade; gap a GapSpec (gas and/or radiation beside the contact) or None. Building the table takes a fraction of a second for the multi-scale "
+             "models, far longer for boundaryElement.")
+        .def(
+            "area_fraction",
+            [](const ContactInterface& ci, const py::object& P) {
+                return vectorize(P, "pressures", [&](double p) { return ci.areaFraction(p); });
+            },
+            py::arg("pressures"), "A_r/A_n at the nominal pressures [Pa] (0 for P <= 0, 1 beyond complete contact).")
+        .def(
+            "conductance_per_conductivity",
+            [](const ContactInterface& ci, const py::object& P) {
+                return vectorize(P, "pressures", [&](double p) { return ci.conductancePerConductivity(p); });
+            },
+            py::arg("pressures"), "h_c/k_s [1/m] at the nominal pressures [Pa] (inf beyond complete contact).")
+        .def(
+            "conductance",
+            [](const ContactInterface& ci, const py::object& P, double k1, double k2) {
+                return vectorize(P, "pressures", [&](double p) { return ci.face(p, k1, k2).conductance; });
+            },
+            py::arg("pressures"), py::arg("k1"), py::arg("k2"),
+            "h_c [W/(m^2 K)] at the pressures [Pa] between solids of conductivities k1, k2 [W/(m K)] "
+            "(k_s = 2 k1 k2/(k1 + k2)).")
+        .def(
+            "mean_separation",
+            [](const ContactInterface& ci, const py::object& P) {
+                return vectorize(P, "pressures", [&](double p) { return ci.meanSeparation(p); });
+            },
+            py::arg("pressures"), "The mean-plane separation [m] where the table has one (has_separation), else NaN.")
+        .def_property_readonly("has_separation", &ContactInterface::hasSeparation,
+                               "True when the table carries the mean separation.")
+        .def_property_readonly("table_pressures", [](const ContactInterface& ci) { return toArray(ci.table().pressures()); },
+                               "The table's pressures [Pa].")
+        .def_property_readonly("table_area_fractions",
+                               [](const ContactInterface& ci) { return toArray(ci.table().areaFractions()); },
+                               "A_r/A_n at the table's pressures.")
+        .def_property_readonly(
+            "table_conductances_per_conductivity",
+            [](const ContactInterface& ci) { return toArray(ci.table().conductancesPerConductivity()); },
+            "h_c/k_s [1/m] at the table's pressures.")
+        .def_property_readonly("table_separations",
+                               [](const ContactInterface& ci) { return toArray(ci.table().separations()); },
+                               "The mean separation [m] at the table's pressures (empty without the column).")
+        .def_property_readonly("table_end", &ContactInterface::tableEnd, "The table's last pressure [Pa].")
+        .def_property_readonly("complete_contact_pressure", &ContactInterface::completeContactPressure,
+                               "The lowest pressure [Pa] of complete contact (inf: none).")
+        .def_property_readonly("reduced_modulus", &ContactInterface::reducedModulus, "E' [Pa].")
+        .def_property_readonly("model_name", &ContactInterface::modelName, "The model's name.")
+        .def_property_readonly("conductance_law", &ContactInterface::conductanceLaw, "The law of the h column.")
+        .def_property_readonly("surface", &ContactInterface::surface, "The equivalent surface's spectrum.")
+        .def_property_readonly("has_gap", &ContactInterface::hasGap, "True with a gap (gas or radiation).")
+        .def(
+            "gap_separation",
+            [](const ContactInterface& ci, const py::object& P) {
+                const InterfaceGap& gap = ci.gap();
+                return vectorize(P, "pressures", [&](double p) { return gap.separation(p); });
+            },
+            py::arg("pressures"),
+            "Y [m] the gap uses at P [Pa] > 0: the model's mean separation where the table has one, else the "
+            "correlation of sigma and P/H_c. ParameterError without a gap.")
+        .def_property_readonly(
+            "gap_first_touch_separation", [](const ContactInterface& ci) { return ci.gap().firstTouchSeparation(); },
+            "Y [m] of faces apart with no gap width given: the separation at the table's first pressure.")
+        .def(
+            "gap_conductances",
+            [](const ContactInterface& ci, const py::object& Y, double T1, double T2) {
+                const InterfaceGap& gap = ci.gap();
+                py::object hg = vectorize(Y, "separation", [&](double y) { return gap.conductances(y, T1, T2).gas; });
+                return py::make_tuple(hg, gap.radiativeConductance(T1, T2));
+            },
+            py::arg("separation"), py::arg("T1"), py::arg("T2"),
+            "(h_g, h_r) [W/(m^2 K)] at the separations Y [m] and the two face temperatures T1, T2 [K] (the gas "
+            "at their mean), as the boundary condition adds them to h_c. ParameterError without a gap.")
+        .def("summary", &ContactInterface::summary, "A few lines for a log.");
+}
+
+} // namespace roughcontact_py
