@@ -5,6 +5,8 @@
 // (nominal pressures in Pa, each the load P/E') adds a first column nominal_pressure [Pa].
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
+#include "roughContact/interface/InterfaceRegime.hpp"
+#include "roughContact/interface/SurfaceCheck.hpp"
 #include "roughContact/io/ArealReader.hpp"
 #include "roughContact/io/Numbers.hpp"
 #include "roughContact/io/ProfileReader.hpp"
@@ -83,6 +85,7 @@ struct Options {
     std::string conductanceLaw; // --conductance-law NAME (implies --conductance)
     std::string vickers;        // "C1,C2"
     bool info = false;
+    bool check = false; // --check: the exact model on this surface against every law
 };
 
 std::vector<double> splitNumbers(const std::string& text, char sep, const std::string& option)
@@ -441,6 +444,124 @@ void checkOutputFile(const Options& o, const std::string& path, const std::strin
     }
 }
 
+// The surfaces as SurfaceSpecs (the boundary condition's description of the same options).
+std::vector<SurfaceSpec> surfaceSpecsOf(const Options& o)
+{
+    surfaceOf(o); // every rule of the surface options (and the files readable) before anything else
+    std::vector<SurfaceSpec> out;
+    const auto add = [&](SurfaceSpec::Kind kind, const std::string& file) {
+        SurfaceSpec s;
+        s.kind = kind;
+        s.file = file;
+        if (o.units) {
+            s.profileOptions.units = parseLengthUnit(*o.units);
+        }
+        s.profileOptions.spacing = o.dx;
+        s.arealOptions = arealReadOptions(o);
+        s.direction = parseScanDirection(o.direction.value_or("x"), "--direction");
+        s.stride = o.stride;
+        s.length = o.length;
+        out.push_back(s);
+    };
+    for (const std::string& f : o.profiles) {
+        add(SurfaceSpec::Kind::profile, f);
+    }
+    for (const std::string& f : o.areals) {
+        add(SurfaceSpec::Kind::areal, f);
+    }
+    for (const std::string& f : o.spectra) {
+        add(SurfaceSpec::Kind::spectrum, f);
+    }
+    if (!o.powerLaw.empty()) {
+        add(SurfaceSpec::Kind::powerLaw, "");
+        out.back().parameters = o.powerLaw;
+    }
+    if (!o.fractal.empty()) {
+        add(SurfaceSpec::Kind::fractal, "");
+        out.back().parameters = o.fractal;
+    }
+    return out;
+}
+
+// --check: the exact model on this surface at up to 5 of the run's pressures (or 4 across their
+// range), every law's ratio to it; the report, then its numbers as CSV, on stdout.
+int runCheck(const Options& o)
+{
+    if (o.levels) {
+        throw ParameterError("--check", "checks the conductance; --levels is for the per-level trace");
+    }
+    if (o.conductance || !o.conductanceLaw.empty()) {
+        if (o.conductanceLaw == "all") {
+            throw ParameterError("--check", "holds every law to the exact answer already; --conductance-law names "
+                                            "the one to judge");
+        }
+    }
+    if (!o.pressureMap.empty()) {
+        throw ParameterError("--pressure-map", "is for a boundaryElement curve, not --check");
+    }
+    SurfaceCheckInputs in;
+    in.surfaces = surfaceSpecsOf(o);
+    in.materials = materialsOf(o);
+    in.model = o.model;
+    if (!isMultiscaleModel(o.model) && o.model != "boundaryElement") {
+        throw ParameterError("--check", "takes a multi-scale --model (the laws' area: hertz, jacksonGreen, ...) or "
+                                        "boundaryElement, not " + o.model);
+    }
+    in.conductanceLaw = o.conductanceLaw;
+    in.hardness = hardnessOf(o, *in.materials, "--check --hardness-from-yield");
+    if (!o.vickers.empty()) {
+        const std::vector<double> c = splitNumbers(o.vickers, ',', "--vickers");
+        if (c.size() != 2) {
+            throw ParameterError("--vickers", "expects C1,C2: c1 [Pa] and c2 of H_v = c1 (d_v/1 um)^c2");
+        }
+        in.vickers = VickersCoefficients{c[0], c[1]};
+    }
+    if (o.periodic) {
+        in.periodic = true;
+    }
+    if (o.detrend) {
+        in.detrend = parseDetrend(*o.detrend, "--detrend");
+    }
+    // The pressures [Pa]: --pressures as given (no round trip through the load), or the loads x E'.
+    const double Ep = in.materials->reducedModulus();
+    std::vector<double> given;
+    const std::vector<double> loads = loadsOf(o, Ep, &given);
+    std::vector<double> pressures;
+    for (std::size_t i = 0; i < loads.size(); ++i) {
+        const double P = given.empty() ? loads[i] * Ep : given[i];
+        if (P > 0.0) {
+            pressures.push_back(P);
+        }
+    }
+    if (pressures.empty()) {
+        throw ParameterError("--check", "needs pressures above 0");
+    }
+    std::sort(pressures.begin(), pressures.end());
+    SurfaceCheckOptions so;
+    if (!o.synthesize.empty()) {
+        const std::size_t comma = o.synthesize.find(',');
+        if (comma != std::string::npos) {
+            throw ParameterError("--synthesize", "with --check takes the grid size N only (the check solves seeds 1, 2 and 3)");
+        }
+        so.gridSize = static_cast<std::size_t>(wholeNumber(o.synthesize, "--synthesize", "the grid size N"));
+    }
+    in.minPressure = pressures.front();
+    in.maxPressure = pressures.back();
+    if (pressures.size() <= 5) {
+        so.pressures = pressures;
+    }
+    so.log = [](const std::string& line) { std::cerr << "multiscaleContact: " << line << std::endl; };
+    const SurfaceCheck c = checkSurface(in, so);
+    std::istringstream report(c.report());
+    std::ostringstream out;
+    for (std::string line; std::getline(report, line);) {
+        out << "# " << line << '\n';
+    }
+    out << c.csv();
+    std::cout << out.str();
+    return 0;
+}
+
 // --model boundaryElement: the curve, one progress line on stderr per load once the run takes
 // longer than 2 s, then the whole CSV.
 int runBoundaryElement(const Options& o)
@@ -551,6 +672,9 @@ int runBoundaryElement(const Options& o)
 
 int run(const Options& o)
 {
+    if (o.check) {
+        return runCheck(o);
+    }
     if (o.model == "boundaryElement") {
         return runBoundaryElement(o);
     }
@@ -637,6 +761,8 @@ int run(const Options& o)
             in.roughness = roughnessOf(o);
         }
         in.microhardness = hardnessOf(o, materials, "--hardness-from-yield");
+        // fittedElastoPlastic's cap: --hardness (or from yield), else 2.84 S_y where --Sy is given.
+        in.hardness = conductanceLawHardness(in.microhardness, materials);
         if (!o.vickers.empty()) {
             const std::vector<double> c = splitNumbers(o.vickers, ',', "--vickers");
             if (c.size() != 2) {
@@ -680,6 +806,28 @@ int run(const Options& o)
                 std::cerr << "multiscaleContact: --conductance-law all: no column for " << name << ": " << why
                           << '\n';
             }
+        }
+    }
+    if (conductance) {
+        // The regime at the run's lightest and heaviest load and the law's measured accuracy there
+        // (InterfaceRegime.hpp), on stderr: the hardness the materials give (2.84 S_y) or
+        // --hardness; the law held to the capped reference where the area model caps the pressure.
+        std::vector<double> positive;
+        for (double l : loads) {
+            if (l > 0.0) {
+                positive.push_back(l);
+            }
+        }
+        if (!positive.empty()) {
+            const double Ep = materials.reducedModulus();
+            const std::optional<double> H = in.hardness; // conductanceLawHardness
+            const std::string shown = law || persson == nullptr ? lawName : std::string("persson");
+            const bool capped = heldToCappedReference(o.model, shown, H.has_value());
+            const auto [lo, hi] = std::minmax_element(positive.begin(), positive.end());
+            const InterfaceRegime r =
+                interfaceRegime(spectrum, Ep, H, shown, persson != nullptr ? std::string("persson") : o.model, capped,
+                                *lo * Ep, *hi * Ep);
+            std::cerr << "multiscaleContact: " << r.describe() << std::endl;
         }
     }
     out << (pressures.empty() ? "" : "nominal_pressure,") << "load,area,pressure" << (conductance ? ",separation,h_per_k" : "");
@@ -870,6 +1018,13 @@ int main(int argc, char** argv)
                    "cooperMikicYovanovich: Vickers coefficients C1 [Pa], C2 of H_v = c1 (d_v/1 um)^c2, the "
                    "microhardness from Song & Yovanovich's correlation");
     app.add_flag("--info", o.info, "print the surface's parameters (McCool, fractal fit) to stderr");
+    app.add_flag("--check", o.check,
+                 "check the laws on this surface: the exact model (boundaryElement) on the --areal map, or on "
+                 "3 surfaces of 512 x 512 (--synthesize N) synthesized from the profile or spectrum, at the "
+                 "given pressures (up to 5) or 4 across their range, within p/(E' h') 1e-4 to 1e-1; capped at "
+                 "H where --Sy, --hardness or --hardness-from-yield say, elastic otherwise. Prints every law's "
+                 "ratio to the exact h_c/k_s, the closest, and whether the chosen law (--conductance-law, "
+                 "default " + defaultConductanceLaw() + ") is within 25 %");
 
     try {
         app.parse(argc, argv);

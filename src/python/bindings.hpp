@@ -10,12 +10,19 @@
 #include "doubleCaster.hpp" // first after pybind11.h: see there
 
 #include "roughContact/Error.hpp"
+#include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/models/ContactModel.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
 #include "roughContact/models/Persson.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 
+#include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace roughcontact_py {
 
@@ -32,6 +39,19 @@ void bindBoundaryElement(pybind11::module_& m);
 void bindThermal(pybind11::module_& m);
 /// SurfaceSpec, ContactInterface (interface.cpp).
 void bindInterface(pybind11::module_& m);
+/// check, SurfaceCheck (check.cpp).
+void bindCheck(pybind11::module_& m);
+
+/// The InterfaceSpec of ContactInterface's keyword arguments (interface.cpp), which check()
+/// takes too.
+roughContact::InterfaceSpec interfaceSpec(
+    const std::vector<roughContact::SurfaceSpec>& surfaces, const roughContact::Material& side1,
+    const roughContact::Material& side2, const std::string& model, const std::string& conductance,
+    std::optional<double> microhardness, std::optional<std::pair<double, double>> vickers,
+    std::optional<double> minPressure, std::optional<double> maxPressure, std::size_t pointsPerDecade,
+    std::optional<std::size_t> synthesize, std::uint64_t seed, std::optional<bool> periodic,
+    std::optional<double> hardness, bool hardnessFromYield, std::size_t bemPointsPerDecade,
+    std::optional<roughContact::GapSpec> gap, std::optional<std::string> detrend);
 
 /// A contact model built by name, with the spectrum and E' it was built from.
 struct Model {

@@ -44,6 +44,40 @@ SurfaceSpec parametricSurface(SurfaceSpec::Kind kind, std::vector<double> parame
 
 } // namespace
 
+InterfaceSpec interfaceSpec(const std::vector<SurfaceSpec>& surfaces, const Material& side1, const Material& side2,
+                            const std::string& model, const std::string& conductance,
+                            std::optional<double> microhardness, std::optional<std::pair<double, double>> vickers,
+                            std::optional<double> minPressure, std::optional<double> maxPressure,
+                            std::size_t pointsPerDecade, std::optional<std::size_t> synthesize, std::uint64_t seed,
+                            std::optional<bool> periodic, std::optional<double> hardness, bool hardnessFromYield,
+                            std::size_t bemPointsPerDecade, std::optional<GapSpec> gap, std::optional<std::string> detrend)
+{
+    InterfaceSpec s;
+    s.surfaces = surfaces;
+    s.side1 = side1;
+    s.side2 = side2;
+    s.model = model;
+    s.conductanceLaw = conductance;
+    s.microhardness = microhardness;
+    if (vickers) {
+        s.vickers = VickersCoefficients{vickers->first, vickers->second};
+    }
+    s.minPressure = minPressure;
+    s.maxPressure = maxPressure;
+    s.pointsPerDecade = pointsPerDecade;
+    s.synthesize = synthesize;
+    s.seed = seed;
+    s.periodic = periodic;
+    s.hardness = hardness;
+    s.hardnessFromYield = hardnessFromYield;
+    s.bemPointsPerDecade = bemPointsPerDecade;
+    s.gap = gap;
+    if (detrend) {
+        s.detrend = parseDetrend(*detrend, "detrend");
+    }
+    return s;
+}
+
 void bindInterface(py::module_& m)
 {
     py::class_<SurfaceSpec>(m, "SurfaceSpec",
@@ -117,29 +151,10 @@ void bindInterface(py::module_& m)
                          std::size_t pointsPerDecade, std::optional<std::size_t> synthesize, std::uint64_t seed,
                          std::optional<bool> periodic, std::optional<double> hardness, bool hardnessFromYield,
                          std::size_t bemPointsPerDecade, std::optional<GapSpec> gap, std::optional<std::string> detrend) {
-                 InterfaceSpec s;
-                 s.surfaces = surfaces;
-                 s.side1 = side1;
-                 s.side2 = side2;
-                 s.model = model;
-                 s.conductanceLaw = conductance;
-                 s.microhardness = microhardness;
-                 if (vickers) {
-                     s.vickers = VickersCoefficients{vickers->first, vickers->second};
-                 }
-                 s.minPressure = minPressure;
-                 s.maxPressure = maxPressure;
-                 s.pointsPerDecade = pointsPerDecade;
-                 s.synthesize = synthesize;
-                 s.seed = seed;
-                 s.periodic = periodic;
-                 s.hardness = hardness;
-                 s.hardnessFromYield = hardnessFromYield;
-                 s.bemPointsPerDecade = bemPointsPerDecade;
-                 s.gap = gap;
-                 if (detrend) {
-                     s.detrend = parseDetrend(*detrend, "detrend");
-                 }
+                 const InterfaceSpec s =
+                     interfaceSpec(surfaces, side1, side2, model, conductance, microhardness, vickers, minPressure,
+                                   maxPressure, pointsPerDecade, synthesize, seed, periodic, hardness,
+                                   hardnessFromYield, bemPointsPerDecade, gap, detrend);
                  py::gil_scoped_release release;
                  return std::make_unique<ContactInterface>(s);
              }),
@@ -229,6 +244,10 @@ void bindInterface(py::module_& m)
             py::arg("separation"), py::arg("T1"), py::arg("T2"),
             "(h_g, h_r) [W/(m^2 K)] at the separations Y [m] and the two face temperatures T1, T2 [K] (the gas "
             "at their mean), as the boundary condition adds them to h_c. ParameterError without a gap.")
+        .def_property_readonly(
+            "regime", [](const ContactInterface& ci) { return ci.regime().describe(); },
+            "The regime at the table's ends (p/E', p/(E' h'), P/H, the plasticity index) and the law's measured "
+            "accuracy band there (the log's lines).")
         .def("summary", &ContactInterface::summary, "A few lines for a log.");
 }
 

@@ -98,4 +98,5 @@ PYBIND11_MODULE(roughcontact, m)
 
     // ---- the interface
     roughcontact_py::bindInterface(m);
+    roughcontact_py::bindCheck(m);
 }

@@ -45,13 +45,14 @@ void bindThermal(py::module_& m)
 {
     m.def("conductance_law_names", &conductanceLawNames,
           "The conductance laws by name: jacksonBhavnaniFerguson, multiscaleBarber, persson, mikic, "
-          "cooperMikicYovanovich.");
+          "cooperMikicYovanovich, fittedElastoPlastic.");
     m.def("default_conductance_law", &defaultConductanceLaw, "The law used unless another is named.");
 
     py::class_<Law>(m, "ConductanceLaw", "A contact conductance law by name: h_c/k_s [1/m] at a nominal pressure [Pa].")
         .def(py::init([](const std::string& name, const Model* model, const Spectrum* spectrum,
                          std::optional<double> Eprime, std::optional<SurfaceRoughness> roughness,
-                         std::optional<double> microhardness, std::optional<std::pair<double, double>> vickers) {
+                         std::optional<double> microhardness, std::optional<std::pair<double, double>> vickers,
+                         std::optional<double> hardness) {
                  Law x;
                  ConductanceLawInputs in;
                  if (model != nullptr) {
@@ -69,6 +70,7 @@ void bindThermal(py::module_& m)
                  }
                  in.roughness = roughness;
                  in.microhardness = microhardness;
+                 in.hardness = hardness;
                  if (vickers) {
                      in.vickers = VickersCoefficients{vickers->first, vickers->second};
                  }
@@ -77,12 +79,14 @@ void bindThermal(py::module_& m)
              }),
              py::arg("name"), py::arg("model") = nullptr, py::arg("spectrum") = nullptr, py::arg("Eprime") = py::none(),
              py::arg("roughness") = py::none(), py::arg("microhardness") = py::none(), py::arg("vickers") = py::none(),
+             py::arg("hardness") = py::none(),
              "ConductanceLaw(name, model=None, spectrum=None, Eprime=None, roughness=None, microhardness=None, "
-             "vickers=None): name from conductance_law_names(). What each law needs: "
+             "vickers=None, hardness=None): name from conductance_law_names(). What each law needs: "
              "jacksonBhavnaniFerguson and multiscaleBarber a multi-scale Model; persson a spectrum (the "
              "model's by default) and E' [Pa] (the model's by default); mikic a SurfaceRoughness and E'; "
              "cooperMikicYovanovich a SurfaceRoughness and the microhardness H_c [Pa] or the Vickers "
-             "coefficients (c1 [Pa], c2). ParameterError names what is missing.")
+             "coefficients (c1 [Pa], c2); fittedElastoPlastic a SurfaceRoughness, E' and, for its plastic "
+             "branch, the cap `hardness` H [Pa] (None: elastic). ParameterError names what is missing.")
         .def_property_readonly("name", [](const Law& x) { return x.law->name(); }, "The law's name.")
         .def(
             "conductance_per_conductivity",

@@ -26,7 +26,8 @@ def test_names():
     assert rc.model_names()[:5] == rc.multiscale_model_names()
     assert "persson" in rc.model_names() and "jacksonGreen" in rc.multiscale_model_names()
     assert rc.conductance_law_names() == [
-        "jacksonBhavnaniFerguson", "multiscaleBarber", "persson", "mikic", "cooperMikicYovanovich"]
+        "jacksonBhavnaniFerguson", "multiscaleBarber", "persson", "mikic", "cooperMikicYovanovich",
+        "fittedElastoPlastic"]
     assert rc.default_conductance_law() in rc.conductance_law_names()
 
 

@@ -12,6 +12,7 @@
 
 #include "roughContact/Limits.hpp"
 #include "roughContact/interface/BoundaryElementTable.hpp"
+#include "roughContact/interface/SurfaceCheck.hpp"
 #include "roughContact/models/BoundaryElement.hpp"
 
 #include "roughContact/io/Units.hpp"
@@ -536,6 +537,7 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
         {
             spec.gap = readGap(dict.subDict("gap"));
         }
+        const bool check = dict.getOrDefault<bool>("check", false);
         FatalIOError.throwExceptions(throwing);
 
         Info<< "thermalContactResistance: building the contact table for '"
@@ -566,6 +568,47 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
             << "    " << dictFile << " is read once: changes to it"
             << " (and to the surface files) during the run are not used"
             << " until the run is restarted" << endl;
+        if (check && Pstream::master())
+        {
+            // check yes: the exact model on this surface against every
+            // law (SurfaceCheck.hpp); its report in the log, a warning when
+            // the chosen law misses it by more than 25 %.
+            roughContact::SurfaceCheckOptions options;
+            options.log = [](const std::string& line)
+            {
+                Info<< "    " << line.c_str() << endl;
+            };
+            // A check that cannot be made is said, and the run goes on:
+            // it is a diagnostic, not a condition of the run.
+            try
+            {
+            const roughContact::SurfaceCheck c =
+                roughContact::checkSurface(spec, options);
+            Info<< c.report().c_str() << endl;
+            const std::vector<double> misses = c.chosenMisses();
+            if (!misses.empty())
+            {
+                WarningInFunction
+                    << who.c_str() << ": contact entry '" << name << "' in "
+                    << dictFile << ": the conductance law "
+                    << c.chosenLaw.c_str() << " is off the exact conductance"
+                    << " of this surface by more than "
+                    << label(roughContact::checkTolerance*100 + 0.5)
+                    << " % at " << label(misses.size()) << " of "
+                    << label(c.pressures.size()) << " checked pressures;"
+                    << " the closest law here is " << c.closestLaw.c_str()
+                    << " (the check's table is above)" << endl;
+            }
+            }
+            catch (const std::exception& e)
+            {
+                WarningInFunction
+                    << who.c_str() << ": contact entry '" << name << "' in "
+                    << dictFile << ": check yes: the check could not be"
+                    << " made: " << e.what() << "; the run goes on"
+                    << " without it" << endl;
+            }
+        }
         cache.emplace(key, iface);
         return iface;
     }

@@ -4,6 +4,7 @@
 #include "RunCommand.hpp"
 
 #include "roughContact/interface/ContactInterface.hpp"
+#include "roughContact/interface/SurfaceCheck.hpp"
 #include "roughContact/io/ArealReader.hpp"
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/io/X3pReader.hpp"
@@ -106,7 +107,7 @@ TEST(Cli, HelpDocumentsEveryOptionAndModel)
     for (const char* opt : {"--profile", "--units", "--spectrum", "--length", "--power-law", "--fractal",
                             "--model", "--E", "--nu", "--Eprime", "--Sy", "--loads", "--load-range", "--pressures",
                             "--levels", "--stride", "--areal", "--dy", "--direction", "--fill-invalid",
-                            "--conductance-law", "--vickers", "--hardness-from-yield"}) {
+                            "--conductance-law", "--vickers", "--hardness-from-yield", "--check"}) {
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
     }
     for (const std::string& m : modelNames()) {
@@ -211,6 +212,7 @@ struct StandinLaws {
         in.roughness = profileRoughness(profile);
         in.Eprime = materials.reducedModulus();
         in.microhardness = materials.hardness("--hardness-from-yield");
+        in.hardness = conductanceLawHardness(in.microhardness, materials); // fittedElastoPlastic's cap
         return in;
     }
 };
@@ -292,7 +294,7 @@ TEST(Cli, EveryConductanceLawSideBySide)
                                  " --loads 1e-4 --conductance-law all");
     ASSERT_EQ(gw.status, 0) << gw.err;
     EXPECT_EQ(gw.out.substr(0, gw.out.find('\n')),
-              "load,area,pressure,separation,h_per_k,h_per_k_persson,h_per_k_mikic");
+              "load,area,pressure,separation,h_per_k,h_per_k_persson,h_per_k_mikic,h_per_k_fittedElastoPlastic");
     EXPECT_NE(gw.err.find("no column for jacksonBhavnaniFerguson"), std::string::npos) << gw.err;
     EXPECT_NE(gw.err.find("no column for cooperMikicYovanovich"), std::string::npos) << gw.err;
 }
@@ -703,4 +705,47 @@ TEST(Cli, PressuresErrors)
     expectError(surface + " --Eprime 2e11 --pressures 1e6,", {"--pressures", "empty item"});
     expectError(surface + " --Eprime 2e11 --pressures 1e20", {"--pressures", "1e+20 Pa", "E' = 2e+11 Pa"});
     expectError(surface + " --Eprime 2e11", {"--loads, --load-range or --pressures"});
+}
+
+TEST(Cli, CheckIsTheLibrarysSurfaceCheck)
+{
+    // --check: the report as # lines, then the library's checkSurface as CSV, on the same surface
+    // (the stand-in synthesized on 32^2, seeds 1-3) and pressures; progress on stderr.
+    const double Ep = 179.52e9 / (1 - 0.32 * 0.32);
+    const std::vector<double> pressures{0.3e-3 * Ep * 0.05, 3e-3 * Ep * 0.05};
+    std::ostringstream given;
+    given.precision(17);
+    given << pressures[0] << ',' << pressures[1];
+    const CommandResult r = run("--profile '" + standin + "' --model jacksonGreen" + steel + " --synthesize 32 --check --pressures " + given.str());
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("check: surface 3 of 3, pressure 2 of 2"), std::string::npos) << r.err;
+    std::istringstream in(r.out);
+    std::string csvText;
+    std::string report;
+    for (std::string line; std::getline(in, line);) {
+        (line.rfind("# ", 0) == 0 ? report : csvText) += line + "\n";
+    }
+    SurfaceCheckInputs inputs;
+    SurfaceSpec s;
+    s.kind = SurfaceSpec::Kind::profile;
+    s.file = standin;
+    inputs.surfaces = {s};
+    inputs.materials = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
+    inputs.model = "jacksonGreen";
+    inputs.minPressure = pressures[0];
+    inputs.maxPressure = pressures[1];
+    SurfaceCheckOptions options;
+    options.gridSize = 32;
+    options.pressures = pressures;
+    const SurfaceCheck c = checkSurface(inputs, options);
+    ASSERT_EQ(c.pressures.size(), 2U) << c.report();
+    EXPECT_EQ(csvText, c.csv());
+    EXPECT_NE(report.find("# check of the surface: 3 seeds of 32 x 32"), std::string::npos) << report;
+    EXPECT_NE(report.find("closest: " + c.closestLaw), std::string::npos) << report;
+    const std::string p = "--profile '" + standin + "' --model jacksonGreen" + steel + " --check";
+    expectError(p + " --conductance-law all --loads 1e-4", {"--check", "every law"});
+    expectError(p + " --levels --loads 1e-4", {"--check", "--levels"});
+    expectError("--profile '" + standin + "' --model persson" + steel + " --check --loads 1e-4", {"--check", "multi-scale"});
+    expectError(p + " --loads 1e-12", {"none of the pressures given lies in the checked range"});
+    expectError(p + " --synthesize 32,4 --loads 1e-4", {"--synthesize", "grid size N only"});
 }

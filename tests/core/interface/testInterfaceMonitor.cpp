@@ -97,7 +97,9 @@ TEST(InterfaceMonitor, TableHasEveryPointOfTheInterfacesTable)
     while (std::getline(is, line)) {
         (line.rfind('#', 0) == 0 ? (void)++comments : rows.push_back(line));
     }
-    EXPECT_EQ(comments, 3U);
+    // The description, the summary (its first line and the regime's three), the formula.
+    EXPECT_EQ(comments, 6U);
+    EXPECT_NE(os.str().find("#     regime: h' = "), std::string::npos) << os.str();
     ASSERT_EQ(rows.size(), ci.table().pressures().size() + 1);
     EXPECT_EQ(rows[0], "P_Pa,Ar_An,hc_per_ks_per_m");
     // The first and last points, to the 10 digits written.

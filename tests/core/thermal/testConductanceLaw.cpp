@@ -12,6 +12,7 @@
 #include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 #include "roughContact/thermal/CooperMikicYovanovich.hpp"
+#include "roughContact/thermal/FittedElastoPlastic.hpp"
 #include "roughContact/thermal/Mikic.hpp"
 #include "roughContact/thermal/MultiscaleBarber.hpp"
 
@@ -54,6 +55,7 @@ TEST(ConductanceLaw, EveryNameBuildsAndIsTheFormulaItNames)
     in.roughness = spectrumRoughness(s);
     in.Eprime = steel.reducedModulus();
     in.microhardness = 1.42e9;
+    in.hardness = 1.2e9;
     ASSERT_FALSE(conductanceLawNames().empty());
     EXPECT_TRUE(isConductanceLaw(defaultConductanceLaw()));
     const PerssonModel persson(s, steel.reducedModulus());
@@ -76,6 +78,8 @@ TEST(ConductanceLaw, EveryNameBuildsAndIsTheFormulaItNames)
                 expected = mikicConductancePerConductivity(P, *in.roughness, in.Eprime);
             } else if (name == "cooperMikicYovanovich") {
                 expected = cooperMikicYovanovichConductancePerConductivity(P, *in.roughness, 1.42e9);
+            } else if (name == "fittedElastoPlastic") {
+                expected = fittedElastoPlasticConductancePerConductivity(P, *in.roughness, in.Eprime, 1.2e9);
             } else {
                 ADD_FAILURE() << "no expectation for the law " << name;
             }

@@ -127,14 +127,7 @@ ArealSurface solvedSurface(const InterfaceSpec& spec)
             throw ParameterError("synthesize", "makes an areal surface from a profile, spectrum, powerLaw or "
                                                "fractal description; an areal surface is one already");
         }
-        std::optional<ArealSurface> total;
-        for (const SurfaceSpec& s : spec.surfaces) {
-            // As read: the detrending (BoundaryElementModel) is of the composite, and both kinds
-            // are linear, so it is the composite of the detrended maps.
-            const ArealSurface one = readAreal(s.file, s.arealOptions);
-            total = total ? compositeSurface(*total, one) : one;
-        }
-        return *total;
+        return arealComposite(spec.surfaces);
     }
     if (!spec.synthesize) {
         throw ParameterError("model boundaryElement",
@@ -154,6 +147,24 @@ ArealSurface solvedSurface(const InterfaceSpec& spec)
 }
 
 } // namespace
+
+ArealSurface arealComposite(const std::vector<SurfaceSpec>& surfaces)
+{
+    if (surfaces.empty() || surfaces.size() > 2) {
+        throw ParameterError("surfaces", "give one equivalent surface or one per side");
+    }
+    std::optional<ArealSurface> total;
+    for (const SurfaceSpec& s : surfaces) {
+        if (s.kind != SurfaceSpec::Kind::areal) {
+            throw ParameterError("surfaces", "the composite of areal maps takes areal surfaces only");
+        }
+        // As read: the detrending (BoundaryElementModel) is of the composite, and both kinds
+        // are linear, so it is the composite of the detrended maps.
+        const ArealSurface one = readAreal(s.file, s.arealOptions);
+        total = total ? compositeSurface(*total, one) : one;
+    }
+    return *total;
+}
 
 ContactTable BoundaryElementTablePoints::table(double Eprime) const
 {

@@ -30,6 +30,7 @@
 namespace roughContact {
 
 struct InterfaceSpec;
+struct SurfaceSpec;
 struct BoundaryElementPoint;
 
 /// The points of a boundary-element table: what ContactTable::fromPoints takes, and what a
@@ -66,6 +67,10 @@ struct BoundaryElementTableRead {
     std::optional<BoundaryElementTablePoints> points; ///< set when ok
 };
 
+/// The solved surface of one or two areal maps (surfaces of kind areal): their composite
+/// (compositeSurface), as read; the solve detrends it. ParameterError for another kind or count.
+ArealSurface arealComposite(const std::vector<SurfaceSpec>& surfaces);
+
 class BoundaryElementTable {
 public:
     /// The solved surface, the materials and the loads of spec (model boundaryElement; reads
@@ -90,6 +95,8 @@ public:
     /// What the solve removes from it (the spec's detrend, or defaultDetrend(periodic())).
     Detrend detrend() const noexcept { return detrend_; }
     bool periodic() const noexcept { return periodic_; }
+    /// The cap p <= H [Pa] of the solve (none: elastic).
+    std::optional<double> hardness() const noexcept { return hardness_; }
 
     /// Progress of build(): after each load, the loads done, their number, the point and the
     /// seconds since the start.

@@ -70,8 +70,6 @@ SurfaceRoughness SurfaceSpec::roughness() const
     }
 }
 
-namespace {
-
 Spectrum equivalentSurface(const std::vector<SurfaceSpec>& surfaces)
 {
     if (surfaces.empty() || surfaces.size() > 2) {
@@ -84,8 +82,6 @@ Spectrum equivalentSurface(const std::vector<SurfaceSpec>& surfaces)
     }
     return *total;
 }
-
-} // namespace
 
 ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElementTablePoints* boundaryElementTable)
     : surface_(equivalentSurface(spec.surfaces)), materials_(ContactMaterials::pair(spec.side1, spec.side2)),
@@ -112,6 +108,14 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
         bemSurface_ = os.str();
         surfaceChecksum_ =
             checksumHex(roughContact::surfaceChecksum(surface_, bem.surface().detrended(bem.detrend()), bem.periodic()));
+        // The regime of what is solved: a synthesized surface holds the levels up to its grid's
+        // Nyquist frequency (ArealSynthesis.hpp), a map its own.
+        const Spectrum solvedSpectrum =
+            spec.synthesize ? surface_.truncated(double(*spec.synthesize / 2) / surface_.length() * (1.0 + 1e-12))
+                            : surface_;
+        regime_ = interfaceRegime(solvedSpectrum, materials_.reducedModulus(), bem.hardness(), conductanceLaw_,
+                                  "boundaryElement", bem.hardness().has_value(), table_->pressures().front(),
+                                  table_->pressures().back());
         buildGap(spec);
         return;
     }
@@ -143,6 +147,7 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
     in.Eprime = Ep;
     in.microhardness = spec.microhardness;
     in.vickers = spec.vickers;
+    in.hardness = conductanceLawHardness(spec.microhardness, materials_);
     if (conductanceLawNeedsRoughness(conductanceLaw_)) {
         std::optional<SurfaceRoughness> r;
         for (const SurfaceSpec& s : spec.surfaces) {
@@ -153,6 +158,12 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
     const std::unique_ptr<ConductanceLaw> law = makeConductanceLaw(conductanceLaw_, in);
     table_ = std::make_unique<ContactTable>(*model_, spec.minPressure.value_or(1e-9 * Ep),
                                             spec.maxPressure.value_or(Ep), spec.pointsPerDecade, law.get());
+    // Held to the capped reference when the area model caps the pressure, or when the law has a
+    // plastic branch and a cap to use; P/H with the law's cap (conductanceLawHardness).
+    const std::optional<double> H = conductanceLawHardness(spec.microhardness, materials_);
+    const bool capped = heldToCappedReference(spec.model, conductanceLaw_, H.has_value());
+    regime_ = interfaceRegime(surface_, Ep, H, conductanceLaw_, spec.model, capped, table_->pressures().front(),
+                              table_->pressures().back());
     buildGap(spec);
 }
 
@@ -230,6 +241,7 @@ std::string ContactInterface::summary() const
     if (gap_) {
         os << "; " << gap_->summary();
     }
+    os << "\n    " << regime_.describe();
     return os.str();
 }
 

@@ -8,6 +8,7 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/interface/BoundaryElementTable.hpp"
 #include "roughContact/interface/InterfaceGap.hpp"
+#include "roughContact/interface/InterfaceRegime.hpp"
 #include "roughContact/io/ArealReader.hpp"
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/material/Materials.hpp"
@@ -95,6 +96,10 @@ struct InterfaceSpec {
     std::optional<GapSpec> gap;
 };
 
+/// The equivalent surface of one or two surfaces: the spectrum of one, the combination of two
+/// (Spectrum::combine, seed §2.1). ParameterError for none or more than two.
+Spectrum equivalentSurface(const std::vector<SurfaceSpec>& surfaces);
+
 /// What a boundary condition needs at one face.
 struct FaceContact {
     double areaFraction = 0.0; ///< A_r/A_n
@@ -154,7 +159,13 @@ public:
     /// a synthesized surface's seed and grid size change too.
     const std::string& surfaceChecksum() const noexcept { return surfaceChecksum_; }
     double reducedModulus() const noexcept { return materials_.reducedModulus(); }
-    /// A few lines for a log: surface, levels, E', model, table range, complete contact.
+    /// The regime at the table's two ends and the chosen law's measured accuracy band there
+    /// (InterfaceRegime.hpp): the hardness is the boundaryElement cap, or 2.84 S_y where the
+    /// materials have one; the law is held to the capped reference when the area model caps the
+    /// pressure (jacksonGreen, truncation).
+    const InterfaceRegime& regime() const noexcept { return regime_; }
+    /// A few lines for a log: surface, levels, E', model, table range, complete contact, and the
+    /// regime (regime().describe()).
     std::string summary() const;
 
 private:
@@ -167,6 +178,7 @@ private:
     std::string bemSurface_; ///< boundaryElement: what was solved (for summary())
     std::string surfaceChecksum_;
     std::optional<InterfaceGap> gap_;
+    InterfaceRegime regime_;
 
     /// Builds gap_ from spec.gap (after the table).
     void buildGap(const InterfaceSpec& spec);

@@ -50,8 +50,13 @@ std::string interfaceSeriesRow(double time, double heatFromSide1, double heatInt
 void writeInterfaceTable(std::ostream& os, const ContactInterface& iface, const std::string& description)
 {
     const ContactTable& t = iface.table();
+    // The summary's lines (the regime's included), each a comment.
+    std::string summary = iface.summary();
+    for (std::size_t at = summary.find('\n'); at != std::string::npos; at = summary.find('\n', at + 3)) {
+        summary.replace(at, 1, "\n# ");
+    }
     os << "# thermalContactResistance: the pressure table of " << description << "\n"
-       << "# " << iface.summary() << "\n"
+       << "# " << summary << "\n"
        << "# h_c = k_s * hc_per_ks_per_m, k_s = 2 k1 k2/(k1 + k2); below the first pressure the first interval's "
           "power law, above the last its values";
     if (t.completeContactPressure() < std::numeric_limits<double>::infinity()) {

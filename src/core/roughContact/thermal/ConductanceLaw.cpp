@@ -7,6 +7,7 @@
 #include "roughContact/models/Persson.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 #include "roughContact/thermal/CooperMikicYovanovich.hpp"
+#include "roughContact/thermal/FittedElastoPlastic.hpp"
 #include "roughContact/thermal/Mikic.hpp"
 #include "roughContact/thermal/MultiscaleBarber.hpp"
 
@@ -99,6 +100,25 @@ private:
     std::optional<VickersCoefficients> vickers_;
 };
 
+class FittedElastoPlasticLaw final : public ConductanceLaw {
+public:
+    FittedElastoPlasticLaw(const SurfaceRoughness& r, double Eprime, std::optional<double> H)
+        : r_(r), Eprime_(Eprime), H_(H)
+    {
+        fittedElastoPlasticConductancePerConductivity(0.0, r_, Eprime_, H_); // checks the inputs once
+    }
+    std::string name() const override { return "fittedElastoPlastic"; }
+    double perConductivity(double P) const override
+    {
+        return fittedElastoPlasticConductancePerConductivity(P, r_, Eprime_, H_);
+    }
+
+private:
+    SurfaceRoughness r_;
+    double Eprime_;
+    std::optional<double> H_;
+};
+
 class PerssonLaw final : public ConductanceLaw {
 public:
     PerssonLaw(const Spectrum& spectrum, double Eprime) : model_(spectrum, Eprime) {}
@@ -132,10 +152,21 @@ double ConductanceLaw::meanSeparation(double P) const
     return std::numeric_limits<double>::quiet_NaN();
 }
 
+std::optional<double> conductanceLawHardness(std::optional<double> microhardness, const ContactMaterials& materials)
+{
+    if (microhardness) {
+        return microhardness;
+    }
+    if (materials.hasYieldStrength()) {
+        return materials.hardness("conductance law");
+    }
+    return std::nullopt;
+}
+
 const std::vector<std::string>& conductanceLawNames()
 {
     static const std::vector<std::string> names = {"jacksonBhavnaniFerguson", "multiscaleBarber", "persson",
-                                                   "mikic", "cooperMikicYovanovich"};
+                                                   "mikic", "cooperMikicYovanovich", "fittedElastoPlastic"};
     return names;
 }
 
@@ -153,7 +184,7 @@ bool isConductanceLaw(const std::string& name)
 
 bool conductanceLawNeedsRoughness(const std::string& name)
 {
-    return name == "mikic" || name == "cooperMikicYovanovich";
+    return name == "mikic" || name == "cooperMikicYovanovich" || name == "fittedElastoPlastic";
 }
 
 std::unique_ptr<ConductanceLaw> makeConductanceLaw(const std::string& name, const ConductanceLawInputs& in)
@@ -190,6 +221,9 @@ std::unique_ptr<ConductanceLaw> makeConductanceLaw(const std::string& name, cons
             throw ParameterError(name, "give the microhardness H_c or the Vickers coefficients, not both");
         }
         return std::make_unique<CooperMikicYovanovichLaw>(needRoughness(name, in), in.microhardness, in.vickers);
+    }
+    if (name == "fittedElastoPlastic") {
+        return std::make_unique<FittedElastoPlasticLaw>(needRoughness(name, in), in.Eprime, in.hardness);
     }
     std::string known;
     for (const auto& n : conductanceLawNames()) {

@@ -17,8 +17,12 @@
 //   cooperMikicYovanovich    the Cooper-Mikic-Yovanovich plastic correlation
 //                            (CooperMikicYovanovich.hpp). Needs sigma, m and the microhardness
 //                            H_c, given or from Vickers coefficients (Microhardness.hpp).
+//   fittedElastoPlastic      Mikic's elastic form and the CMY plastic-spot geometry, refitted to
+//                            the exact conductance and blended (FittedElastoPlastic.hpp). Needs
+//                            sigma, m, E' and, for the plastic branch, the cap H.
 #pragma once
 
+#include "roughContact/material/Materials.hpp"
 #include "roughContact/surface/Roughness.hpp"
 #include "roughContact/thermal/Microhardness.hpp"
 
@@ -59,7 +63,15 @@ struct ConductanceLawInputs {
     double Eprime = 0.0;                          ///< E' [Pa]: mikic, persson
     std::optional<double> microhardness;          ///< H_c [Pa]: cooperMikicYovanovich
     std::optional<VickersCoefficients> vickers;   ///< or H_c from these
+    /// fittedElastoPlastic: the plastic cap H [Pa] (the microhardness where given, else 2.84 S_y
+    /// of the yielding material); none: its elastic branch alone.
+    std::optional<double> hardness;
 };
+
+/// The cap H [Pa] of the laws that take one (ConductanceLawInputs::hardness): the microhardness
+/// where given, else 2.84 S_y of the yielding material, else none (elastic). The one rule for the
+/// condition, the CLI and the check.
+std::optional<double> conductanceLawHardness(std::optional<double> microhardness, const ContactMaterials& materials);
 
 /// Every law's name, in the order the documentation lists them.
 const std::vector<std::string>& conductanceLawNames();

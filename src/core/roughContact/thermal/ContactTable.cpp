@@ -82,7 +82,10 @@ ContactTable::ContactTable(const MultiscaleModel& model, double minPressure, dou
         const double area = trace.empty() ? 0.0 : trace.back().area / model.nominalArea();
         const double h = law != nullptr ? law->perConductivity(P)
                                         : constrictionConductancePerConductivity(trace, model.nominalArea());
-        if (!(area > 0.0 && h > 0.0 && std::isfinite(h))) {
+        // +inf from a law: it says the surfaces conduct perfectly from here on (a law with its
+        // own complete contact: fittedElastoPlastic at P = H or its pole); the grid ends there
+        // as at the conductance ceiling.
+        if (!(area > 0.0 && h > 0.0 && (std::isfinite(h) || (law != nullptr && h == HUGE_VAL)))) {
             std::ostringstream os;
             os << "the model gives A_r/A_n = " << area << " and h_c/k_s = " << h << " at " << P
                << " Pa; the table needs positive, finite values";
@@ -102,9 +105,34 @@ ContactTable::ContactTable(const MultiscaleModel& model, double minPressure, dou
             break;
         }
         samples.push_back(solve(P));
+        if (std::isinf(samples.back().h)) {
+            samples.pop_back(); // the law's own complete contact: the table ends before it
+            pPerfect_ = P;
+            end_ = End::conductanceCeiling;
+            break;
+        }
         if (samples.back().h > conductanceCeiling) {
             end_ = End::conductanceCeiling;
             break;
+        }
+    }
+    // The law's own perfect conductance cut the grid: close the gap to it the same way (the
+    // table holds the last finite h up to pPerfect_).
+    if (pPerfect_ < std::numeric_limits<double>::infinity()) {
+        if (samples.empty()) {
+            std::ostringstream os;
+            os << "the conductance law " << (law != nullptr ? law->name() : std::string("")) << " gives h_c/k_s = inf "
+               << "(perfect conductance) at the table's lowest pressure " << minPressure << " Pa; lower minPressure";
+            throw ParameterError("contact table", os.str());
+        }
+        while (pPerfect_ / samples.back().P - 1.0 > 1e-6) {
+            const double P = std::sqrt(samples.back().P * pPerfect_);
+            const Sample s = solve(P);
+            if (std::isinf(s.h)) {
+                pPerfect_ = P;
+            } else {
+                samples.push_back(s);
+            }
         }
     }
     // Complete contact cut the grid: close the gap to it (up to 1e-6 relative), which would
@@ -114,6 +142,12 @@ ContactTable::ContactTable(const MultiscaleModel& model, double minPressure, dou
             const double P = pComplete_ * (1.0 - gap);
             if (P > samples.back().P) {
                 samples.push_back(solve(P));
+                if (std::isinf(samples.back().h)) {
+                    samples.pop_back();
+                    pPerfect_ = P;
+                    end_ = End::conductanceCeiling;
+                    break;
+                }
                 if (samples.back().h > conductanceCeiling) {
                     end_ = End::conductanceCeiling;
                     break;
@@ -329,6 +363,9 @@ ContactTable::Values ContactTable::values(double P) const
         return {1.0, std::numeric_limits<double>::infinity()};
     }
     const Position where = locate(P);
+    if (P >= pPerfect_) {
+        return {std::min(1.0, at(logArea_, where)), std::numeric_limits<double>::infinity()};
+    }
     return {std::min(1.0, at(logArea_, where)), at(logH_, where)};
 }
 

@@ -7,6 +7,7 @@
 #include "roughContact/models/MultiscaleModel.hpp"
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace roughContact {
@@ -92,6 +93,10 @@ public:
     /// The lowest pressure [Pa] of complete contact (A_r = A_n), to 1e-10 relative; +infinity
     /// when the model does not reach it below limits::maximumLoad E' (Limits.hpp).
     double completeContactPressure() const noexcept { return pComplete_; }
+    /// The pressure [Pa] from which the law says the conductance is infinite before the model's
+    /// complete contact (fittedElastoPlastic at P = H or at its pole): h_c/k_s is +inf there,
+    /// A_r/A_n the model's (held at the table's end); +infinity: none.
+    double perfectConductancePressure() const noexcept { return pPerfect_; }
     /// The table's points: pressures [Pa] and the values there.
     const std::vector<double>& pressures() const noexcept { return p_; }
     const std::vector<double>& areaFractions() const noexcept { return area_; }
@@ -123,6 +128,7 @@ private:
 
     double Eprime_ = 0.0;
     double pComplete_ = 0.0;
+    double pPerfect_ = std::numeric_limits<double>::infinity();
     End end_ = End::maxPressure;
     std::vector<double> p_;
     std::vector<double> logP_;

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "roughContact/interface/InterfaceRegime.hpp"
+
+#include "roughContact/surface/SpectralMoments.hpp"
+#include "roughContact/surface/Spectrum.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace roughContact {
+
+namespace {
+
+RegimeAt regimeAt(double P, double Eprime, double gradient, std::optional<double> H, const std::string& law,
+                  const std::string& areaModel, bool capped)
+{
+    RegimeAt r;
+    r.pressure = P;
+    r.load = P / Eprime;
+    r.loadPerGradient = gradient > 0.0 ? r.load / gradient : 0.0;
+    if (H) {
+        r.perHardness = P / *H;
+    }
+    if (areaModel != "boundaryElement") {
+        r.band = measuredAccuracy(law, areaModel, capped, r.loadPerGradient);
+    }
+    return r;
+}
+
+} // namespace
+
+bool heldToCappedReference(const std::string& areaModel, const std::string& law, bool hasCap)
+{
+    return areaModel == "jacksonGreen" || areaModel == "truncation" ||
+           ((law == "fittedElastoPlastic" || law == "cooperMikicYovanovich") && hasCap);
+}
+
+InterfaceRegime interfaceRegime(const Spectrum& surface, double Eprime, std::optional<double> hardness,
+                                const std::string& law, const std::string& areaModel, bool capped, double Plow,
+                                double Phigh)
+{
+    InterfaceRegime out;
+    const SpectralMoments m = spectralMoments(surface);
+    out.reducedModulus = Eprime;
+    out.gradient = std::sqrt(2.0 * m.m2);
+    out.hardness = hardness;
+    out.law = law;
+    out.areaModel = areaModel;
+    out.capped = capped;
+    if (hardness) {
+        try {
+            const SummitParameters s = mcCoolParameters(m);
+            const double psi = Eprime / *hardness * std::sqrt(s.sigmaS / s.R);
+            if (std::isfinite(psi)) {
+                out.plasticityIndex = psi;
+            }
+        } catch (const std::exception&) {
+            // Too few levels for McCool's parameters: no index.
+        }
+    }
+    out.low = regimeAt(Plow, Eprime, out.gradient, hardness, law, areaModel, capped);
+    out.high = regimeAt(Phigh, Eprime, out.gradient, hardness, law, areaModel, capped);
+    return out;
+}
+
+std::string InterfaceRegime::describe() const
+{
+    std::ostringstream os;
+    os << std::setprecision(3);
+    os << "regime: h' = " << gradient;
+    if (hardness) {
+        os << ", H = " << *hardness << " Pa";
+        if (gradient > 0.0) {
+            os << ", H/(E' h') = " << *hardness / (reducedModulus * gradient);
+        }
+        if (plasticityIndex) {
+            os << ", plasticity index " << *plasticityIndex
+               << (*plasticityIndex < 0.6 ? " (elastic summits)" : *plasticityIndex > 1.0 ? " (plastic summits)" : "");
+        }
+    } else {
+        os << ", elastic (no hardness)";
+    }
+    for (const RegimeAt* r : {&low, &high}) {
+        os << "\n    at " << r->pressure << " Pa: p/E' = " << r->load << ", p/(E' h') = " << r->loadPerGradient;
+        if (r->perHardness) {
+            os << ", P/H = " << *r->perHardness;
+        }
+        os << "; " << law;
+        if (areaModel == "boundaryElement") {
+            os << ": the exact model";
+        } else {
+            os << " on " << areaModel << (capped ? " (capped reference)" : " (elastic reference)") << ": "
+               << describeAccuracy(r->band, r->loadPerGradient);
+        }
+    }
+    return os.str();
+}
+
+} // namespace roughContact

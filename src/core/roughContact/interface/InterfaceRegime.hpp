@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The regime of an interface, said out loud (issue 20, item 3): at the two ends of its pressure
+// range, the load p/E', the load over the rms gradient p/(E' h') (the axis on which rough
+// surfaces of different roughness compare: the elastic A_r/A_n is about 2 p/(E' h') at light
+// load), the plastic load P/H, and the surface's plasticity index; with the measured accuracy
+// band of the chosen law there (MeasuredAccuracy.hpp).
+//
+// h' is the areal rms gradient sqrt(2 m2) of an isotropic surface whose line scans have the rms
+// slope sqrt(m2) (SpectralMoments.hpp). The plasticity index is Greenwood & Williamson's
+// psi = (E'/H) sqrt(sigma_s/R) (Proc. R. Soc. A 295 (1966) 300, their Eq. 19 with H for the
+// flow pressure), sigma_s and R McCool's summit parameters of the spectrum (SpectralMoments.hpp):
+// below about 0.6 the summits stay elastic, above 1 they flow. For a multi-scale spectrum it
+// depends on the finest level kept (sqrt(sigma_s/R) grows with the slopes); H/(E' h') is printed
+// beside it as the scale-free measure (the report's machined metals: 0.03 to 0.3).
+#pragma once
+
+#include "roughContact/thermal/MeasuredAccuracy.hpp"
+
+#include <optional>
+#include <string>
+
+namespace roughContact {
+
+class ContactMaterials;
+class Spectrum;
+
+struct RegimeAt {
+    double pressure = 0.0;            ///< P [Pa]
+    double load = 0.0;                ///< P/E'
+    double loadPerGradient = 0.0;     ///< P/(E' h')
+    std::optional<double> perHardness; ///< P/H where there is a hardness
+    std::optional<AccuracyBand> band; ///< the chosen law's measured band there
+};
+
+struct InterfaceRegime {
+    double reducedModulus = 0.0;               ///< E' [Pa]
+    double gradient = 0.0;                     ///< h'
+    std::optional<double> hardness;            ///< H [Pa]
+    std::optional<double> plasticityIndex;     ///< psi, with a hardness
+    std::string law;                           ///< the chosen law ("boundaryElement (exact)" for the exact model)
+    std::string areaModel;                     ///< the area model
+    bool capped = false;                       ///< compared with the capped reference
+    RegimeAt low;                              ///< at the range's lowest pressure
+    RegimeAt high;                             ///< at its highest
+
+    /// Two lines for a log: the regime at both ends and the band of the law there.
+    std::string describe() const;
+};
+
+/// Whether a law on an area model is held to the capped reference: when the model caps the
+/// pressure (jacksonGreen, truncation), or when the law has a plastic branch (fittedElastoPlastic,
+/// cooperMikicYovanovich) and a cap to use. The one rule for the condition and the CLI.
+bool heldToCappedReference(const std::string& areaModel, const std::string& law, bool hasCap);
+
+/// The regime of an interface on `surface` (its spectrum) between `materials` at the pressures
+/// Plow and Phigh [Pa], with the hardness H [Pa] (none: elastic; compared with the elastic
+/// reference), the chosen law and area model (a multi-scale model's name, or boundaryElement,
+/// whose answer is the exact one). capped: the area model limits the pressure (jacksonGreen,
+/// truncation), so the law is held to the capped reference.
+InterfaceRegime interfaceRegime(const Spectrum& surface, double Eprime, std::optional<double> hardness,
+                                const std::string& law, const std::string& areaModel, bool capped, double Plow,
+                                double Phigh);
+
+} // namespace roughContact

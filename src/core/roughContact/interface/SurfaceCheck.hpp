@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The check of a user's own surface (issue 20, item 4): the exact (boundary-element) model
+// solved on the user's surface at a few pressures across the interface's range, and every
+// conductance law's h_c/k_s held to it there, so a user sees how far the law they chose is from
+// the exact answer on their own surface, and which law is closest.
+//
+// What is solved. A measured areal map (surfaces of kind areal): the map itself (the composite
+// of two), as the boundaryElement model solves it (non-periodic unless `periodic`). A 1-D
+// description (profile, spectrum, power law, fractal; the equivalent of two): `seeds` periodic
+// N x N Gaussian surfaces synthesized from its spectrum (synthesizeIsotropic) cut at N/8
+// levels, the shortest wavelength 8 cells (the convention of the fidelity report,
+// docs/validation/fidelity.md, at which the exact conductance is converged to a few per cent
+// from p/E' of about 1e-3 on). The laws are built on the same cut spectrum, so law and exact
+// see one surface; what the cut leaves out is said (levels kept of levels given).
+//
+// Elastic or capped as the materials say: the cap p <= H where the spec gives a hardness (or
+// hardnessFromYield) or the yielding material has S_y (H = 2.84 S_y), elastic otherwise.
+//
+// The pressures. `pressureCount` log spaced over the spec's table range [minPressure,
+// maxPressure] (its defaults, ContactInterface.hpp) clipped to p/(E' h') within [1e-4, 1e-1]
+// (h' the areal rms gradient of the checked surface: lighter loads leave a 512^2 grid with too
+// few spots, heavier ones are near complete contact) and, capped, to p <= 0.9 H.
+//
+// The ratio of a law is its h_c/k_s over the exact one's geometric mean over the seeds; the
+// seeds' spread is reported beside it. A law holds at a pressure when its ratio is within
+// [1 - checkTolerance, 1 + checkTolerance] (0.75 to 1.25, the band of the fidelity report).
+#pragma once
+
+#include "roughContact/interface/ContactInterface.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace roughContact {
+
+/// A law off the exact conductance by more than this fraction is said to miss it.
+inline constexpr double checkTolerance = 0.25;
+
+struct SurfaceCheckOptions {
+    /// Grid of the synthesized surfaces (N x N, even, 8 to 4096).
+    std::size_t gridSize = 512;
+    /// Seeds of the synthesized surfaces (a measured map is solved once).
+    std::vector<std::uint64_t> seeds{1, 2, 3};
+    /// Pressures checked, 1 to 5.
+    std::size_t pressureCount = 4;
+    /// Pressures [Pa] to check instead of the spec's range (each within the clipped range is
+    /// kept; none left is a ParameterError).
+    std::vector<double> pressures;
+    /// A line for a log, at the start and after each solve.
+    std::function<void(const std::string&)> log;
+};
+
+struct CheckedLaw {
+    std::string name;
+    /// Empty when the law can be built; else why not (and hPerK, ratio are empty).
+    std::string unavailable;
+    std::vector<double> hPerK; ///< h_c/k_s [1/m] per checked pressure
+    std::vector<double> ratio; ///< hPerK / exact
+    /// The largest of max(ratio, 1/ratio) over the pressures: 1 is exact.
+    double worstFactor = 0.0;
+};
+
+struct SurfaceCheck {
+    /// What was solved: "3 seeds of 512 x 512 synthesized from ..." or "the map ... (nx x ny, ...)";
+    /// the levels kept are levelsKept/levelsGiven.
+    std::string surface;
+    /// "elastic" or "capped at H = ... Pa".
+    std::string regime;
+    std::optional<double> hardness;
+    double reducedModulus = 0.0;
+    double gradient = 0.0;     ///< h': areal rms gradient of the checked surface
+    std::size_t levelsKept = 0;  ///< levels of the spectrum in the check (the laws')
+    std::size_t levelsGiven = 0; ///< levels of the spectrum given
+    std::vector<double> pressures;       ///< [Pa]
+    /// Pressures asked for (SurfaceCheckOptions::pressures) outside the checked range [Pa].
+    std::vector<double> dropped;
+    double lowestCheckable = 0.0;        ///< the checked range [Pa] (SurfaceCheck.hpp)
+    double highestCheckable = 0.0;
+    std::vector<double> exactHPerK;      ///< geometric mean over the seeds [1/m]
+    std::vector<double> exactHPerKLow;   ///< the seeds' smallest
+    std::vector<double> exactHPerKHigh;  ///< the seeds' largest
+    std::vector<double> exactArea;       ///< A_r/A_n, the mean over the seeds
+    std::vector<CheckedLaw> laws;        ///< every law, in conductanceLawNames() order
+    std::string chosenLaw;               ///< the spec's (or the default)
+    std::string closestLaw;              ///< the smallest worstFactor
+    double seconds = 0.0;                ///< the time the check took
+
+    /// The chosen law's entry (ParameterError when it is not among laws).
+    const CheckedLaw& chosen() const;
+    /// The pressures at which the chosen law misses the exact conductance by more than
+    /// checkTolerance.
+    std::vector<double> chosenMisses() const;
+    /// A table for a log or a terminal: the exact h_c/k_s per pressure with the seeds' spread,
+    /// each law's ratio, the closest law and the chosen law's verdict.
+    std::string report() const;
+    /// The numbers as CSV: pressure, load, exact area and h_c/k_s (with the spread), one
+    /// ratio_NAME column per law that could be built.
+    std::string csv() const;
+};
+
+/// What a check needs: the surfaces, the materials, the area model and the law, and the
+/// range it is asked over (SurfaceCheck.hpp; an InterfaceSpec gives these, the CLI its options).
+struct SurfaceCheckInputs {
+    std::vector<SurfaceSpec> surfaces; ///< one equivalent surface or one per side
+    std::optional<ContactMaterials> materials;     ///< required
+    /// The multi-scale area model of the laws; boundaryElement (or empty): jacksonGreen where
+    /// capped, hertz where elastic.
+    std::string model;
+    std::string conductanceLaw;                  ///< the chosen law; empty: the default
+    std::optional<double> microhardness;         ///< cooperMikicYovanovich; unset: the cap H
+    std::optional<VickersCoefficients> vickers;
+    std::optional<double> hardness;              ///< the cap; unset: 2.84 S_y where given
+    std::optional<bool> periodic;                ///< a map's solve (InterfaceSpec::periodic)
+    std::optional<Detrend> detrend;
+    double minPressure = 0.0;                    ///< [Pa]; the range the pressures are taken from
+    double maxPressure = 0.0;
+};
+
+/// The check of an interface's surface: its surfaces, materials, model, law, hardness (or
+/// hardnessFromYield) and table range (ContactInterface.hpp's defaults where unset).
+SurfaceCheckInputs checkInputsOf(const InterfaceSpec& spec);
+
+/// The check (SurfaceCheck.hpp). ParameterError/InputError on bad inputs or when no pressure is
+/// left.
+SurfaceCheck checkSurface(const SurfaceCheckInputs& inputs, const SurfaceCheckOptions& options = {});
+/// checkSurface(checkInputsOf(spec), options).
+SurfaceCheck checkSurface(const InterfaceSpec& spec, const SurfaceCheckOptions& options = {});
+
+} // namespace roughContact

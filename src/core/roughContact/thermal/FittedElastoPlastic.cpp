@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "roughContact/thermal/FittedElastoPlastic.hpp"
+
+#include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
+
+#include <boost/math/special_functions/erf.hpp>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace roughContact {
+
+double gaussianPlasticSpotConductance(double a)
+{
+    requireFinite("plastic area fraction P/H", a);
+    if (a < 0.0 || a >= 1.0) {
+        throw ParameterError("plastic area fraction P/H", "must lie within [0, 1), got " + std::to_string(a));
+    }
+    if (a == 0.0) {
+        return 0.0;
+    }
+    const double pi = 3.14159265358979323846;
+    // erfc(lambda/sqrt 2)/2 = a: the level lambda sigma above which a Gaussian surface covers a.
+    const double lambda = std::sqrt(2.0) * boost::math::erfc_inv(2.0 * a);
+    return std::exp(-0.5 * lambda * lambda) / (2.0 * std::sqrt(2.0 * pi) * std::pow(1.0 - std::sqrt(a), 1.5));
+}
+
+double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoughness& r, double Eprime,
+                                                     std::optional<double> H, const FittedElastoPlasticConstants& c)
+{
+    requireFinite("contact pressure P", P);
+    if (P < 0.0) {
+        throw ParameterError("contact pressure P", "must be >= 0, got " + std::to_string(P));
+    }
+    checkRoughness(r);
+    limits::requireInRange("reduced modulus E'", Eprime, limits::minimumReducedModulus, limits::maximumReducedModulus,
+                           "Pa");
+    if (H) {
+        limits::requireInRange("hardness H", *H, limits::minimumHardness, limits::maximumHardness, "Pa");
+    }
+    if (P == 0.0) {
+        return 0.0;
+    }
+    const double inf = std::numeric_limits<double>::infinity();
+    const double pi = 3.14159265358979323846;
+    const double m = r.meanAbsoluteSlope;
+    // x = P/(E' h'), h' = sqrt(pi) m for Gaussian isotropic slopes.
+    const double x = P / (std::sqrt(pi) * Eprime * m);
+    if (c.pole * x >= 1.0 || (H && P >= *H)) {
+        return inf;
+    }
+    const double elastic = c.elasticPrefactor * (m / r.sigma) *
+                           std::pow(std::sqrt(2.0) * P / (Eprime * m), c.elasticExponent) / (1.0 - c.pole * x);
+    if (!H) {
+        return elastic;
+    }
+    const double a = P / *H;
+    const double plastic =
+        c.plasticPrefactor * (m / r.sigma) * gaussianPlasticSpotConductance(a) * std::pow(1.0 - a, -c.plasticExponent);
+    return std::pow(std::pow(elastic, c.blend) + std::pow(plastic, c.blend), 1.0 / c.blend);
+}
+
+} // namespace roughContact

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "roughContact/thermal/MeasuredAccuracy.hpp"
+
+#include "roughContact/thermal/MeasuredAccuracyTable.hpp"
+
+#include <iomanip>
+#include <sstream>
+
+namespace roughContact {
+
+std::optional<AccuracyBand> measuredAccuracy(const std::string& law, const std::string& areaModel, bool capped,
+                                             double loadPerGradient)
+{
+    const bool takesArea = law == "jacksonBhavnaniFerguson" || law == "multiscaleBarber";
+    for (const measured::AccuracyRow& r : measured::accuracyRows) {
+        if (law == r.law && (!takesArea || areaModel == r.areaModel) && capped == r.capped &&
+            loadPerGradient >= r.from && loadPerGradient < r.to) {
+            return AccuracyBand{r.from, r.to, r.low, r.high, r.surfaces};
+        }
+    }
+    return std::nullopt;
+}
+
+std::string describeAccuracy(const std::optional<AccuracyBand>& band, double loadPerGradient)
+{
+    std::ostringstream os;
+    os << std::setprecision(2);
+    if (!band) {
+        os << "not measured at p/(E' h') = " << loadPerGradient;
+        return os.str();
+    }
+    os << band->low << "-" << band->high << " of exact (" << band->surfaces
+       << (band->surfaces == 1 ? " surface" : " surfaces") << " of the fidelity report, p/(E' h') " << band->from
+       << " to " << band->to << ")";
+    return os.str();
+}
+
+} // namespace roughContact

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// How far each conductance law was measured from the exact answer (issue 20, item 3): the band
+// of law / exact the fidelity report (docs/validation/fidelity.md) found for a law on its area
+// model, against the elastic or the capped (p <= H) reference, in a decade of p/(E' h'). The
+// numbers are the report's, in one place: MeasuredAccuracyTable.hpp, written by
+// docs/validation/accuracyTable from the report's data (a CTest test keeps them equal).
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace roughContact {
+
+struct AccuracyBand {
+    double from = 0.0; ///< the decade of p/(E' h') [from, to) the band was measured in
+    double to = 0.0;
+    double low = 0.0;  ///< the smallest law / exact over the report's surfaces there
+    double high = 0.0; ///< the largest
+    int surfaces = 0;  ///< how many of the report's surfaces had a point there
+};
+
+/// The band of `law` on `areaModel` (a multi-scale model's name; ignored for the laws that take
+/// no area: persson, mikic, cooperMikicYovanovich) against the capped or the elastic reference,
+/// in the decade of p/(E' h') that holds loadPerGradient; none where the report has no number
+/// (a law or model it does not measure, a load outside 1e-5 to 1).
+std::optional<AccuracyBand> measuredAccuracy(const std::string& law, const std::string& areaModel, bool capped,
+                                             double loadPerGradient);
+
+/// One line: "0.30-0.86 of exact (4 surfaces, p/(E' h') 1e-4 to 1e-3)" or "not measured at
+/// p/(E' h') = ...".
+std::string describeAccuracy(const std::optional<AccuracyBand>& band, double loadPerGradient);
+
+} // namespace roughContact

@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The module's check of a user's own surface (SurfaceCheck.hpp): check() takes ContactInterface's
+// keyword arguments and the check's own, and returns a SurfaceCheck.
+#include <pybind11/pybind11.h>
+
+#include "doubleCaster.hpp" // first after pybind11.h: see there
+
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "convert.hpp"
+
+#include "roughContact/interface/SurfaceCheck.hpp"
+#include "roughContact/thermal/MeasuredAccuracy.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+using namespace roughContact;
+
+namespace roughcontact_py {
+
+void bindCheck(py::module_& m)
+{
+    py::class_<SurfaceCheck>(m, "SurfaceCheck",
+                             "What check() found: the exact h_c/k_s on the user's surface at the checked pressures "
+                             "and every law's ratio to it.")
+        .def_readonly("surface", &SurfaceCheck::surface, "What was solved (the map, or the seeds synthesized).")
+        .def_readonly("regime", &SurfaceCheck::regime, "'elastic' or 'capped at H = ... Pa'.")
+        .def_readonly("hardness", &SurfaceCheck::hardness, "The cap H [Pa], or None (elastic).")
+        .def_readonly("reduced_modulus", &SurfaceCheck::reducedModulus, "E' [Pa].")
+        .def_readonly("gradient", &SurfaceCheck::gradient, "h': the areal rms gradient of the checked surface.")
+        .def_readonly("levels_kept", &SurfaceCheck::levelsKept, "Levels of the spectrum in the check.")
+        .def_readonly("levels_given", &SurfaceCheck::levelsGiven, "Levels of the spectrum given.")
+        .def_property_readonly("pressures", [](const SurfaceCheck& c) { return toArray(c.pressures); },
+                               "The checked pressures [Pa].")
+        .def_property_readonly("dropped", [](const SurfaceCheck& c) { return toArray(c.dropped); },
+                               "Pressures asked for [Pa] outside the checked range.")
+        .def_property_readonly("exact", [](const SurfaceCheck& c) { return toArray(c.exactHPerK); },
+                               "The exact h_c/k_s [1/m] (geometric mean over the seeds).")
+        .def_property_readonly("exact_low", [](const SurfaceCheck& c) { return toArray(c.exactHPerKLow); },
+                               "The seeds' smallest exact h_c/k_s [1/m].")
+        .def_property_readonly("exact_high", [](const SurfaceCheck& c) { return toArray(c.exactHPerKHigh); },
+                               "The seeds' largest exact h_c/k_s [1/m].")
+        .def_property_readonly("exact_area", [](const SurfaceCheck& c) { return toArray(c.exactArea); },
+                               "The exact A_r/A_n (mean over the seeds).")
+        .def_property_readonly(
+            "ratios",
+            [](const SurfaceCheck& c) {
+                py::dict d;
+                for (const CheckedLaw& l : c.laws) {
+                    if (l.unavailable.empty()) {
+                        d[py::str(l.name)] = toArray(l.ratio);
+                    }
+                }
+                return d;
+            },
+            "{law: array of h_c/k_s law / exact at the pressures}, for every law that could be built.")
+        .def_property_readonly(
+            "unavailable",
+            [](const SurfaceCheck& c) {
+                py::dict d;
+                for (const CheckedLaw& l : c.laws) {
+                    if (!l.unavailable.empty()) {
+                        d[py::str(l.name)] = l.unavailable;
+                    }
+                }
+                return d;
+            },
+            "{law: why it was not checked}.")
+        .def_readonly("chosen_law", &SurfaceCheck::chosenLaw, "The law judged (the conductance given, or the default).")
+        .def_readonly("closest_law", &SurfaceCheck::closestLaw, "The law with the smallest worst factor.")
+        .def_property_readonly("chosen_misses", [](const SurfaceCheck& c) { return toArray(c.chosenMisses()); },
+                               "The pressures [Pa] at which the chosen law is off by more than 25 %.")
+        .def_readonly("seconds", &SurfaceCheck::seconds, "How long the check took [s].")
+        .def("report", &SurfaceCheck::report, "The table a terminal or a log shows.")
+        .def("csv", &SurfaceCheck::csv, "The numbers as CSV (the CLI's --check).")
+        .def("__repr__", &SurfaceCheck::report);
+
+    m.def(
+        "measured_accuracy",
+        [](const std::string& law, const std::string& model, bool capped, double loadPerGradient) -> py::object {
+            const std::optional<AccuracyBand> b = measuredAccuracy(law, model, capped, loadPerGradient);
+            if (!b) {
+                return py::none();
+            }
+            py::dict d;
+            d["low"] = b->low;
+            d["high"] = b->high;
+            d["from"] = b->from;
+            d["to"] = b->to;
+            d["surfaces"] = b->surfaces;
+            return d;
+        },
+        py::arg("law"), py::arg("model"), py::arg("capped"), py::arg("load_per_gradient"),
+        "The band of law / exact the fidelity report measured for `law` on the area `model` against the capped "
+        "(p <= H) or elastic reference, in the decade of p/(E' h') holding load_per_gradient: a dict (low, high, "
+        "from, to, surfaces), or None where nothing was measured.");
+
+    m.def(
+        "check",
+        [](const std::vector<SurfaceSpec>& surfaces, const Material& side1, const Material& side2,
+           const std::string& model, const std::string& conductance, std::optional<double> microhardness,
+           std::optional<std::pair<double, double>> vickers, std::optional<double> minPressure,
+           std::optional<double> maxPressure, std::optional<bool> periodic, std::optional<double> hardness,
+           bool hardnessFromYield, std::optional<std::string> detrend, const std::vector<double>& pressures,
+           std::size_t grid, const std::vector<std::uint64_t>& seeds, std::size_t count, const py::object& progress) {
+            const InterfaceSpec spec = interfaceSpec(surfaces, side1, side2, model, conductance, microhardness, vickers,
+                                                     minPressure, maxPressure, 40, std::nullopt, 1, periodic, hardness,
+                                                     hardnessFromYield, 6, std::nullopt, detrend);
+            SurfaceCheckOptions o;
+            o.gridSize = grid;
+            o.seeds = seeds;
+            o.pressureCount = count;
+            o.pressures = pressures;
+            if (!progress.is_none() && !PyCallable_Check(progress.ptr())) {
+                throw py::type_error("progress: expected a callable or None");
+            }
+            PyObject* target = progress.ptr();
+            if (!progress.is_none()) {
+                // progress(line) after each solve, with the GIL held.
+                o.log = [target](const std::string& line) {
+                    py::gil_scoped_acquire acquire;
+                    const py::object ignored = py::handle(target)(line);
+                };
+            }
+            py::gil_scoped_release release;
+            return checkSurface(spec, o);
+        },
+        py::kw_only(), py::arg("surfaces"), py::arg("side1"), py::arg("side2"), py::arg("model") = "jacksonGreen",
+        py::arg("conductance") = "", py::arg("microhardness") = py::none(), py::arg("vickers") = py::none(),
+        py::arg("min_pressure") = py::none(), py::arg("max_pressure") = py::none(), py::arg("periodic") = py::none(),
+        py::arg("hardness") = py::none(), py::arg("hardness_from_yield") = false, py::arg("detrend") = py::none(),
+        py::arg("pressures") = std::vector<double>{}, py::arg("grid") = 512,
+        py::arg("seeds") = std::vector<std::uint64_t>{1, 2, 3}, py::arg("count") = 4, py::arg("progress") = py::none(),
+        "check(*, surfaces, side1, side2, model='jacksonGreen', conductance='', ..., pressures=[], grid=512, "
+        "seeds=[1, 2, 3], count=4, progress=None): the exact model (boundaryElement) on the user's own surface "
+        "(an areal map as it is; a 1-D description as `seeds` surfaces of grid x grid synthesized from its "
+        "spectrum, cut at grid/8 levels) at `pressures` [Pa] (at most 5) or `count` pressures across "
+        "[min_pressure, max_pressure], within p/(E' h') 1e-4 to 1e-1; capped at H where hardness, "
+        "hardness_from_yield or S_y say, elastic otherwise; every law's ratio to it. The interface's keyword "
+        "arguments are ContactInterface's. progress: a callable given a line after each solve. About 0.5 s "
+        "a pressure and seed at 512^2.");
+}
+
+} // namespace roughcontact_py

@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The regime said out loud (InterfaceRegime.hpp) and the measured accuracy bands it quotes
+// (MeasuredAccuracy.hpp): h', P/H and the plasticity index from their definitions, the band the
+// report's row for the law, model, reference and decade, and the interface's log saying both.
+#include "roughContact/interface/ContactInterface.hpp"
+#include "roughContact/interface/InterfaceRegime.hpp"
+#include "roughContact/surface/SpectralMoments.hpp"
+#include "roughContact/thermal/ConductanceLaw.hpp"
+#include "roughContact/thermal/MeasuredAccuracy.hpp"
+#include "roughContact/thermal/MeasuredAccuracyTable.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+using namespace roughContact;
+
+TEST(MeasuredAccuracy, IsTheReportsRowForTheLawModelReferenceAndDecade)
+{
+    // Every row is found by its own key at the middle of its decade, and at its lower edge.
+    for (const measured::AccuracyRow& r : measured::accuracyRows) {
+        SCOPED_TRACE(std::string(r.law) + " on " + r.areaModel);
+        for (double x : {std::sqrt(r.from * r.to), r.from}) {
+            const auto band = measuredAccuracy(r.law, r.areaModel, r.capped, x);
+            ASSERT_TRUE(band.has_value());
+            EXPECT_EQ(band->low, r.low);
+            EXPECT_EQ(band->high, r.high);
+            EXPECT_EQ(band->from, r.from);
+            EXPECT_EQ(band->surfaces, r.surfaces);
+            EXPECT_LE(band->low, band->high);
+        }
+    }
+    // The default law on the condition's default model, capped, at p/(E' h') = 1e-3..1e-2: the
+    // report's 0.348-1.46 (4 surfaces).
+    const auto d = measuredAccuracy(defaultConductanceLaw(), "jacksonGreen", true, 3e-3);
+    ASSERT_TRUE(d.has_value());
+    EXPECT_EQ(d->low, 0.348);
+    EXPECT_EQ(d->high, 1.46);
+    EXPECT_EQ(d->surfaces, 4);
+    // The laws that take no area ignore the model; the ones that do, do not.
+    EXPECT_TRUE(measuredAccuracy("persson", "hertz", false, 3e-3).has_value());
+    EXPECT_EQ(measuredAccuracy("persson", "hertz", false, 3e-3)->high,
+              measuredAccuracy("persson", "jacksonGreen", false, 3e-3)->high);
+    EXPECT_FALSE(measuredAccuracy("jacksonBhavnaniFerguson", "jgh", false, 3e-3).has_value());
+    // Nothing measured outside 1e-5 .. 1, nor for cooperMikicYovanovich against the elastic one.
+    EXPECT_FALSE(measuredAccuracy(defaultConductanceLaw(), "jacksonGreen", true, 1e-7).has_value());
+    EXPECT_FALSE(measuredAccuracy(defaultConductanceLaw(), "jacksonGreen", true, 2.0).has_value());
+    EXPECT_FALSE(measuredAccuracy("cooperMikicYovanovich", "", false, 3e-3).has_value());
+    EXPECT_EQ(describeAccuracy(std::nullopt, 1e-7), "not measured at p/(E' h') = 1e-07");
+    EXPECT_EQ(describeAccuracy(d, 3e-3), "0.35-1.5 of exact (4 surfaces of the fidelity report, p/(E' h') 0.001 to 0.01)");
+}
+
+TEST(InterfaceRegime, FromTheDefinitions)
+{
+    // A power law of 200 levels: h' = sqrt(2 m2), P/(E' h'), P/H, psi = (E'/H) sqrt(sigma_s/R).
+    const Spectrum s = Spectrum::powerLaw(1e-7 * std::pow(1e3, 1.3), 1.3, 1e3, 2e5, 1e-3);
+    const double m2 = spectralMoments(s).m2;
+    const double Ep = 1e11;
+    const double H = 1.2e9;
+    const InterfaceRegime r = interfaceRegime(s, Ep, H, "jacksonBhavnaniFerguson", "jacksonGreen", true, 1e5, 1e8);
+    EXPECT_DOUBLE_EQ(r.gradient, std::sqrt(2.0 * m2));
+    EXPECT_DOUBLE_EQ(r.low.load, 1e5 / Ep);
+    EXPECT_DOUBLE_EQ(r.low.loadPerGradient, 1e5 / Ep / r.gradient);
+    EXPECT_DOUBLE_EQ(*r.high.perHardness, 1e8 / H);
+    const SummitParameters p = mcCoolParameters(s);
+    ASSERT_TRUE(r.plasticityIndex.has_value());
+    EXPECT_DOUBLE_EQ(*r.plasticityIndex, Ep / H * std::sqrt(p.sigmaS / p.R));
+    // The bands are the table's at each end.
+    const auto expectBand = [&](const RegimeAt& at) {
+        const auto band = measuredAccuracy("jacksonBhavnaniFerguson", "jacksonGreen", true, at.loadPerGradient);
+        ASSERT_EQ(at.band.has_value(), band.has_value());
+        if (band) {
+            EXPECT_EQ(at.band->low, band->low);
+            EXPECT_EQ(at.band->high, band->high);
+        }
+    };
+    expectBand(r.low);
+    expectBand(r.high);
+    const std::string text = r.describe();
+    EXPECT_NE(text.find("plasticity index"), std::string::npos) << text;
+    EXPECT_NE(text.find("(capped reference)"), std::string::npos) << text;
+    EXPECT_NE(text.find("P/H = 0.0833"), std::string::npos) << text;
+    // Elastic: no hardness, no P/H, no index; the elastic reference's band.
+    const InterfaceRegime e = interfaceRegime(s, Ep, std::nullopt, "persson", "hertz", false, 1e5, 1e8);
+    EXPECT_FALSE(e.plasticityIndex.has_value());
+    EXPECT_FALSE(e.low.perHardness.has_value());
+    EXPECT_NE(e.describe().find("elastic (no hardness)"), std::string::npos) << e.describe();
+}
+
+TEST(InterfaceRegime, TheInterfaceSaysItsRegimeAtTheTablesEnds)
+{
+    InterfaceSpec spec;
+    SurfaceSpec s;
+    s.kind = SurfaceSpec::Kind::powerLaw;
+    s.parameters = {1e-7 * std::pow(1e3, 1.3), 1.3, 1e3, 2e5};
+    s.length = 1e-3;
+    spec.surfaces = {s};
+    spec.side1 = Material{200e9, 0.3, 0.5e9};
+    spec.side2 = Material{200e9, 0.3, 0.4e9};
+    spec.model = "jacksonGreen";
+    spec.minPressure = 1e4;
+    spec.maxPressure = 1e8;
+    const ContactInterface ci(spec);
+    const InterfaceRegime& r = ci.regime();
+    EXPECT_EQ(r.low.pressure, ci.table().pressures().front());
+    EXPECT_EQ(r.high.pressure, ci.table().pressures().back());
+    EXPECT_TRUE(r.capped);
+    ASSERT_TRUE(r.hardness.has_value());
+    EXPECT_DOUBLE_EQ(*r.hardness, 2.84 * 0.4e9); // the softer side yields
+    EXPECT_EQ(r.law, defaultConductanceLaw());
+    EXPECT_NE(ci.summary().find(r.describe()), std::string::npos) << ci.summary();
+    // hertz: held to the elastic reference, though the materials have a hardness (P/H said).
+    spec.model = "hertz";
+    const ContactInterface elastic(spec);
+    EXPECT_FALSE(elastic.regime().capped);
+    EXPECT_TRUE(elastic.regime().low.perHardness.has_value());
+}

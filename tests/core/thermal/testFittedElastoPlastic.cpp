@@ -1,0 +1,229 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The fitted elasto-plastic law (FittedElastoPlastic.hpp): its plastic-spot geometry against
+// Yovanovich's fit of it, its elastic branch against Mikic's correlation (the same form with
+// Mikic's constants), the smooth maximum, its limits and poles, and its values against an
+// independent implementation of the same formulas.
+#include "roughContact/Error.hpp"
+#include "roughContact/interface/ContactInterface.hpp"
+#include "roughContact/thermal/ConductanceLaw.hpp"
+#include "roughContact/thermal/CooperMikicYovanovich.hpp"
+#include "roughContact/thermal/FittedElastoPlastic.hpp"
+#include "roughContact/thermal/Mikic.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace roughContact;
+
+namespace {
+const double pi = 3.14159265358979323846;
+const double Ep = 200e9 / (2.0 * (1.0 - 0.3 * 0.3)); // steel on steel
+const SurfaceRoughness rough{1e-6, 0.1 / std::sqrt(pi)}; // sigma 1 um, h' = 0.1
+} // namespace
+
+TEST(FittedElastoPlastic, PlasticSpotsAreCooperMikicYovanovichsGeometry)
+{
+    // Yovanovich's power law 1.25 a^0.95 fits g(a) over light loads: within 1.5 % from a = 1e-5
+    // to 1e-2 (the fit's range; the ratio here runs 1.012, 1.014, 1.0006, 0.992), and the
+    // project's CMY law is that fit (its h with m/sigma = 1).
+    for (double a : {1e-5, 1e-4, 1e-3, 1e-2}) {
+        SCOPED_TRACE(a);
+        const double fit = cooperMikicYovanovichFromRelativePressure(a, SurfaceRoughness{1.0, 1.0});
+        EXPECT_NEAR(gaussianPlasticSpotConductance(a) / fit, 1.0, 0.015);
+    }
+    EXPECT_EQ(gaussianPlasticSpotConductance(0.0), 0.0);
+    // The level lambda covers a: erfc(lambda/sqrt 2)/2 = a, so at a = 1/2 lambda = 0 and
+    // g = 1/(2 sqrt(2 pi) (1 - sqrt(1/2))^1.5).
+    EXPECT_NEAR(gaussianPlasticSpotConductance(0.5), 1.0 / (2.0 * std::sqrt(2.0 * pi) * std::pow(1.0 - std::sqrt(0.5), 1.5)),
+                1e-14);
+    EXPECT_THROW(gaussianPlasticSpotConductance(1.0), ParameterError);
+    EXPECT_THROW(gaussianPlasticSpotConductance(-1e-3), ParameterError);
+}
+
+TEST(FittedElastoPlastic, ElasticBranchIsMikicsFormRefitted)
+{
+    // With Mikic's constants (1.54, 0.94, no pole) and no cap, the law is Mikic's correlation,
+    // computed independently in Mikic.cpp (a pow and products: 1e-14).
+    FittedElastoPlasticConstants mikic;
+    mikic.elasticPrefactor = 1.54;
+    mikic.elasticExponent = 0.94;
+    mikic.pole = 0.0;
+    for (double P : {1e4, 1e6, 1e8}) {
+        const double expected = mikicConductancePerConductivity(P, rough, Ep);
+        EXPECT_NEAR(fittedElastoPlasticConductancePerConductivity(P, rough, Ep, std::nullopt, mikic), expected,
+                    1e-14 * expected)
+            << P;
+    }
+    // The fitted constants: C_E (m/sigma)(sqrt 2 P/(E' m))^A / (1 - B x), x = P/(sqrt(pi) E' m).
+    const FittedElastoPlasticConstants c;
+    for (double P : {1e5, 1e7, 1e9}) {
+        const double m = rough.meanAbsoluteSlope;
+        const double x = P / (std::sqrt(pi) * Ep * m);
+        const double expected = c.elasticPrefactor * (m / rough.sigma) *
+                                std::pow(std::sqrt(2.0) * P / (Ep * m), c.elasticExponent) / (1.0 - c.pole * x);
+        EXPECT_NEAR(fittedElastoPlasticConductancePerConductivity(P, rough, Ep, std::nullopt), expected, 1e-14 * expected);
+    }
+}
+
+TEST(FittedElastoPlastic, TheCapOnlyAddsAndTheBlendIsASmoothMaximum)
+{
+    const FittedElastoPlasticConstants c;
+    const double H = 1.42e9;
+    double last = 0.0;
+    for (double P = 1e4; P < 0.99 * H; P *= 1.5) {
+        SCOPED_TRACE(P);
+        const double elastic = fittedElastoPlasticConductancePerConductivity(P, rough, Ep, std::nullopt);
+        const double both = fittedElastoPlasticConductancePerConductivity(P, rough, Ep, H);
+        if (std::isinf(elastic)) {
+            EXPECT_TRUE(std::isinf(both));
+            break;
+        }
+        const double a = P / H;
+        const double plastic = c.plasticPrefactor * (rough.meanAbsoluteSlope / rough.sigma) *
+                               gaussianPlasticSpotConductance(a) * std::pow(1.0 - a, -c.plasticExponent);
+        // max <= power mean <= 2^(1/N) max.
+        EXPECT_GE(both, std::max(elastic, plastic));
+        EXPECT_LE(both, std::pow(2.0, 1.0 / c.blend) * std::max(elastic, plastic) * (1 + 1e-15));
+        EXPECT_GT(both, last); // increasing with the pressure
+        last = both;
+    }
+    // A hardness far above every pressure leaves the elastic branch (to the plastic one's share:
+    // at P/H = 1e-6 the plastic branch is 1e-6 of the elastic one's order, raised to N).
+    const double P = 1e6;
+    EXPECT_NEAR(fittedElastoPlasticConductancePerConductivity(P, rough, Ep, 1e12),
+                fittedElastoPlasticConductancePerConductivity(P, rough, Ep, std::nullopt),
+                1e-3 * fittedElastoPlasticConductancePerConductivity(P, rough, Ep, std::nullopt));
+    // Complete contact: at P = H, and at the pole x = 1/B.
+    const double inf = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(fittedElastoPlasticConductancePerConductivity(H, rough, Ep, H), inf);
+    EXPECT_EQ(fittedElastoPlasticConductancePerConductivity(std::sqrt(pi) * Ep * rough.meanAbsoluteSlope / c.pole,
+                                                            rough, Ep, std::nullopt),
+              inf);
+    EXPECT_EQ(fittedElastoPlasticConductancePerConductivity(0.0, rough, Ep, H), 0.0);
+}
+
+TEST(FittedElastoPlastic, ValuesOfAnIndependentImplementation)
+{
+    // The law as written in Python (standard library; erfc^-1 by 200 bisections) by the session
+    // that fitted it, at steel on steel, sigma = 1 um, h' = 0.1: the same to round-off (1e-12).
+    const struct {
+        double P;
+        std::optional<double> H;
+        double h;
+    } cases[] = {{1e6, std::nullopt, 38.303044199509564},
+                 {1e7, std::nullopt, 238.49281949070715},
+                 {1e6, 1.42e9, 65.18179831467134},
+                 {1e8, 1.42e9, 4150.24607314533}};
+    for (const auto& k : cases) {
+        EXPECT_NEAR(fittedElastoPlasticConductancePerConductivity(k.P, rough, Ep, k.H), k.h, 1e-12 * k.h) << k.P;
+    }
+}
+
+TEST(FittedElastoPlastic, RefusesBadInputAndIsALawByName)
+{
+    EXPECT_THROW(fittedElastoPlasticConductancePerConductivity(-1.0, rough, Ep, std::nullopt), ParameterError);
+    EXPECT_THROW(fittedElastoPlasticConductancePerConductivity(std::nan(""), rough, Ep, std::nullopt), ParameterError);
+    EXPECT_THROW(fittedElastoPlasticConductancePerConductivity(1e6, rough, Ep, -1.0), ParameterError);
+    EXPECT_THROW(fittedElastoPlasticConductancePerConductivity(1e6, SurfaceRoughness{0.0, 0.1}, Ep, std::nullopt),
+                 ParameterError);
+    ConductanceLawInputs in;
+    in.Eprime = Ep;
+    EXPECT_THROW(makeConductanceLaw("fittedElastoPlastic", in), ParameterError); // no roughness
+    in.roughness = rough;
+    in.hardness = 1.42e9;
+    const auto law = makeConductanceLaw("fittedElastoPlastic", in);
+    EXPECT_EQ(law->name(), "fittedElastoPlastic");
+    EXPECT_EQ(law->perConductivity(1e8), fittedElastoPlasticConductancePerConductivity(1e8, rough, Ep, 1.42e9));
+    EXPECT_TRUE(conductanceLawNeedsRoughness("fittedElastoPlastic"));
+}
+
+TEST(FittedElastoPlastic, ItsRatiosToTheExactAnswerAreTheDocumentedOnes)
+{
+    // docs/validation/fittedElastoPlastic/exact.csv: the exact conductance it was fitted to
+    // (training) and held to (holdout), with the law's ratio as documented. The ratio computed
+    // here from the C++ law equals the column to its two printed decimals (0.005; h is printed
+    // with 4 digits, 0.05 %: 0.006 in all), and the bands docs/validation/fittedElastoPlastic.md
+    // quotes are these rows'.
+    std::ifstream in(std::string(ROUGHCONTACT_SOURCE_DIR) + "/docs/validation/fittedElastoPlastic/exact.csv");
+    ASSERT_TRUE(in) << "exact.csv";
+    const double EpSteel = 200e9 / (2.0 * (1.0 - 0.3 * 0.3));
+    std::string line;
+    std::map<std::string, std::pair<double, double>> band; // "x3p capped" -> min, max
+    std::size_t rows = 0;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#' || line.rfind("surface,", 0) == 0) {
+            continue;
+        }
+        std::vector<std::string> f;
+        std::stringstream ss(line);
+        for (std::string cell; std::getline(ss, cell, ',');) {
+            f.push_back(cell);
+        }
+        ASSERT_EQ(f.size(), 11U) << line;
+        if (f[10] == "-" || f[10].empty()) {
+            continue; // no ratio where the exact A_r/A_n exceeds 0.9
+        }
+        const double sigma = std::stod(f[2]);
+        const double m = std::stod(f[3]);
+        const double gradient = std::stod(f[4]);
+        const double x = std::stod(f[6]);
+        const double P = x * EpSteel * gradient;
+        const std::optional<double> H =
+            f[5] == "elastic" ? std::nullopt : std::optional<double>(std::stod(f[5].substr(3)) * EpSteel * gradient);
+        const double ratio =
+            fittedElastoPlasticConductancePerConductivity(P, SurfaceRoughness{sigma, m}, EpSteel, H) / std::stod(f[9]);
+        EXPECT_NEAR(ratio, std::stod(f[10]), 0.006) << line;
+        const std::string key = f[0] + (H ? " capped" : " elastic");
+        auto& b = band.try_emplace(key, 1e300, 0.0).first->second;
+        b.first = std::min(b.first, ratio);
+        b.second = std::max(b.second, ratio);
+        ++rows;
+    }
+    EXPECT_GT(rows, 200U);
+    // The hold-outs, as documented (to the printed two decimals).
+    EXPECT_NEAR(band["x3p elastic"].first, 0.61, 0.006);
+    EXPECT_NEAR(band["x3p elastic"].second, 0.97, 0.006);
+    EXPECT_NEAR(band["x3p capped"].first, 0.88, 0.006);
+    EXPECT_NEAR(band["x3p capped"].second, 1.82, 0.006);
+    EXPECT_NEAR(band["selfAffine06ro2 capped"].first, 0.75, 0.006);
+    EXPECT_NEAR(band["selfAffine06ro2 elastic"].second, 1.13, 0.006);
+}
+
+TEST(FittedElastoPlastic, ATableEndsWhereTheLawConductsPerfectly)
+{
+    // On an area model that does not cap (hertz) with yielding materials, the law is infinite
+    // from min(H, its pole) on, before the model's complete contact: the table ends there (was:
+    // "the table needs positive, finite values"), h is +inf beyond and the law's below.
+    InterfaceSpec spec;
+    SurfaceSpec s;
+    s.kind = SurfaceSpec::Kind::powerLaw;
+    s.parameters = {1e-7 * std::pow(1e3, 1.3), 1.3, 1e3, 2e5};
+    s.length = 1e-3;
+    spec.surfaces = {s};
+    spec.side1 = Material{200e9, 0.3, 0.4e9};
+    spec.side2 = spec.side1;
+    spec.model = "hertz";
+    spec.conductanceLaw = "fittedElastoPlastic";
+    const ContactInterface ci(spec);
+    const double H = 2.84 * 0.4e9;
+    const SurfaceRoughness r = spectrumRoughness(ci.surface());
+    const double pole = std::sqrt(pi) * ci.reducedModulus() * r.meanAbsoluteSlope / FittedElastoPlasticConstants{}.pole;
+    const double end = std::min(H, pole);
+    const double perfect = ci.table().perfectConductancePressure();
+    // The first pressure found infinite, the gap to the last finite one closed to 1e-6
+    // (ContactTable.cpp): at or just above the law's own end.
+    EXPECT_GE(perfect, end * (1 - 1e-12));
+    EXPECT_LE(perfect, end * (1 + 2e-6));
+    EXPECT_TRUE(std::isinf(ci.conductancePerConductivity(perfect)));
+    EXPECT_TRUE(std::isinf(ci.conductancePerConductivity(1.01 * perfect)));
+    const double P = 0.5 * end;
+    const double law = fittedElastoPlasticConductancePerConductivity(P, r, ci.reducedModulus(), H);
+    EXPECT_NEAR(ci.conductancePerConductivity(P), law, 5e-3 * law); // the table's tolerance
+}

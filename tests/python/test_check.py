@@ -1,0 +1,65 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""check() from Python: the exact model on the user's own surface against every law, the same
+numbers as the CLI's --check (one core, two front-ends), its arguments mapped as named."""
+import csv
+import io
+
+import numpy as np
+import pytest
+
+import roughcontact as rc
+from conftest import STANDIN, STEEL
+
+STEEL_M = rc.Material(**STEEL)
+
+
+def cli_check(cli, *args):
+    r = cli("--profile", STANDIN, "--model", "jacksonGreen", "--check", *args)
+    assert r.status == 0, r.err
+    rows = list(csv.DictReader(io.StringIO("".join(l + "\n" for l in r.out.splitlines() if not l.startswith("#")))))
+    return {k: np.array([float(row[k]) for row in rows]) for k in rows[0]}
+
+
+def test_check_is_the_clis(cli):
+    # Two steel solids in both (the CLI's one --E is a rigid flat, which ContactInterface's two
+    # sides cannot say).
+    Ep = rc.ContactMaterials.pair(STEEL_M, STEEL_M).reduced_modulus
+    pressures = [2e-4 * Ep * 0.02, 2e-3 * Ep * 0.02]
+    lines = []
+    c = rc.check(surfaces=[rc.SurfaceSpec.profile(STANDIN)], side1=STEEL_M, side2=STEEL_M, grid=32,
+                 pressures=pressures, progress=lines.append)
+    cli_numbers = cli_check(cli, "--synthesize", "32", "--pressures", ",".join(repr(p) for p in pressures),
+                            "--E", "179.52e9,179.52e9", "--nu", "0.32,0.32", "--Sy", "0.2e9,0.2e9")
+    np.testing.assert_array_equal(c.pressures, cli_numbers["nominal_pressure"])
+    np.testing.assert_array_equal(c.exact, cli_numbers["h_per_k_exact"])
+    np.testing.assert_array_equal(c.exact_area, cli_numbers["area_exact"])
+    for law, ratio in c.ratios.items():
+        np.testing.assert_array_equal(ratio, cli_numbers["ratio_" + law])
+    # Capped at 2.84 S_y (the materials yield), three seeds of 32^2, a progress line per solve.
+    assert c.hardness == pytest.approx(2.84 * 0.2e9, rel=1e-15)
+    assert c.surface.startswith("3 seeds of 32 x 32")
+    assert len(lines) == 1 + 3 * 2 and lines[-1].startswith("check: surface 3 of 3, pressure 2 of 2")
+    assert c.chosen_law == rc.default_conductance_law()
+    assert c.closest_law in c.ratios
+    assert "closest: " + c.closest_law in c.report()
+    assert np.all(c.exact_low <= c.exact) and np.all(c.exact <= c.exact_high)
+
+
+def test_check_refuses_what_it_cannot_check():
+    spec = dict(surfaces=[rc.SurfaceSpec.profile(STANDIN)], side1=STEEL_M, side2=STEEL_M, grid=32)
+    with pytest.raises(rc.ParameterError, match="none of the pressures given lies in the checked range"):
+        rc.check(pressures=[1.0], **spec)
+    with pytest.raises(TypeError, match="progress: expected a callable"):
+        rc.check(progress=3, **spec)
+    with pytest.raises(rc.ParameterError, match="check pressures"):
+        rc.check(count=6, **spec)
+
+
+def test_the_regime_and_the_measured_band():
+    ci = rc.ContactInterface(surfaces=[rc.SurfaceSpec.profile(STANDIN)], side1=STEEL_M, side2=STEEL_M,
+                             min_pressure=1e5, max_pressure=1e8)
+    assert ci.regime in ci.summary()
+    assert "(capped reference)" in ci.regime and "plasticity index" in ci.regime
+    band = rc.measured_accuracy(rc.default_conductance_law(), "jacksonGreen", True, 3e-3)
+    assert band == {"low": 0.348, "high": 1.46, "from": 1e-3, "to": 1e-2, "surfaces": 4}
+    assert rc.measured_accuracy("cooperMikicYovanovich", "", False, 3e-3) is None
