@@ -86,6 +86,8 @@ struct Options {
     std::string vickers;        // "C1,C2"
     bool info = false;
     bool check = false; // --check: the exact model on this surface against every law
+    std::optional<double> k1; // --k1, --k2 [W/(m K)]: add the column h [W/(m^2 K)]
+    std::optional<double> k2;
 };
 
 std::vector<double> splitNumbers(const std::string& text, char sep, const std::string& option)
@@ -444,6 +446,25 @@ void checkOutputFile(const Options& o, const std::string& path, const std::strin
     }
 }
 
+// --k1 --k2: k_s = 2 k1 k2/(k1 + k2) [W/(m K)], for the column h = k_s h_c/k_s [W/(m^2 K)] after
+// h_per_k; none without them. `conductance`: the run has an h_per_k column.
+std::optional<double> harmonicConductivityOf(const Options& o, bool conductance)
+{
+    if (!o.k1 && !o.k2) {
+        return std::nullopt;
+    }
+    if (!(o.k1 && o.k2)) {
+        throw ParameterError(o.k1 ? "--k2" : "--k1", "give both conductivities, --k1 and --k2 [W/(m K)]");
+    }
+    if (!conductance) {
+        throw ParameterError("--k1", "turns h_per_k into h [W/(m^2 K)]: add --conductance (or a --conductance-law)");
+    }
+    for (const auto& [k, what] : {std::pair<double, const char*>{*o.k1, "--k1"}, {*o.k2, "--k2"}}) {
+        limits::requireInRange(what, k, limits::minimumConductivity, limits::maximumConductivity, "W/(m K)");
+    }
+    return harmonicMeanConductivity(*o.k1, *o.k2);
+}
+
 // The surfaces as SurfaceSpecs (the boundary condition's description of the same options).
 std::vector<SurfaceSpec> surfaceSpecsOf(const Options& o)
 {
@@ -498,6 +519,9 @@ int runCheck(const Options& o)
     }
     if (!o.pressureMap.empty()) {
         throw ParameterError("--pressure-map", "is for a boundaryElement curve, not --check");
+    }
+    if (o.k1 || o.k2) {
+        throw ParameterError(o.k1 ? "--k1" : "--k2", "--check compares h_c/k_s, which the conductivities do not change");
     }
     SurfaceCheckInputs in;
     in.surfaces = surfaceSpecsOf(o);
@@ -622,7 +646,9 @@ int runBoundaryElement(const Options& o)
         });
     std::ostringstream out;
     out.precision(10);
-    out << (pressures.empty() ? "" : "nominal_pressure,") << "load,area,pressure,separation,h_per_k,iterations,residual\n";
+    const std::optional<double> ks = harmonicConductivityOf(o, true);
+    out << (pressures.empty() ? "" : "nominal_pressure,") << "load,area,pressure,separation,h_per_k,"
+        << (ks ? "h," : "") << "iterations,residual\n";
     for (std::size_t i = 0; i < points.size(); ++i) {
         const BoundaryElementPoint& p = points[i];
         if (!pressures.empty()) {
@@ -632,8 +658,11 @@ int runBoundaryElement(const Options& o)
         if (p.areaFraction > 0.0) {
             out << p.load / p.areaFraction;
         }
-        out << ',' << p.meanSeparation << ',' << p.conductancePerConductivity << ',' << p.iterations << ','
-            << p.residual << '\n';
+        out << ',' << p.meanSeparation << ',' << p.conductancePerConductivity << ',';
+        if (ks) {
+            out << *ks * p.conductancePerConductivity << ',';
+        }
+        out << p.iterations << ',' << p.residual << '\n';
     }
     if (!o.pressureMap.empty()) {
         // The highest load's field again (one more solve, warm-started from nothing): written as
@@ -830,7 +859,9 @@ int run(const Options& o)
             std::cerr << "multiscaleContact: " << r.describe() << std::endl;
         }
     }
-    out << (pressures.empty() ? "" : "nominal_pressure,") << "load,area,pressure" << (conductance ? ",separation,h_per_k" : "");
+    const std::optional<double> ks = harmonicConductivityOf(o, conductance);
+    out << (pressures.empty() ? "" : "nominal_pressure,") << "load,area,pressure" << (conductance ? ",separation,h_per_k" : "")
+        << (ks ? ",h" : "");
     for (const auto& [name, l] : every) {
         out << ",h_per_k_" << name;
     }
@@ -849,7 +880,11 @@ int run(const Options& o)
             if (p.areaFraction > 0.0) {
                 out << load / p.areaFraction;
             }
-            out << ',' << p.meanSeparation << ',' << (law ? law->perConductivity(load * Ep) : p.conductancePerConductivity);
+            const double hk = law ? law->perConductivity(load * Ep) : p.conductancePerConductivity;
+            out << ',' << p.meanSeparation << ',' << hk;
+            if (ks) {
+                out << ',' << *ks * hk;
+            }
         } else {
             const double a = model->areaFraction(load);
             out << load << ',' << a << ',';
@@ -869,6 +904,12 @@ int run(const Options& o)
                 out << ',';
                 if (law) {
                     out << law->perConductivity(load * Ep); // inf at complete contact
+                }
+                if (ks) {
+                    out << ',';
+                    if (law) {
+                        out << *ks * law->perConductivity(load * Ep);
+                    }
                 }
             }
         }
@@ -1018,6 +1059,9 @@ int main(int argc, char** argv)
                    "cooperMikicYovanovich: Vickers coefficients C1 [Pa], C2 of H_v = c1 (d_v/1 um)^c2, the "
                    "microhardness from Song & Yovanovich's correlation");
     app.add_flag("--info", o.info, "print the surface's parameters (McCool, fractal fit) to stderr");
+    app.add_option("--k1", o.k1, "conductivity [W/(m K)] of solid 1: with --k2, add the column h = k_s h_per_k "
+                                 "[W/(m^2 K)], k_s = 2 k1 k2/(k1 + k2)");
+    app.add_option("--k2", o.k2, "conductivity [W/(m K)] of solid 2 (with --k1)");
     app.add_flag("--check", o.check,
                  "check the laws on this surface: the exact model (boundaryElement) on the --areal map, or on "
                  "3 surfaces of 512 x 512 (--synthesize N) synthesized from the profile or spectrum, at the "

@@ -107,7 +107,7 @@ TEST(Cli, HelpDocumentsEveryOptionAndModel)
     for (const char* opt : {"--profile", "--units", "--spectrum", "--length", "--power-law", "--fractal",
                             "--model", "--E", "--nu", "--Eprime", "--Sy", "--loads", "--load-range", "--pressures",
                             "--levels", "--stride", "--areal", "--dy", "--direction", "--fill-invalid",
-                            "--conductance-law", "--vickers", "--hardness-from-yield", "--check"}) {
+                            "--conductance-law", "--vickers", "--hardness-from-yield", "--check", "--k1", "--k2"}) {
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
     }
     for (const std::string& m : modelNames()) {
@@ -748,4 +748,33 @@ TEST(Cli, CheckIsTheLibrarysSurfaceCheck)
     expectError("--profile '" + standin + "' --model persson" + steel + " --check --loads 1e-4", {"--check", "multi-scale"});
     expectError(p + " --loads 1e-12", {"none of the pressures given lies in the checked range"});
     expectError(p + " --synthesize 32,4 --loads 1e-4", {"--synthesize", "grid size N only"});
+}
+
+TEST(Cli, ConductivitiesGiveTheConductanceInWattsPerSquareMetreKelvin)
+{
+    // --k1 --k2: a column h after h_per_k, h = k_s h_per_k with k_s = 2 k1 k2/(k1 + k2) (50 and 200:
+    // 80 W/(m K)), for the load curve and boundaryElement; both or neither, within the accepted
+    // conductivities, and only beside an h_per_k column.
+    const CommandResult r = run("--profile '" + standin + "' --model jacksonGreen" + steel +
+                                " --pressures 1e5,1e6 --conductance --k1 50 --k2 200");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Csv csv = parseCsv(r.out);
+    ASSERT_EQ(csv.rows.size(), 2U);
+    EXPECT_EQ(column(csv, "h"), column(csv, "h_per_k") + 1);
+    for (const auto& row : csv.rows) {
+        const double hk = std::stod(row.at(column(csv, "h_per_k")));
+        EXPECT_NEAR(std::stod(row.at(column(csv, "h"))), 80.0 * hk, 1e-9 * 80.0 * hk); // 10 digits written
+    }
+    const CommandResult b = run("--profile '" + standin + "' --synthesize 32 --model boundaryElement" + steel +
+                                " --pressures 1e7 --k1 50 --k2 200");
+    ASSERT_EQ(b.status, 0) << b.err;
+    const Csv bc = parseCsv(b.out);
+    ASSERT_EQ(bc.rows.size(), 1U);
+    const double hk = std::stod(bc.rows[0].at(column(bc, "h_per_k")));
+    EXPECT_NEAR(std::stod(bc.rows[0].at(column(bc, "h"))), 80.0 * hk, 1e-9 * 80.0 * hk);
+    const std::string p = "--profile '" + standin + "' --model jacksonGreen" + steel + " --pressures 1e6";
+    expectError(p + " --conductance --k1 50", {"--k2", "both conductivities"});
+    expectError(p + " --k1 50 --k2 200", {"--k1", "--conductance"});
+    expectError(p + " --conductance --k1 50 --k2 1e6", {"--k2", "W/(m K)"});
+    expectError(p + " --check --k1 50 --k2 200", {"--k1", "--check"});
 }
