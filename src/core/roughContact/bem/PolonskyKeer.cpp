@@ -159,7 +159,7 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
                 }
                 const auto need = std::min(order.size(), static_cast<std::size_t>(std::ceil(target / H)) + 1);
                 std::partial_sort(order.begin(), order.begin() + need, order.end(),
-                                  [&](std::size_t a, std::size_t b) { return rank[a] < rank[b]; });
+                                  [&](std::size_t i, std::size_t j) { return rank[i] < rank[j]; });
                 double left = target;
                 for (std::size_t k = 0; k < need && left > 0.0; ++k) {
                     q[order[k]] = std::min(H, left);
