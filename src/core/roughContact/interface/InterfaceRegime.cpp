@@ -43,7 +43,7 @@ InterfaceRegime interfaceRegime(const Spectrum& surface, double Eprime, std::opt
     InterfaceRegime out;
     const SpectralMoments m = spectralMoments(surface);
     out.reducedModulus = Eprime;
-    out.gradient = std::sqrt(2.0 * m.m2);
+    out.gradient = arealRmsGradient(m);
     out.hardness = hardness;
     out.law = law;
     out.areaModel = areaModel;

@@ -29,13 +29,6 @@ constexpr double heaviestLoadPerGradient = 1e-1;
 /// Capped: the heaviest checked pressure, as a fraction of H (at H every point flows).
 constexpr double heaviestPerHardness = 0.9;
 
-/// h' = sqrt(2 m2): the areal rms gradient of an isotropic surface whose line scans have the
-/// rms slope sqrt(m2) (SpectralMoments.hpp).
-double arealGradient(const Spectrum& s)
-{
-    return std::sqrt(2.0 * spectralMoments(s).m2);
-}
-
 std::string number(double v)
 {
     std::ostringstream os;
@@ -264,7 +257,7 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
         out.surface = os.str();
     }
     out.levelsKept = lawSpectrum->size();
-    out.gradient = arealGradient(*lawSpectrum);
+    out.gradient = arealRmsGradient(spectralMoments(*lawSpectrum));
 
     // The pressures: the table's range clipped to where the exact model and the laws are compared.
     double lo = spec.minPressure;

@@ -56,4 +56,9 @@ SummitParameters mcCoolParameters(const Spectrum& spectrum)
     return mcCoolParameters(spectralMoments(spectrum));
 }
 
+double arealRmsGradient(const SpectralMoments& moments)
+{
+    return std::sqrt(2.0 * moments.m2);
+}
+
 } // namespace roughContact

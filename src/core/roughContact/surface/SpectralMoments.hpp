@@ -22,6 +22,10 @@ struct SpectralMoments {
 /// Levels with beta_k = 0 contribute nothing.
 SpectralMoments spectralMoments(const Spectrum& spectrum);
 
+/// h' = sqrt(2 m2): the areal rms gradient of an isotropic surface whose line scans have the
+/// rms slope sqrt(m2) (each of the two slope components carries m2).
+double arealRmsGradient(const SpectralMoments& moments);
+
 /// Gaussian-summit parameters of an isotropic surface from its profile moments (McCool 1986,
 /// docs/theory.md §4.1).
 struct SummitParameters {
