@@ -7,8 +7,8 @@
 //
 // h' is the areal rms gradient sqrt(2 m2) of an isotropic surface whose line scans have the rms
 // slope sqrt(m2) (SpectralMoments.hpp). The plasticity index is Greenwood & Williamson's
-// psi = (E'/H) sqrt(sigma_s/R) (Proc. R. Soc. A 295 (1966) 300, their Eq. 19 with H for the
-// flow pressure), sigma_s and R McCool's summit parameters of the spectrum (SpectralMoments.hpp):
+// psi = (E'/H) sqrt(sigma_s/R) (Proc. R. Soc. A 295 (1966) 300, with H for the flow pressure;
+// the equation number not checked: docs/theory.md §5.15), sigma_s and R McCool's summit parameters of the spectrum (SpectralMoments.hpp):
 // below about 0.6 the summits stay elastic, above 1 they flow. For a multi-scale spectrum it
 // depends on the finest level kept (sqrt(sigma_s/R) grows with the slopes); H/(E' h') is printed
 // beside it as the scale-free measure (the report's machined metals: 0.03 to 0.3).
