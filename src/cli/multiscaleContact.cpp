@@ -19,6 +19,7 @@
 #include "roughContact/models/Persson.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
+#include "roughContact/surface/SpectralResampling.hpp"
 #include "roughContact/surface/FractalFit.hpp"
 #include "roughContact/surface/Profile.hpp"
 #include "roughContact/surface/Roughness.hpp"
@@ -62,6 +63,7 @@ struct Options {
     std::optional<std::string> direction;
     bool fillInvalid = false;
     std::string synthesize; // "N[,SEED]"
+    std::string resample;   // "N[,K]"
     bool periodic = false;
     std::optional<std::string> detrend; // boundaryElement: none | mean | plane
     std::optional<double> hardness;
@@ -375,6 +377,20 @@ void printInfo(const Spectrum& s, std::ostream& os)
     }
 }
 
+// The grid size N of --synthesize N[,SEED] or --resample N[,K]: a whole number, even, within
+// the synthesis limits; ParameterError naming the option otherwise.
+std::uint64_t gridSizeOf(const std::string& text, const std::string& option)
+{
+    const std::uint64_t n = wholeNumber(text, option, "the grid size N");
+    if (n < limits::minimumSynthesisSize || n > limits::maximumSynthesisSize || n % 2 != 0) {
+        std::ostringstream os;
+        os << "the grid size N must be even and within [" << limits::minimumSynthesisSize << ", "
+           << limits::maximumSynthesisSize << "], got " << text;
+        throw ParameterError(option, os.str());
+    }
+    return n;
+}
+
 // The areal surface of --model boundaryElement: the --areal map (the composite of two), or one
 // synthesized from the 1-D description (--synthesize N[,SEED]); and whether it is periodic.
 std::pair<ArealSurface, bool> arealSurfaceOf(const Options& o)
@@ -394,6 +410,10 @@ std::pair<ArealSurface, bool> arealSurfaceOf(const Options& o)
             const ArealSurface one = readAreal(path, ro);
             total = total ? compositeSurface(*total, one) : one;
         }
+        if (!o.resample.empty()) {
+            throw ParameterError("--resample", "puts a --synthesize'd (periodic) surface on another grid; an --areal "
+                                               "map is solved as measured");
+        }
         return {*total, o.periodic};
     }
     if (o.synthesize.empty()) {
@@ -404,21 +424,30 @@ std::pair<ArealSurface, bool> arealSurfaceOf(const Options& o)
     // N and SEED as whole numbers, read as integers: a double of 2^64 or more does not convert
     // to a seed (it was undefined behaviour, and gave seed 0's surface).
     const std::size_t comma = o.synthesize.find(',');
-    const std::string nText = o.synthesize.substr(0, comma);
-    const std::uint64_t nGiven = wholeNumber(nText, "--synthesize", "the grid size N");
-    if (nGiven < limits::minimumSynthesisSize || nGiven > limits::maximumSynthesisSize || nGiven % 2 != 0) {
-        std::ostringstream os;
-        os << "the grid size N must be even and within [" << limits::minimumSynthesisSize << ", "
-           << limits::maximumSynthesisSize << "], got " << nText;
-        throw ParameterError("--synthesize", os.str());
-    }
+    const std::uint64_t nGiven = gridSizeOf(o.synthesize.substr(0, comma), "--synthesize");
     const auto seed = comma == std::string::npos
                           ? std::uint64_t(1)
                           : wholeNumber(o.synthesize.substr(comma + 1), "--synthesize", "the seed SEED");
     const Spectrum lineScan = surfaceOf(o);
     const auto n = static_cast<std::size_t>(nGiven);
     // A synthesized surface is periodic: it is solved so (the option is for measured maps).
-    return {synthesizeIsotropic(lineScan, n, seed, "synthesized from " + lineScan.source()), true};
+    ArealSurface synthesized = synthesizeIsotropic(lineScan, n, seed, "synthesized from " + lineScan.source());
+    if (o.resample.empty()) {
+        return {std::move(synthesized), true};
+    }
+    // --resample N[,K]: the same surface (its Fourier series) on N x N, without wavelengths
+    // shorter than L/K if K is given.
+    const std::size_t rc = o.resample.find(',');
+    const std::uint64_t m = gridSizeOf(o.resample.substr(0, rc), "--resample");
+    std::optional<double> levels;
+    if (rc != std::string::npos) {
+        const std::uint64_t k = wholeNumber(o.resample.substr(rc + 1), "--resample", "the levels kept K");
+        if (k < 1) {
+            throw ParameterError("--resample", "keeps at least 1 level (K >= 1), got " + o.resample.substr(rc + 1));
+        }
+        levels = static_cast<double>(k);
+    }
+    return {resampledPeriodic(synthesized, static_cast<std::size_t>(m), levels), true};
 }
 
 // An output file of --pressure-map: not one of the inputs (it would replace the map being
@@ -562,6 +591,9 @@ int runCheck(const Options& o)
     }
     std::sort(pressures.begin(), pressures.end());
     SurfaceCheckOptions so;
+    if (!o.resample.empty()) {
+        throw ParameterError("--resample", "is for --model boundaryElement; --check chooses its own grids");
+    }
     if (!o.synthesize.empty()) {
         const std::size_t comma = o.synthesize.find(',');
         if (comma != std::string::npos) {
@@ -709,6 +741,7 @@ int run(const Options& o)
     }
     const bool cmy = o.conductanceLaw == "cooperMikicYovanovich" || o.conductanceLaw == "all";
     for (const auto& [given, what] : {std::pair<bool, const char*>{!o.synthesize.empty(), "--synthesize"},
+                                      {!o.resample.empty(), "--resample"},
                                       {o.periodic, "--periodic"},
                                       {o.detrend.has_value(), "--detrend"},
                                       {o.hardness.has_value() && !cmy, "--hardness"},
@@ -999,6 +1032,10 @@ int main(int argc, char** argv)
     app.add_option("--synthesize", o.synthesize,
                    "N[,SEED]: boundaryElement on an N x N isotropic Gaussian surface synthesized from the "
                    "--profile/--spectrum/--power-law/--fractal (periodic; SEED default 1)");
+    app.add_option("--resample", o.resample,
+                   "N[,K]: boundaryElement on the --synthesize'd surface put on an N x N grid (its Fourier series "
+                   "there: the same surface, finer or coarser), without its wavelengths shorter than L/K if K is "
+                   "given (the same surface with fewer levels)");
     app.add_flag("--periodic", o.periodic,
                  "boundaryElement: solve an --areal map as one period of a periodic surface (default: "
                  "non-periodic, zero-padded)");

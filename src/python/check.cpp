@@ -96,12 +96,14 @@ void bindCheck(py::module_& m)
             d["from"] = b->from;
             d["to"] = b->to;
             d["surfaces"] = b->surfaces;
+            d["report"] = b->report;
             return d;
         },
         py::arg("law"), py::arg("model"), py::arg("capped"), py::arg("load_per_gradient"),
-        "The band of law / exact the fidelity report measured for `law` on the area `model` against the capped "
-        "(p <= H) or elastic reference, in the decade of p/(E' h') holding load_per_gradient: a dict (low, high, "
-        "from, to, surfaces), or None where nothing was measured.");
+        "The band of law / exact the engineering-range report (or, for the area models it does not run, the "
+        "fidelity report) measured for `law` on the area `model` against the capped (p <= H) or elastic "
+        "reference, in the decade of p/(E' h') holding load_per_gradient: a dict (low, high, from, to, surfaces, "
+        "report), or None where nothing was measured.");
 
     m.def(
         "check",

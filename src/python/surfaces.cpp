@@ -17,6 +17,7 @@
 #include "roughContact/io/Units.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
+#include "roughContact/surface/SpectralResampling.hpp"
 #include "roughContact/surface/Profile.hpp"
 #include "roughContact/surface/Roughness.hpp"
 #include "roughContact/surface/Spectrum.hpp"
@@ -197,6 +198,17 @@ void bindSurfaces(py::module_& m)
         "An n x n periodic isotropic Gaussian surface on L x L (L the spectrum's length, spacing L/n) whose "
         "line scans have the spectrum's power; random phases from seed (multiscaleContact --synthesize "
         "N,SEED). n even, 8 to 4096.");
+
+    m.def(
+        "resample_periodic",
+        [](const ArealSurface& surface, std::size_t n, std::optional<double> levels) {
+            return resampledPeriodic(surface, n, levels);
+        },
+        py::arg("surface"), py::arg("n"), py::arg("levels") = py::none(),
+        "resample_periodic(surface, n, levels=None) -> ArealSurface\n\n"
+        "One period of a square periodic surface (as synthesize_isotropic makes) as the n x n samples of its "
+        "Fourier series: the same surface on a finer or coarser grid, without the wavelengths shorter than "
+        "L/levels when levels is given (multiscaleContact --resample N,K). n even, 8 to 4096.");
 
     py::class_<SurfaceRoughness>(m, "SurfaceRoughness",
                                  "The rms height sigma [m] and mean absolute slope m of a surface (the "

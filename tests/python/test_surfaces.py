@@ -138,6 +138,27 @@ def test_synthesize_isotropic():
     assert abs(np.mean(a.heights)) < 1e-12 * a.rms() * 1e3
 
 
+def test_resample_periodic():
+    """The same surface on a finer grid (SpectralResampling.hpp): every 4th point is an old one,
+    the variance is kept (no power at the coarse grid's Nyquist frequency: 8 levels on 32 points);
+    with levels, numpy's own low-pass of the coefficients."""
+    s = rc.Spectrum.power_law(1e-9, 1.3, 1e3, 8e3)
+    a = rc.synthesize_isotropic(s, 32, 7)
+    f = rc.resample_periodic(a, 128)
+    assert f.heights.shape == (128, 128)
+    assert f.dx == pytest.approx(a.dx / 4)
+    np.testing.assert_allclose(f.heights[::4, ::4], a.heights, atol=1e-12 * a.rms())
+    assert f.rms() == pytest.approx(a.rms(), rel=1e-12)
+    cut = rc.resample_periodic(a, 32, levels=5)
+    c = np.fft.fft2(a.heights)
+    k = np.fft.fftfreq(32, 1.0 / 32)
+    kk = np.hypot(k[None, :], k[:, None])
+    c[kk > 5] = 0
+    np.testing.assert_allclose(cut.heights, np.fft.ifft2(c).real, atol=1e-12 * a.rms())
+    with pytest.raises(rc.ParameterError, match="levels"):
+        rc.resample_periodic(a, 32, levels=0)
+
+
 def test_roughness():
     p = rc.read_profile(STANDIN)
     r = rc.profile_roughness(p)

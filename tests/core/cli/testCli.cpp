@@ -15,6 +15,7 @@
 #include "roughContact/models/Persson.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
+#include "roughContact/surface/SpectralResampling.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/surface/Roughness.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
@@ -630,6 +631,36 @@ TEST(Cli, BoundaryElementInputsAHostileUserTried)
     for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {
         EXPECT_EQ(entry.path().string().find(".tmp."), std::string::npos) << "a temporary was left: " << entry.path();
     }
+}
+
+// Issue 20, items 1 and 5: --resample N[,K] solves the --synthesize'd surface put on N x N (and
+// without its wavelengths shorter than L/K): the library's resampledPeriodic of the same surface.
+TEST(Cli, ResampleIsTheLibrarysResampledSurface)
+{
+    const std::string p = "--profile '" + standin + "'";
+    const std::string bem = " --model boundaryElement" + steel;
+    const CommandResult r = run(p + " --synthesize 32,4 --resample 64,6" + bem + " --loads 1e-3");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Csv csv = parseCsv(r.out);
+    ASSERT_EQ(csv.rows.size(), 1U);
+    const ContactMaterials mat = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
+    BoundaryElementOptions o;
+    o.periodic = true;
+    const ArealSurface coarse = synthesizeIsotropic(Spectrum::fromProfile(readProfile(standin)), 32, 4);
+    const BoundaryElementPoint resampled =
+        BoundaryElementModel(resampledPeriodic(coarse, 64, 6.0), mat.reducedModulus(), o).solve(1e-3);
+    const BoundaryElementPoint asIs = BoundaryElementModel(coarse, mat.reducedModulus(), o).solve(1e-3);
+    const double h = std::stod(csv.rows[0].at(column(csv, "h_per_k")));
+    // To the solver's tolerance, printed to 10 digits (the same solve as the library's).
+    EXPECT_NEAR(h, resampled.conductancePerConductivity, 1e-6 * h);
+    EXPECT_NEAR(std::stod(csv.rows[0].at(column(csv, "area"))), resampled.areaFraction, 1e-9);
+    // Not the surface as synthesized (another grid and fewer levels: another answer).
+    EXPECT_GT(std::abs(h / asIs.conductancePerConductivity - 1.0), 1e-3);
+    expectError(p + " --synthesize 32 --resample 63" + bem + " --loads 1e-3", {"--resample", "even", "got 63"});
+    expectError(p + " --synthesize 32 --resample 64,0" + bem + " --loads 1e-3", {"--resample", "K >= 1"});
+    expectError(p + " --synthesize 32 --resample 64,x" + bem + " --loads 1e-3", {"--resample", "'x'"});
+    expectError(p + " --model hertz --Eprime 2e11 --resample 64 --loads 1e-3", {"--resample", "boundaryElement"});
+    expectError(p + " --synthesize 32 --resample 64" + bem + " --check --loads 1e-3", {"--resample"});
 }
 
 TEST(Cli, PressuresAreTheLoadsAtPOverEprime)

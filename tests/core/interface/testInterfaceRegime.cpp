@@ -31,24 +31,31 @@ TEST(MeasuredAccuracy, IsTheReportsRowForTheLawModelReferenceAndDecade)
             EXPECT_LE(band->low, band->high);
         }
     }
-    // The default law on the condition's default model, capped, at p/(E' h') = 1e-3..1e-2: the
-    // report's 0.348-1.46 (4 surfaces).
-    const auto d = measuredAccuracy(defaultConductanceLaw(), "jacksonGreen", true, 3e-3);
+    // jacksonBhavnaniFerguson on the condition's default model, capped, at p/(E' h') =
+    // 1e-3..1e-2: the engineering-range report's 0.194-1.31 over its 5 surfaces.
+    const auto d = measuredAccuracy("jacksonBhavnaniFerguson", "jacksonGreen", true, 3e-3);
     ASSERT_TRUE(d.has_value());
-    EXPECT_EQ(d->low, 0.348);
-    EXPECT_EQ(d->high, 1.46);
-    EXPECT_EQ(d->surfaces, 4);
+    EXPECT_EQ(d->low, 0.194);
+    EXPECT_EQ(d->high, 1.31);
+    EXPECT_EQ(d->surfaces, 5);
+    EXPECT_EQ(d->report, "engineering-range report");
+    // The area models that report does not run come from the fidelity report.
+    const auto t = measuredAccuracy("jacksonBhavnaniFerguson", "truncation", true, 3e-3);
+    ASSERT_TRUE(t.has_value());
+    EXPECT_EQ(t->report, "fidelity report");
     // The laws that take no area ignore the model; the ones that do, do not.
     EXPECT_TRUE(measuredAccuracy("persson", "hertz", false, 3e-3).has_value());
     EXPECT_EQ(measuredAccuracy("persson", "hertz", false, 3e-3)->high,
               measuredAccuracy("persson", "jacksonGreen", false, 3e-3)->high);
     EXPECT_FALSE(measuredAccuracy("jacksonBhavnaniFerguson", "jgh", false, 3e-3).has_value());
-    // Nothing measured outside 1e-5 .. 1, nor for cooperMikicYovanovich against the elastic one.
-    EXPECT_FALSE(measuredAccuracy(defaultConductanceLaw(), "jacksonGreen", true, 1e-7).has_value());
-    EXPECT_FALSE(measuredAccuracy(defaultConductanceLaw(), "jacksonGreen", true, 2.0).has_value());
+    // Nothing measured below the reports' lightest load or beyond 1, nor for
+    // cooperMikicYovanovich against the elastic one.
+    EXPECT_FALSE(measuredAccuracy("jacksonBhavnaniFerguson", "jacksonGreen", true, 1e-7).has_value());
+    EXPECT_FALSE(measuredAccuracy("jacksonBhavnaniFerguson", "jacksonGreen", true, 2.0).has_value());
     EXPECT_FALSE(measuredAccuracy("cooperMikicYovanovich", "", false, 3e-3).has_value());
     EXPECT_EQ(describeAccuracy(std::nullopt, 1e-7), "not measured at p/(E' h') = 1e-07");
-    EXPECT_EQ(describeAccuracy(d, 3e-3), "0.35-1.5 of exact (4 surfaces of the fidelity report, p/(E' h') 0.001 to 0.01)");
+    EXPECT_EQ(describeAccuracy(d, 3e-3),
+              "0.19-1.3 of exact (5 surfaces of the engineering-range report, p/(E' h') 0.001 to 0.01)");
 }
 
 TEST(InterfaceRegime, FromTheDefinitions)

@@ -15,7 +15,7 @@ std::optional<AccuracyBand> measuredAccuracy(const std::string& law, const std::
     for (const measured::AccuracyRow& r : measured::accuracyRows) {
         if (law == r.law && (!takesArea || areaModel == r.areaModel) && capped == r.capped &&
             loadPerGradient >= r.from && loadPerGradient < r.to) {
-            return AccuracyBand{r.from, r.to, r.low, r.high, r.surfaces};
+            return AccuracyBand{r.from, r.to, r.low, r.high, r.surfaces, r.report};
         }
     }
     return std::nullopt;
@@ -30,7 +30,7 @@ std::string describeAccuracy(const std::optional<AccuracyBand>& band, double loa
         return os.str();
     }
     os << band->low << "-" << band->high << " of exact (" << band->surfaces
-       << (band->surfaces == 1 ? " surface" : " surfaces") << " of the fidelity report, p/(E' h') " << band->from
+       << (band->surfaces == 1 ? " surface" : " surfaces") << " of the " << band->report << ", p/(E' h') " << band->from
        << " to " << band->to << ")";
     return os.str();
 }

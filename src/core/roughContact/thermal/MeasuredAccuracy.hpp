@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // How far each conductance law was measured from the exact answer (issue 20, item 3): the band
-// of law / exact the fidelity report (docs/validation/fidelity.md) found for a law on its area
-// model, against the elastic or the capped (p <= H) reference, in a decade of p/(E' h'). The
-// numbers are the report's, in one place: MeasuredAccuracyTable.hpp, written by
-// docs/validation/accuracyTable from the report's data (a CTest test keeps them equal).
+// of law / exact the engineering-range report (docs/validation/engineeringRange.md; the fidelity
+// report, docs/validation/fidelity.md, for the area models it does not run) found for a law on
+// its area model, against the elastic or the capped (p <= H) reference, in a decade of
+// p/(E' h'). The numbers are the reports', in one place: MeasuredAccuracyTable.hpp, written by
+// docs/validation/accuracyTable from the reports' data (a CTest test keeps them equal).
 #pragma once
 
 #include <optional>
@@ -17,6 +18,7 @@ struct AccuracyBand {
     double low = 0.0;  ///< the smallest law / exact over the report's surfaces there
     double high = 0.0; ///< the largest
     int surfaces = 0;  ///< how many of the report's surfaces had a point there
+    std::string report; ///< which report measured it ("engineering-range report", "fidelity report")
 };
 
 /// The band of `law` on `areaModel` (a multi-scale model's name; ignored for the laws that take
@@ -26,7 +28,8 @@ struct AccuracyBand {
 std::optional<AccuracyBand> measuredAccuracy(const std::string& law, const std::string& areaModel, bool capped,
                                              double loadPerGradient);
 
-/// One line: "0.30-0.86 of exact (4 surfaces, p/(E' h') 1e-4 to 1e-3)" or "not measured at
+/// One line: "0.30-0.86 of exact (4 surfaces of the engineering-range report, p/(E' h') 0.0001 to
+/// 0.001)" or "not measured at
 /// p/(E' h') = ...".
 std::string describeAccuracy(const std::optional<AccuracyBand>& band, double loadPerGradient);
 
