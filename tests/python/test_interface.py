@@ -29,7 +29,9 @@ def test_table_is_the_model_and_the_law(interface):
     np.testing.assert_allclose(interface.conductance_per_conductivity(P),
                                interface.table_conductances_per_conductivity, rtol=1e-12)
     model = rc.Model("jacksonGreen", interface.surface, pair)
-    law = rc.ConductanceLaw(rc.default_conductance_law(), model=model)
+    law = rc.ConductanceLaw(rc.default_conductance_law(), model=model, Eprime=pair.reduced_modulus,
+                            roughness=rc.profile_roughness(rc.read_profile(STANDIN)),
+                            hardness=2.84 * STEEL_M.Sy)
     some = P[::37]
     np.testing.assert_allclose(interface.table_area_fractions[::37], model.area_fraction(some), rtol=1e-12)
     np.testing.assert_allclose(interface.table_conductances_per_conductivity[::37],

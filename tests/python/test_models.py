@@ -55,7 +55,7 @@ def test_area_equals_the_cli(cli, spectrum, steel, name):
 def test_pressures_equal_the_cli_pressures_option(cli, spectrum, steel):
     P = [1e4, 1e5, 1e6, 1e7]
     r = cli("--profile", STANDIN, "--model", "jacksonGreen", *STEEL_ARGS, "--pressures", ",".join(map(repr, P)),
-            "--conductance")
+            "--conductance-law", "jacksonBhavnaniFerguson")
     assert r.status == 0, r.err
     c = r.columns()
     np.testing.assert_array_equal(c["nominal_pressure"], P)

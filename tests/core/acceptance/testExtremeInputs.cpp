@@ -402,6 +402,11 @@ TEST(ExtremeInputs, theBoundaryConditionEntryRefusesTheInputsThatCrashedTheSolve
     for (double P : {1e-3, 1e3, 1e6, 1e9, 1e300, std::numeric_limits<double>::max()}) {
         const FaceContact c = ci.face(P, 45.0, 45.0);
         EXPECT_TRUE(c.areaFraction >= 0.0 && c.areaFraction <= 1.0) << P;
-        EXPECT_EQ(c.areaFraction == 1.0, std::isinf(c.conductance)) << P;
+        EXPECT_GE(c.conductance, 0.0) << P; // never NaN
+        // Complete contact joins the solids; the law may join them earlier (fittedElastoPlastic
+        // at P = H or p/(E' h') = 1/B), never later.
+        if (c.areaFraction == 1.0) {
+            EXPECT_TRUE(std::isinf(c.conductance)) << P;
+        }
     }
 }

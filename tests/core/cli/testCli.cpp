@@ -20,6 +20,7 @@
 #include "roughContact/surface/Roughness.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
+#include "roughContact/thermal/FittedElastoPlastic.hpp"
 
 #include <gtest/gtest.h>
 
@@ -176,7 +177,8 @@ TEST(Cli, LevelTraceSumsToTheArea)
 
 TEST(Cli, ConductanceColumnIsTheLibrarys)
 {
-    // --conductance adds h_per_k = h_c/k_s [1/m]; the CLI prints the library's value to 10 digits.
+    // --conductance adds h_per_k = h_c/k_s [1/m] of the default law (fittedElastoPlastic on the
+    // profile's roughness, capped at H = 2.84 S_y); the CLI prints the library's value to 10 digits.
     const CommandResult r = run("--profile '" + standin + "' --model jacksonGreen" + steel +
                                 " --loads 1e-6,1e-4,1e-3 --conductance");
     ASSERT_EQ(r.status, 0) << r.err;
@@ -189,13 +191,18 @@ TEST(Cli, ConductanceColumnIsTheLibrarys)
     const int sep = column(csv, "separation");
     for (const auto& row : csv.rows) {
         const double load = std::stod(row.at(0));
-        const double expected = constrictionConductancePerConductivity(m, load);
+        const double expected = fittedElastoPlasticConductancePerConductivity(
+            load * mat.reducedModulus(), profileRoughness(readProfile(standin)), mat.reducedModulus(), 2.84 * 0.2e9);
         EXPECT_NEAR(std::stod(row.at(hi)), expected, 1e-9 * expected);
-        EXPECT_EQ(row.at(sep), ""); // the multi-scale model defines no mean separation
+        EXPECT_EQ(row.at(sep), ""); // neither the multi-scale model nor the law defines a mean separation
     }
+    // The multi-scale laws need the multi-scale levels; the default law does not.
     expectError("--profile '" + standin + "' --model greenwoodWilliamson" + steel +
-                    " --loads 1e-4 --conductance",
+                    " --loads 1e-4 --conductance-law jacksonBhavnaniFerguson",
                 {"--conductance"});
+    EXPECT_EQ(run("--profile '" + standin + "' --model greenwoodWilliamson" + steel + " --loads 1e-4 --conductance")
+                  .status,
+              0);
 }
 
 // The stand-in under jacksonGreen on steel, as the CLI builds it, and every conductance law's

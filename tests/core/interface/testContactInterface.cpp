@@ -12,6 +12,7 @@
 #include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 #include "roughContact/thermal/CooperMikicYovanovich.hpp"
+#include "roughContact/thermal/FittedElastoPlastic.hpp"
 #include "roughContact/thermal/Mikic.hpp"
 
 #include <gtest/gtest.h>
@@ -52,13 +53,25 @@ TEST(ContactInterface, EqualsTheHandBuiltModel)
     const MultiscaleModel m(Spectrum::fromProfile(readProfile(standin)), mat.reducedModulus(),
                             makeAsperityModel("jacksonGreen", mat));
     // Default table range 1e-9 E' .. E'; the table is within 0.5 % of the direct solve
-    // (testConstrictionConductance checks that bound densely); here a few spot checks.
+    // (testConstrictionConductance checks that bound densely); here a few spot checks. The
+    // default law (fittedElastoPlastic) on the profile's roughness, capped at H = 2.84 S_y of
+    // copper, which yields first; the area the multi-scale model's.
+    EXPECT_EQ(defaultConductanceLaw(), "fittedElastoPlastic");
+    const SurfaceRoughness r = profileRoughness(readProfile(standin));
     for (double P : {1e3, 1e5, 1e6, 1e7, 1e8}) {
         SCOPED_TRACE(P);
         const double load = P / mat.reducedModulus();
         EXPECT_NEAR(ci.areaFraction(P), m.areaFraction(load), 0.005 * m.areaFraction(load));
-        const double h = constrictionConductancePerConductivity(m, load);
+        const double h = fittedElastoPlasticConductancePerConductivity(P, r, mat.reducedModulus(), 2.84 * 0.07e9);
         EXPECT_NEAR(ci.conductancePerConductivity(P), h, 0.005 * h);
+    }
+    // jacksonBhavnaniFerguson by name: the multi-scale constriction sum of the same model.
+    InterfaceSpec jbf = steelOnCopper();
+    jbf.conductanceLaw = "jacksonBhavnaniFerguson";
+    const ContactInterface cj(jbf);
+    for (double P : {1e3, 1e5, 1e6, 1e7, 1e8}) {
+        const double h = constrictionConductancePerConductivity(m, P / mat.reducedModulus());
+        EXPECT_NEAR(cj.conductancePerConductivity(P), h, 0.005 * h) << P;
     }
     // Copper (S_y 0.07 GPa) yields first: the pair takes copper's S_y, E and nu (whichever side
     // it is on), so complete contact comes at a lower pressure than when copper had steel's

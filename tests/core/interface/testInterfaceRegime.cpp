@@ -117,8 +117,12 @@ TEST(InterfaceRegime, TheInterfaceSaysItsRegimeAtTheTablesEnds)
     EXPECT_DOUBLE_EQ(*r.hardness, 2.84 * 0.4e9); // the softer side yields
     EXPECT_EQ(r.law, defaultConductanceLaw());
     EXPECT_NE(ci.summary().find(r.describe()), std::string::npos) << ci.summary();
-    // hertz: held to the elastic reference, though the materials have a hardness (P/H said).
+    // hertz with the default law: still capped, the law has a plastic branch and the hardness.
     spec.model = "hertz";
+    EXPECT_TRUE(ContactInterface(spec).regime().capped);
+    // hertz with jacksonBhavnaniFerguson: held to the elastic reference, though the materials
+    // have a hardness (P/H said).
+    spec.conductanceLaw = "jacksonBhavnaniFerguson";
     const ContactInterface elastic(spec);
     EXPECT_FALSE(elastic.regime().capped);
     EXPECT_TRUE(elastic.regime().low.perHardness.has_value());

@@ -172,7 +172,7 @@ const std::vector<std::string>& conductanceLawNames()
 
 const std::string& defaultConductanceLaw()
 {
-    static const std::string name = "jacksonBhavnaniFerguson";
+    static const std::string name = "fittedElastoPlastic";
     return name;
 }
 
