@@ -74,17 +74,20 @@ ArealSurface resampledPeriodic(const ArealSurface& periodic, std::size_t n, std:
             // A coarse Nyquist line stands for +n/2 and -n/2: on a grid that holds both apart,
             // each gets half (a cosine sampled at its crests stays that cosine). On the same grid
             // it stays one cell.
-            std::vector<long> kys{ky};
+            long kys[2] = {ky, ky};
+            std::size_t count = 1;
             double weight = 1.0;
             if (ky == half && newHalf != half) {
-                kys = {half, -half};
+                kys[1] = -half;
+                count = 2;
                 weight *= 0.5;
             }
             const bool splitX = kx == half && newHalf != half;
             if (splitX) {
                 weight *= 0.5;
             }
-            for (long y : kys) {
+            for (std::size_t i = 0; i < count; ++i) {
+                const long y = kys[i];
                 // What the new grid cannot hold apart from its own Nyquist alias is dropped.
                 const bool beyond = kx > newHalf || y > newHalf || y < -newHalf;
                 const bool onNewNyquist = newHalf < half && (kx == newHalf || y == newHalf || y == -newHalf);
