@@ -40,6 +40,16 @@ double requireLength(const std::string& what, double value)
     return requireInRange(what, value, minimumLength, maximumLength, "m");
 }
 
+void requireSynthesisSize(const std::string& what, std::size_t n)
+{
+    if (n < minimumSynthesisSize || n > maximumSynthesisSize || n % 2 != 0) {
+        std::ostringstream os;
+        os << "the grid size must be even and within [" << minimumSynthesisSize << ", " << maximumSynthesisSize
+           << "], got " << n;
+        throw ParameterError(what, os.str());
+    }
+}
+
 void requireLevelCount(const std::string& what, double levels, const std::string& hint)
 {
     if (levels > static_cast<double>(maximumLevels)) {

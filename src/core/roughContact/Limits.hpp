@@ -99,6 +99,9 @@ constexpr std::size_t maximumPointsPerDecade = 1000;
 /// integer, 0 to 2^64 - 1 (a front-end refuses a larger or non-integer number, it does not wrap).
 constexpr std::size_t minimumSynthesisSize = 8;
 constexpr std::size_t maximumSynthesisSize = 4096;
+/// ParameterError naming `what` unless n is such a grid size ("the grid size must be even and
+/// within [8, 4096], got n"): the synthesis, the resampling and the check of a surface.
+void requireSynthesisSize(const std::string& what, std::size_t n);
 
 /// Thermal conductivities [W/(m K)] of the solids (k1, k2; k_s = 2 k1 k2/(k1 + k2)): aerogels
 /// have 0.01, diamond 2200; from 1e-4 to 1e5.

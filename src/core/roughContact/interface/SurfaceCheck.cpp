@@ -239,12 +239,7 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
         out.surface = os.str();
     } else {
         const std::size_t n = options.gridSize;
-        if (n < limits::minimumSynthesisSize || n > limits::maximumSynthesisSize || n % 2 != 0) {
-            std::ostringstream os;
-            os << "the grid size must be even and within [" << limits::minimumSynthesisSize << ", "
-               << limits::maximumSynthesisSize << "], got " << n;
-            throw ParameterError("check grid", os.str());
-        }
+        limits::requireSynthesisSize("check grid", n);
         // The shortest wavelength 8 cells (SurfaceCheck.hpp); the lowest level always stays.
         const double cutoff = std::max(double(n / 8) / given.length(), given.frequencies().front());
         lawSpectrum = given.truncated(cutoff * (1.0 + 1e-12));

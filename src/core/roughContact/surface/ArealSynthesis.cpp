@@ -178,21 +178,9 @@ double IsotropicSpectrum::powerOutside(double q) const
     return sum;
 }
 
-namespace {
-void requireGridSize(std::size_t n)
-{
-    if (n < limits::minimumSynthesisSize || n > limits::maximumSynthesisSize || n % 2 != 0) {
-        std::ostringstream os;
-        os << "the grid size must be even and within [" << limits::minimumSynthesisSize << ", "
-           << limits::maximumSynthesisSize << "], got " << n;
-        throw ParameterError("n", os.str());
-    }
-}
-} // namespace
-
 std::vector<double> isotropicGridPower(const Spectrum& lineScan, std::size_t n)
 {
-    requireGridSize(n);
+    limits::requireSynthesisSize("n", n);
     const double L = lineScan.length();
     limits::requireLength("spacing L/n", L / static_cast<double>(n));
     // The grid's Nyquist frequency n/(2L), with a relative 1e-12 so that a level computed as
@@ -240,7 +228,7 @@ std::vector<double> isotropicGridPower(const Spectrum& lineScan, std::size_t n)
 ArealSurface synthesizeIsotropic(const Spectrum& lineScan, std::size_t n, std::uint64_t seed,
                                  std::string source)
 {
-    requireGridSize(n); // before anything is allocated
+    limits::requireSynthesisSize("n", n); // before anything is allocated
     std::vector<double> power = isotropicGridPower(lineScan, n);
     const std::size_t nc = n / 2 + 1;
     std::vector<std::complex<double>> A(n * nc);

@@ -25,12 +25,7 @@ long signedWavenumber(std::size_t i, std::size_t n)
 ArealSurface resampledPeriodic(const ArealSurface& periodic, std::size_t n, std::optional<double> levels)
 {
     const std::string what = periodic.source().empty() ? std::string("surface") : periodic.source();
-    if (n < limits::minimumSynthesisSize || n > limits::maximumSynthesisSize || n % 2 != 0) {
-        std::ostringstream os;
-        os << "the grid size must be even and within [" << limits::minimumSynthesisSize << ", "
-           << limits::maximumSynthesisSize << "], got " << n;
-        throw ParameterError("n", os.str());
-    }
+    limits::requireSynthesisSize("n", n);
     if (levels && !(*levels >= 1.0)) {
         std::ostringstream os;
         os << "the number of levels kept must be at least 1, got " << *levels;
