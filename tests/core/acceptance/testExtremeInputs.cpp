@@ -404,7 +404,7 @@ TEST(ExtremeInputs, theBoundaryConditionEntryRefusesTheInputsThatCrashedTheSolve
         EXPECT_TRUE(c.areaFraction >= 0.0 && c.areaFraction <= 1.0) << P;
         EXPECT_GE(c.conductance, 0.0) << P; // never NaN
         // Complete contact joins the solids; the law may join them earlier (fittedElastoPlastic
-        // at P = H or p/(E' h') = 1/B), never later.
+        // at P = H), never later.
         if (c.areaFraction == 1.0) {
             EXPECT_TRUE(std::isinf(c.conductance)) << P;
         }

@@ -83,7 +83,7 @@ ContactTable::ContactTable(const MultiscaleModel& model, double minPressure, dou
         const double h = law != nullptr ? law->perConductivity(P)
                                         : constrictionConductancePerConductivity(trace, model.nominalArea());
         // +inf from a law: it says the surfaces conduct perfectly from here on (a law with its
-        // own complete contact: fittedElastoPlastic at P = H or its pole); the grid ends there
+        // own complete contact: fittedElastoPlastic at P = H); the grid ends there
         // as at the conductance ceiling.
         if (!(area > 0.0 && h > 0.0 && (std::isfinite(h) || (law != nullptr && h == HUGE_VAL)))) {
             std::ostringstream os;

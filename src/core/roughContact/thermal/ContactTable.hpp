@@ -94,7 +94,7 @@ public:
     /// when the model does not reach it below limits::maximumLoad E' (Limits.hpp).
     double completeContactPressure() const noexcept { return pComplete_; }
     /// The pressure [Pa] from which the law says the conductance is infinite before the model's
-    /// complete contact (fittedElastoPlastic at P = H or at its pole): h_c/k_s is +inf there,
+    /// complete contact (fittedElastoPlastic at P = H): h_c/k_s is +inf there,
     /// A_r/A_n the model's (held at the table's end); +infinity: none.
     double perfectConductancePressure() const noexcept { return pPerfect_; }
     /// The table's points: pressures [Pa] and the values there.

@@ -48,17 +48,27 @@ double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoug
     const double m = r.meanAbsoluteSlope;
     // x = P/(E' h'), h' = sqrt(pi) m for Gaussian isotropic slopes.
     const double x = P / (std::sqrt(pi) * Eprime * m);
-    if (c.pole * x >= 1.0 || (H && P >= *H)) {
+    if (H && P >= *H) {
         return inf;
     }
-    const double elastic = c.elasticPrefactor * (m / r.sigma) *
-                           std::pow(std::sqrt(2.0) * P / (Eprime * m), c.elasticExponent) / (1.0 - c.pole * x);
+    // In logarithms: far beyond its range (x of hundreds) the elastic branch, or its power N,
+    // exceeds a double; it is +inf there (complete contact) without an overflow on the way.
+    const double logElastic = std::log(c.elasticPrefactor * (m / r.sigma)) +
+                              c.elasticExponent * std::log(std::sqrt(2.0) * P / (Eprime * m)) + c.elasticGrowth * x;
+    const double logMax = 700.0 / std::max(1.0, c.blend);
+    if (logElastic > logMax) {
+        return inf;
+    }
+    const double elastic = std::exp(logElastic);
     if (!H) {
         return elastic;
     }
     const double a = P / *H;
     const double plastic =
         c.plasticPrefactor * (m / r.sigma) * gaussianPlasticSpotConductance(a) * std::pow(1.0 - a, -c.plasticExponent);
+    if (!(plastic < std::exp(logMax))) {
+        return inf;
+    }
     return std::pow(std::pow(elastic, c.blend) + std::pow(plastic, c.blend), 1.0 / c.blend);
 }
 
