@@ -75,7 +75,7 @@ struct Options {
     std::vector<double> E;
     std::vector<double> nu;
     std::optional<double> Eprime;
-    std::vector<double> Sy;
+    std::vector<std::string> Sy; // numbers [Pa], or none: the solid does not yield
     std::vector<std::string> loads; // as given: "1e-5,1e-4" (split here, so "" is an error)
     std::string loadRange;
     std::vector<std::string> pressures; // --pressures: nominal pressures F/A_n [Pa], as given
@@ -306,6 +306,16 @@ SurfaceRoughness roughnessOf(const Options& o)
     return *total;
 }
 
+// One --Sy item: a yield strength [Pa], or none (the solid does not yield: Material::elastic).
+void readYieldStrength(const std::string& item, Material& m)
+{
+    if (item == "none") {
+        m.elastic = true;
+        return;
+    }
+    m.Sy = splitNumbers(item, ',', "--Sy").front();
+}
+
 ContactMaterials materialsOf(const Options& o)
 {
     if (!o.pressures.empty() && !o.Eprime && o.E.empty()) {
@@ -317,9 +327,12 @@ ContactMaterials materialsOf(const Options& o)
             throw ParameterError("--Eprime",
                                  "takes one --nu and one --Sy (of the material that yields first)");
         }
+        Material y;
+        if (!o.Sy.empty()) {
+            readYieldStrength(o.Sy[0], y);
+        }
         return ContactMaterials::fromReducedModulus(
-            *o.Eprime, o.nu.empty() ? std::nullopt : std::optional<double>(o.nu[0]),
-            o.Sy.empty() ? std::nullopt : std::optional<double>(o.Sy[0]));
+            *o.Eprime, o.nu.empty() ? std::nullopt : std::optional<double>(o.nu[0]), y.Sy);
     }
     if (o.E.empty()) {
         throw ParameterError("--E", "give --E (with --nu) or --Eprime");
@@ -335,10 +348,11 @@ ContactMaterials materialsOf(const Options& o)
         m[i].E = o.E[i];
         m[i].nu = o.nu[i];
         if (!o.Sy.empty()) {
-            m[i].Sy = o.Sy[i];
+            readYieldStrength(o.Sy[i], m[i]);
         }
     }
-    return m.size() == 1 ? ContactMaterials::againstRigidFlat(m[0]) : ContactMaterials::pair(m[0], m[1]);
+    return m.size() == 1 ? ContactMaterials::againstRigidFlat(m[0])
+                         : ContactMaterials::pair(m[0], m[1], "solid 1", "solid 2");
 }
 
 // --hardness H or --hardness-from-yield (H = 2.84 S_y): the boundary-element cap and the CMY
@@ -1058,7 +1072,8 @@ int main(int argc, char** argv)
     E->excludes(Ep);
     app.add_option("--Sy", o.Sy,
                    "yield strength [Pa] (jacksonGreen, truncation, greenwoodWilliamsonJG, "
-                   "majumdarBhushan); Sy1,Sy2 with two moduli")
+                   "majumdarBhushan); Sy1,Sy2 with two moduli, none for a solid that does not yield "
+                   "(Sy1,none)")
         ->delimiter(',')
         ->expected(1, 2);
 

@@ -29,16 +29,20 @@ namespace roughcontact_py {
 void bindMaterials(py::module_& m)
 {
     py::class_<Material>(m, "Material", "One solid: Young's modulus E [Pa], Poisson's ratio nu, yield strength Sy [Pa].")
-        .def(py::init([](double E, double nu, std::optional<double> Sy) { return Material{E, nu, Sy}; }),
-             py::arg("E"), py::arg("nu"), py::arg("Sy") = py::none(),
-             "Material(E, nu, Sy=None): E [Pa], nu, Sy [Pa] (needed by jacksonGreen, truncation, "
-             "greenwoodWilliamsonJG, majumdarBhushan). Checked where it is used.")
+        .def(py::init([](double E, double nu, std::optional<double> Sy, bool elastic) {
+                 return Material{E, nu, Sy, elastic};
+             }),
+             py::arg("E"), py::arg("nu"), py::arg("Sy") = py::none(), py::arg("elastic") = false,
+             "Material(E, nu, Sy=None, elastic=False): E [Pa], nu, Sy [Pa] (needed by jacksonGreen, truncation, "
+             "greenwoodWilliamsonJG, majumdarBhushan); elastic=True says the solid does not yield (no Sy), "
+             "which a pair with a yield strength on the other side only needs. Checked where it is used.")
         .def_readwrite("E", &Material::E, "Young's modulus [Pa]")
         .def_readwrite("nu", &Material::nu, "Poisson's ratio")
         .def_readwrite("Sy", &Material::Sy, "yield strength [Pa] or None")
+        .def_readwrite("elastic", &Material::elastic, "True: said not to yield (no Sy)")
         .def("__repr__", [](const Material& x) {
             return "<roughcontact.Material E = " + number(x.E) + " Pa, nu = " + number(x.nu) +
-                   (x.Sy ? ", Sy = " + number(*x.Sy) + " Pa" : std::string()) + ">";
+                   (x.Sy ? ", Sy = " + number(*x.Sy) + " Pa" : std::string()) + (x.elastic ? ", elastic" : "") + ">";
         });
 
     py::class_<ContactMaterials>(m, "ContactMaterials",
@@ -48,8 +52,11 @@ void bindMaterials(py::module_& m)
              "One solid against a rigid flat: E' = E/(1 - nu^2).")
         .def_static("against_rigid_flat", &ContactMaterials::againstRigidFlat, py::arg("material"),
                     "One solid against a rigid flat: E' = E/(1 - nu^2).")
-        .def_static("pair", &ContactMaterials::pair, py::arg("a"), py::arg("b"),
-                    "Two solids: 1/E' = (1-nu1^2)/E1 + (1-nu2^2)/E2; the lower Sy yields first.")
+        .def_static(
+            "pair", [](const Material& a, const Material& b) { return ContactMaterials::pair(a, b); }, py::arg("a"),
+            py::arg("b"),
+            "Two solids: 1/E' = (1-nu1^2)/E1 + (1-nu2^2)/E2; the lower Sy yields first. Sy on one side only "
+            "needs the other said elastic=True.")
         .def_static("from_reduced_modulus", &ContactMaterials::fromReducedModulus, py::arg("Eprime"),
                     py::arg("nu") = py::none(), py::arg("Sy") = py::none(),
                     "E' [Pa] given directly (multiscaleContact --Eprime), with nu and Sy [Pa] of the yielding "

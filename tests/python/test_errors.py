@@ -78,3 +78,26 @@ def test_parameter_errors_in_vectorized_calls():
         rc.Profile(np.zeros(3), 1e-6)
     with pytest.raises(ValueError):
         rc.synthesize_isotropic(rc.Spectrum.power_law(1e-9, 1, 1e3, 1e5), 7)
+
+
+def test_yield_strength_on_one_side_only():
+    """Issue 21: S_y given for one side only is an error naming the other side, unless that side
+    is said not to yield (elastic=True); then the first side's S_y governs."""
+    surfaces = [rc.SurfaceSpec.profile(STANDIN)]
+    steel = rc.Material(**STEEL)
+    forgot = rc.Material(STEEL["E"], STEEL["nu"])
+    with pytest.raises(rc.ParameterError) as e:
+        rc.ContactInterface(surfaces=surfaces, side1=steel, side2=forgot)
+    assert str(e.value).startswith("side2 yield strength S_y: is not given, while side1 has one")
+    assert "elastic=True" in str(e.value)
+    ceramic = rc.Material(STEEL["E"], STEEL["nu"], elastic=True)
+    assert ceramic.elastic and ceramic.Sy is None and "elastic" in repr(ceramic)
+    one = rc.ContactInterface(surfaces=surfaces, side1=steel, side2=ceramic)
+    both = rc.ContactInterface(surfaces=surfaces, side1=steel, side2=steel)
+    # Same E and nu, and the same S_y yields: the same interface.
+    assert list(one.conductance_per_conductivity([1e5, 1e6, 1e7])) == \
+        list(both.conductance_per_conductivity([1e5, 1e6, 1e7]))
+    with pytest.raises(rc.ParameterError, match="also said not to yield"):
+        rc.ContactInterface(surfaces=surfaces, side1=steel, side2=rc.Material(**STEEL, elastic=True))
+    with pytest.raises(rc.ParameterError, match="second material yield strength S_y"):
+        rc.ContactMaterials.pair(steel, forgot)

@@ -181,10 +181,26 @@ roughContact::Material readMaterial(const dictionary& d)
     roughContact::Material m;
     m.E = d.get<scalar>("E");
     m.nu = d.get<scalar>("nu");
-    scalar Sy;
-    if (d.readIfPresent("Sy", Sy))
+    // Sy [Pa], or 'Sy none;': this solid does not yield (the core's
+    // Material::elastic; S_y on one side only is otherwise an error).
+    if (d.found("Sy"))
     {
-        m.Sy = Sy;
+        ITstream& is = d.lookup("Sy");
+        if (is.size() && is[0].isWord())
+        {
+            if (is[0].wordToken() != "none")
+            {
+                FatalIOErrorInFunction(d)
+                    << "entry 'Sy' of " << d.dictName() << " must be a yield"
+                    << " strength [Pa] or 'none' (the solid does not yield),"
+                    << " got '" << is[0].wordToken() << "'" << exit(FatalIOError);
+            }
+            m.elastic = true;
+        }
+        else
+        {
+            m.Sy = d.get<scalar>("Sy");
+        }
     }
     try
     {

@@ -816,3 +816,33 @@ TEST(Cli, ConductivitiesGiveTheConductanceInWattsPerSquareMetreKelvin)
     expectError(p + " --conductance --k1 50 --k2 1e6", {"--k2", "W/(m K)"});
     expectError(p + " --check --k1 50 --k2 200", {"--k1", "--check"});
 }
+
+TEST(Cli, YieldStrengthNoneSaysASolidDoesNotYield)
+{
+    // --Sy S1,none (issue 21): the second solid does not yield, so the first's S_y governs; the
+    // same materials through the library (ContactMaterials::pair with the second marked elastic)
+    // give the same curve to the 10 digits printed (1e-9, as LoadCurveIsTheLibrarysForEveryModel).
+    const std::string p = "--profile '" + standin + "' --model jacksonGreen --loads 1e-5,1e-4,1e-3";
+    const CommandResult said = run(p + " --E 200e9,300e9 --nu 0.3,0.25 --Sy 0.4e9,none");
+    ASSERT_EQ(said.status, 0) << said.err;
+    Material a{200e9, 0.3, 0.4e9};
+    Material b{300e9, 0.25, std::nullopt};
+    b.elastic = true;
+    const auto model = makeContactModel("jacksonGreen", Spectrum::fromProfile(readProfile(standin)),
+                                        ContactMaterials::pair(a, b));
+    const Csv csv = parseCsv(said.out);
+    ASSERT_EQ(csv.rows.size(), 3U);
+    const double loads[] = {1e-5, 1e-4, 1e-3};
+    for (std::size_t i = 0; i < 3; ++i) {
+        const double area = std::stod(csv.rows[i][column(csv, "area")]);
+        EXPECT_NEAR(area, model->areaFraction(loads[i]), 1e-9 * area) << loads[i];
+    }
+    // The yielding solid is the first: S_y 0.4 GPa of E 200 GPa, not the second's modulus (a
+    // pair with both yielding at 0.4 GPa gives the same; one at 0.8 GPa on the first does not).
+    EXPECT_EQ(run(p + " --E 200e9,300e9 --nu 0.3,0.25 --Sy 0.4e9,0.9e9").out, said.out);
+    EXPECT_NE(run(p + " --E 200e9,300e9 --nu 0.3,0.25 --Sy 0.8e9,none").out, said.out);
+    // A word other than none is not a yield strength.
+    expectError(p + " --E 200e9,300e9 --nu 0.3,0.25 --Sy 0.4e9,soft", {"--Sy", "soft"});
+    // Said not to yield and then needed: jacksonGreen needs the S_y of some solid.
+    expectError(p + " --E 200e9,300e9 --nu 0.3,0.25 --Sy none,none", {"yield strength S_y", "jacksonGreen"});
+}

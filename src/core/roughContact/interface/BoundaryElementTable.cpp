@@ -180,7 +180,7 @@ BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
         throw ParameterError("model", "a boundary-element table is for model boundaryElement, not '" +
                                           spec.model + "'");
     }
-    const ContactMaterials materials = ContactMaterials::pair(spec.side1, spec.side2);
+    const ContactMaterials materials = ContactMaterials::pair(spec.side1, spec.side2, "side1", "side2");
     Eprime_ = materials.reducedModulus();
     if (spec.hardness && spec.hardnessFromYield) {
         throw ParameterError("hardness", "give a hardness or hardnessFromYield, not both");

@@ -84,7 +84,7 @@ Spectrum equivalentSurface(const std::vector<SurfaceSpec>& surfaces)
 }
 
 ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElementTablePoints* boundaryElementTable)
-    : surface_(equivalentSurface(spec.surfaces)), materials_(ContactMaterials::pair(spec.side1, spec.side2)),
+    : surface_(equivalentSurface(spec.surfaces)), materials_(ContactMaterials::pair(spec.side1, spec.side2, "side1", "side2")),
       modelName_(spec.model)
 {
     if (spec.model == "boundaryElement") {

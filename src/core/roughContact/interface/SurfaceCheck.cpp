@@ -159,7 +159,7 @@ SurfaceCheckInputs checkInputsOf(const InterfaceSpec& spec)
 {
     SurfaceCheckInputs in;
     in.surfaces = spec.surfaces;
-    in.materials = ContactMaterials::pair(spec.side1, spec.side2);
+    in.materials = ContactMaterials::pair(spec.side1, spec.side2, "side1", "side2");
     in.model = spec.model;
     in.conductanceLaw = spec.model == "boundaryElement" ? std::string() : spec.conductanceLaw;
     in.microhardness = spec.microhardness;

@@ -42,6 +42,10 @@ void checkMaterial(const Material& m, const std::string& which)
     }
     if (m.Sy) {
         checkYieldStrain(which, *m.Sy, m.E, "E");
+        if (m.elastic) {
+            throw ParameterError(which + " yield strength S_y",
+                                 "is given for a solid also said not to yield: give one or the other");
+        }
     }
 }
 
@@ -66,10 +70,23 @@ ContactMaterials ContactMaterials::againstRigidFlat(const Material& m)
     return c;
 }
 
-ContactMaterials ContactMaterials::pair(const Material& a, const Material& b)
+ContactMaterials ContactMaterials::pair(const Material& a, const Material& b, const std::string& nameA,
+                                        const std::string& nameB)
 {
-    checkMaterial(a, "first material");
-    checkMaterial(b, "second material");
+    checkMaterial(a, nameA);
+    checkMaterial(b, nameB);
+    if (a.Sy.has_value() != b.Sy.has_value()) {
+        const bool aMissing = !a.Sy;
+        const Material& without = aMissing ? a : b;
+        const Material& with = aMissing ? b : a;
+        if (!without.elastic) {
+            std::ostringstream os;
+            os << "is not given, while " << (aMissing ? nameB : nameA) << " has one (S_y = " << *with.Sy
+               << " Pa): give it, or say that " << (aMissing ? nameA : nameB) << " does not yield ("
+               << notYieldingSpelling << ")";
+            throw ParameterError((aMissing ? nameA : nameB) + " yield strength S_y", os.str());
+        }
+    }
     ContactMaterials c;
     c.Eprime_ = 1.0 / ((1.0 - a.nu * a.nu) / a.E + (1.0 - b.nu * b.nu) / b.E);
     checkReducedModulus(c.Eprime_);
