@@ -1,0 +1,164 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "Run.hpp"
+#include "Inputs.hpp"
+
+#include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
+#include "roughContact/interface/InterfaceRegime.hpp"
+#include "roughContact/interface/SurfaceCheck.hpp"
+#include "roughContact/io/ArealReader.hpp"
+#include "roughContact/io/Numbers.hpp"
+#include "roughContact/io/ProfileReader.hpp"
+#include "roughContact/io/SpectrumReader.hpp"
+#include "roughContact/io/Units.hpp"
+#include "roughContact/material/Materials.hpp"
+#include "roughContact/models/BoundaryElement.hpp"
+#include "roughContact/models/ModelFactory.hpp"
+#include "roughContact/models/MultiscaleModel.hpp"
+#include "roughContact/models/Persson.hpp"
+#include "roughContact/surface/ArealSurface.hpp"
+#include "roughContact/surface/ArealSynthesis.hpp"
+#include "roughContact/surface/SpectralResampling.hpp"
+#include "roughContact/surface/FractalFit.hpp"
+#include "roughContact/surface/Profile.hpp"
+#include "roughContact/surface/Roughness.hpp"
+#include "roughContact/surface/SpectralMoments.hpp"
+#include "roughContact/surface/Spectrum.hpp"
+#include "roughContact/thermal/ConductanceLaw.hpp"
+#include "roughContact/thermal/ConstrictionConductance.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace roughContact;
+
+namespace multiscaleContact {
+
+// --model boundaryElement: the curve, one progress line on stderr per load once the run takes
+// longer than 2 s, then the whole CSV.
+int runBoundaryElement(const Options& o)
+{
+    if (o.levels) {
+        throw ParameterError("--levels", "the per-level trace exists for the multi-scale models only");
+    }
+    const auto [surface, periodic] = arealSurfaceOf(o);
+    const ContactMaterials materials = materialsOf(o);
+    BoundaryElementOptions bo;
+    bo.periodic = periodic;
+    if (o.detrend) {
+        bo.detrend = parseDetrend(*o.detrend, "--detrend");
+    }
+    bo.hardness = hardnessOf(o, materials, "boundaryElement --hardness-from-yield");
+    std::vector<double> pressures; // --pressures [Pa]: the first column
+    const std::vector<double> loads = loadsOf(o, materials.reducedModulus(), &pressures);
+    if (!o.pressureMap.empty()) {
+        checkOutputFile(o, o.pressureMap, "--pressure-map"); // before minutes of solving
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const auto seconds = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    // A solve that runs longer than a few seconds says where it is (PolonskyKeer.hpp), and which
+    // load it is of (in the order solved, increasing).
+    std::size_t current = 1;
+    bo.progress = [&](const SolveProgress& s) {
+        std::cerr << "multiscaleContact: boundaryElement " << surface.nx() << " x " << surface.ny() << ": ";
+        if (std::string(s.stage) != "bonded-patch conductance") {
+            std::cerr << "load " << current << " of " << loads.size() << ", ";
+        }
+        std::cerr << s.stage << " solve: iteration " << s.iteration << ", residual " << s.residual << " (tolerance " << s.tolerance
+                  << "), " << s.seconds << " s in this solve; " << seconds() << " s in all" << std::endl;
+    };
+    const BoundaryElementModel model(surface, materials.reducedModulus(), bo);
+    {
+        // Before a long run, what to expect (a timed FFT pair times the solves' evaluations).
+        const HalfSpaceOperator op(surface.nx(), surface.ny(), surface.dx(), surface.dy(), materials.reducedModulus(),
+                                   periodic);
+        const double expected = estimatedCurveSeconds(op, loads.size() + (o.pressureMap.empty() ? 0 : 1));
+        if (expected > 3.0) {
+            std::cerr << "multiscaleContact: boundaryElement " << surface.nx() << " x " << surface.ny() << ": "
+                      << loads.size() << " load" << (loads.size() == 1 ? "" : "s") << ", about "
+                      << std::setprecision(2) << expected << std::setprecision(6) << " s" << std::endl;
+        }
+    }
+    const std::vector<BoundaryElementPoint> points =
+        model.curve(loads, [&](std::size_t done, std::size_t total, const BoundaryElementPoint& p) {
+            current = done + 1;
+            if (seconds() > 2.0) {
+                std::cerr << "multiscaleContact: boundaryElement " << surface.nx() << " x " << surface.ny()
+                          << (periodic ? " (periodic)" : " (non-periodic)") << ": load " << done << " of " << total
+                          << ", F/(A_n E') = " << p.load << ": A_r/A_n = " << p.areaFraction << ", "
+                          << p.iterations << " iterations, residual " << p.residual << "; " << seconds()
+                          << " s\n";
+            }
+        });
+    std::ostringstream out;
+    out.precision(10);
+    const std::optional<double> ks = harmonicConductivityOf(o, true);
+    out << (pressures.empty() ? "" : "nominal_pressure,") << "load,area,pressure,separation,h_per_k,"
+        << (ks ? "h," : "") << "iterations,residual\n";
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const BoundaryElementPoint& p = points[i];
+        if (!pressures.empty()) {
+            out << pressures[i] << ',';
+        }
+        out << p.load << ',' << p.areaFraction << ',';
+        if (p.areaFraction > 0.0) {
+            out << p.load / p.areaFraction;
+        }
+        out << ',' << p.meanSeparation << ',' << p.conductancePerConductivity << ',';
+        if (ks) {
+            out << *ks * p.conductancePerConductivity << ',';
+        }
+        out << p.iterations << ',' << p.residual << '\n';
+    }
+    if (!o.pressureMap.empty()) {
+        // The highest load's field again (one more solve, warm-started from nothing): written as
+        // a text matrix the areal reader reads back (rows along x, one per line, along y), to a
+        // temporary file beside the target, renamed over it once complete: a failed run leaves
+        // nothing behind and changes nothing.
+        const double top = *std::max_element(loads.begin(), loads.end());
+        current = loads.size();
+        std::vector<double> pressure;
+        model.solve(top, &pressure);
+        const std::string temporary = o.pressureMap + ".tmp." + std::to_string(static_cast<long>(::getpid()));
+        std::ofstream map(temporary, std::ios::trunc);
+        map << "# contact pressure [Pa] of multiscaleContact --model boundaryElement at F/(A_n E') = " << top
+            << "; " << surface.nx() << " x " << surface.ny() << " points at dx = " << surface.dx()
+            << " m, dy = " << surface.dy() << " m; rows along x, one per line, following each other along y\n";
+        map.precision(8);
+        for (std::size_t iy = 0; iy < surface.ny(); ++iy) {
+            for (std::size_t ix = 0; ix < surface.nx(); ++ix) {
+                map << (ix > 0 ? " " : "") << (pressure.empty() ? 0.0 : pressure[iy * surface.nx() + ix]);
+            }
+            map << '\n';
+        }
+        map.close();
+        if (!map) {
+            std::remove(temporary.c_str());
+            throw ParameterError("--pressure-map", "writing '" + temporary + "' failed");
+        }
+        if (std::rename(temporary.c_str(), o.pressureMap.c_str()) != 0) {
+            std::remove(temporary.c_str());
+            throw ParameterError("--pressure-map", "cannot rename '" + temporary + "' to '" + o.pressureMap + "'");
+        }
+    }
+    std::cout << out.str();
+    return 0;
+}
+
+} // namespace multiscaleContact

@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "Run.hpp"
+#include "Inputs.hpp"
+
+#include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
+#include "roughContact/interface/InterfaceRegime.hpp"
+#include "roughContact/interface/SurfaceCheck.hpp"
+#include "roughContact/io/ArealReader.hpp"
+#include "roughContact/io/Numbers.hpp"
+#include "roughContact/io/ProfileReader.hpp"
+#include "roughContact/io/SpectrumReader.hpp"
+#include "roughContact/io/Units.hpp"
+#include "roughContact/material/Materials.hpp"
+#include "roughContact/models/BoundaryElement.hpp"
+#include "roughContact/models/ModelFactory.hpp"
+#include "roughContact/models/MultiscaleModel.hpp"
+#include "roughContact/models/Persson.hpp"
+#include "roughContact/surface/ArealSurface.hpp"
+#include "roughContact/surface/ArealSynthesis.hpp"
+#include "roughContact/surface/SpectralResampling.hpp"
+#include "roughContact/surface/FractalFit.hpp"
+#include "roughContact/surface/Profile.hpp"
+#include "roughContact/surface/Roughness.hpp"
+#include "roughContact/surface/SpectralMoments.hpp"
+#include "roughContact/surface/Spectrum.hpp"
+#include "roughContact/thermal/ConductanceLaw.hpp"
+#include "roughContact/thermal/ConstrictionConductance.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace roughContact;
+
+namespace multiscaleContact {
+
+// --check: the exact model on this surface at up to 5 of the run's pressures (or 4 across their
+// range), every law's ratio to it; the report, then its numbers as CSV, on stdout.
+int runCheck(const Options& o)
+{
+    if (o.levels) {
+        throw ParameterError("--check", "checks the conductance; --levels is for the per-level trace");
+    }
+    if (o.conductance || !o.conductanceLaw.empty()) {
+        if (o.conductanceLaw == "all") {
+            throw ParameterError("--check", "holds every law to the exact answer already; --conductance-law names "
+                                            "the one to judge");
+        }
+    }
+    if (!o.pressureMap.empty()) {
+        throw ParameterError("--pressure-map", "is for a boundaryElement curve, not --check");
+    }
+    if (o.k1 || o.k2) {
+        throw ParameterError(o.k1 ? "--k1" : "--k2", "--check compares h_c/k_s, which the conductivities do not change");
+    }
+    SurfaceCheckInputs in;
+    in.surfaces = surfaceSpecsOf(o);
+    in.materials = materialsOf(o);
+    in.model = o.model;
+    if (!isMultiscaleModel(o.model) && o.model != "boundaryElement") {
+        throw ParameterError("--check", "takes a multi-scale --model (the laws' area: hertz, jacksonGreen, ...) or "
+                                        "boundaryElement, not " + o.model);
+    }
+    in.conductanceLaw = o.conductanceLaw;
+    in.hardness = hardnessOf(o, *in.materials, "--check --hardness-from-yield");
+    if (!o.vickers.empty()) {
+        const std::vector<double> c = splitNumbers(o.vickers, ',', "--vickers");
+        if (c.size() != 2) {
+            throw ParameterError("--vickers", "expects C1,C2: c1 [Pa] and c2 of H_v = c1 (d_v/1 um)^c2");
+        }
+        in.vickers = VickersCoefficients{c[0], c[1]};
+    }
+    if (o.periodic) {
+        in.periodic = true;
+    }
+    if (o.detrend) {
+        in.detrend = parseDetrend(*o.detrend, "--detrend");
+    }
+    // The pressures [Pa]: --pressures as given (no round trip through the load), or the loads x E'.
+    const double Ep = in.materials->reducedModulus();
+    std::vector<double> given;
+    const std::vector<double> loads = loadsOf(o, Ep, &given);
+    std::vector<double> pressures;
+    for (std::size_t i = 0; i < loads.size(); ++i) {
+        const double P = given.empty() ? loads[i] * Ep : given[i];
+        if (P > 0.0) {
+            pressures.push_back(P);
+        }
+    }
+    if (pressures.empty()) {
+        throw ParameterError("--check", "needs pressures above 0");
+    }
+    std::sort(pressures.begin(), pressures.end());
+    SurfaceCheckOptions so;
+    if (!o.resample.empty()) {
+        throw ParameterError("--resample", "is for --model boundaryElement; --check chooses its own grids");
+    }
+    if (!o.synthesize.empty()) {
+        const std::size_t comma = o.synthesize.find(',');
+        if (comma != std::string::npos) {
+            throw ParameterError("--synthesize", "with --check takes the grid size N only (the check solves seeds 1, 2 and 3)");
+        }
+        so.gridSize = static_cast<std::size_t>(wholeNumber(o.synthesize, "--synthesize", "the grid size N"));
+    }
+    in.minPressure = pressures.front();
+    in.maxPressure = pressures.back();
+    if (pressures.size() <= 5) {
+        so.pressures = pressures;
+    }
+    so.log = [](const std::string& line) { std::cerr << "multiscaleContact: " << line << std::endl; };
+    const SurfaceCheck c = checkSurface(in, so);
+    std::istringstream report(c.report());
+    std::ostringstream out;
+    for (std::string line; std::getline(report, line);) {
+        out << "# " << line << '\n';
+    }
+    out << c.csv();
+    std::cout << out.str();
+    return 0;
+}
+
+} // namespace multiscaleContact

@@ -1,0 +1,505 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "Inputs.hpp"
+
+#include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
+#include "roughContact/interface/InterfaceRegime.hpp"
+#include "roughContact/interface/SurfaceCheck.hpp"
+#include "roughContact/io/ArealReader.hpp"
+#include "roughContact/io/Numbers.hpp"
+#include "roughContact/io/ProfileReader.hpp"
+#include "roughContact/io/SpectrumReader.hpp"
+#include "roughContact/io/Units.hpp"
+#include "roughContact/material/Materials.hpp"
+#include "roughContact/models/BoundaryElement.hpp"
+#include "roughContact/models/ModelFactory.hpp"
+#include "roughContact/models/MultiscaleModel.hpp"
+#include "roughContact/models/Persson.hpp"
+#include "roughContact/surface/ArealSurface.hpp"
+#include "roughContact/surface/ArealSynthesis.hpp"
+#include "roughContact/surface/SpectralResampling.hpp"
+#include "roughContact/surface/FractalFit.hpp"
+#include "roughContact/surface/Profile.hpp"
+#include "roughContact/surface/Roughness.hpp"
+#include "roughContact/surface/SpectralMoments.hpp"
+#include "roughContact/surface/Spectrum.hpp"
+#include "roughContact/thermal/ConductanceLaw.hpp"
+#include "roughContact/thermal/ConstrictionConductance.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace roughContact;
+
+namespace multiscaleContact {
+
+std::vector<double> splitNumbers(const std::string& text, char sep, const std::string& option)
+{
+    std::vector<double> out;
+    if (text.empty() || text.back() == sep) {
+        throw ParameterError(option, "'" + text + "' has an empty item; give numbers separated by '" +
+                                         std::string(1, sep) + "'");
+    }
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, sep)) {
+        double v = 0.0;
+        if (!parseNumber(item, v) || !std::isfinite(v)) {
+            throw ParameterError(option, "'" + item + "' is not a finite number");
+        }
+        out.push_back(v);
+    }
+    return out;
+}
+
+// A whole number 0 .. 2^64 - 1 written in decimal digits ("--synthesize 8,SEED"); ParameterError
+// naming the option and the item otherwise (a sign, a fraction, an exponent, more than 2^64 - 1).
+std::uint64_t wholeNumber(const std::string& text, const std::string& option, const std::string& what)
+{
+    std::uint64_t v = 0;
+    const char* end = text.data() + text.size();
+    const std::from_chars_result r = std::from_chars(text.data(), end, v);
+    if (text.empty() || r.ptr != end || r.ec == std::errc::invalid_argument) {
+        throw ParameterError(option, "expects N[,SEED]: " + what + " must be a whole number of decimal digits, got '" +
+                                         text + "'");
+    }
+    if (r.ec == std::errc::result_out_of_range) {
+        throw ParameterError(option, what + " " + text + " is beyond the largest, 2^64 - 1 = 18446744073709551615");
+    }
+    return v;
+}
+
+// The loads F/(A_n E') to compute: --loads, --load-range, or --pressures [Pa] divided by E' (Ep);
+// `given` (optional) receives the --pressures as given, one per load.
+std::vector<double> loadsOf(const Options& o, double Ep, std::vector<double>* given)
+{
+    if (!o.pressures.empty()) {
+        std::vector<double> out;
+        for (const std::string& text : o.pressures) {
+            for (double P : splitNumbers(text, ',', "--pressures")) {
+                if (P < 0.0) {
+                    std::ostringstream os;
+                    os << "the nominal pressure F/A_n must be >= 0 Pa, got " << P;
+                    throw ParameterError("--pressures", os.str());
+                }
+                const double load = P / Ep;
+                try {
+                    out.push_back(checkLoad(load));
+                } catch (const ParameterError&) {
+                    std::ostringstream os;
+                    os << P << " Pa is the load F/(A_n E') = " << load << " with E' = " << Ep
+                       << " Pa; loads must be 0 or within [" << limits::minimumLoad << ", " << limits::maximumLoad
+                       << "]";
+                    throw ParameterError("--pressures", os.str());
+                }
+                if (given != nullptr) {
+                    given->push_back(P);
+                }
+            }
+        }
+        return out;
+    }
+    if (!o.loadRange.empty()) {
+        const std::vector<double> r = splitNumbers(o.loadRange, ':', "--load-range");
+        if (r.size() != 3) {
+            throw ParameterError("--load-range", "expects MIN:MAX:N");
+        }
+        const double lo = r[0];
+        const double hi = r[1];
+        const double n = r[2];
+        if (!(lo > 0.0) || !(hi >= lo) || n < 1 || n != std::floor(n) || n > 1e6) {
+            throw ParameterError("--load-range", "needs 0 < MIN <= MAX and a whole N from 1 to 1000000");
+        }
+        checkLoad(lo); // both ends within the accepted loads before any row is computed
+        checkLoad(hi);
+        std::vector<double> out;
+        const auto count = static_cast<std::size_t>(n);
+        for (std::size_t i = 0; i < count; ++i) {
+            out.push_back(count == 1 ? lo : lo * std::pow(hi / lo, double(i) / double(count - 1)));
+        }
+        return out;
+    }
+    std::vector<double> out;
+    for (const std::string& text : o.loads) {
+        for (double l : splitNumbers(text, ',', "--loads")) {
+            out.push_back(checkLoad(l));
+        }
+    }
+    return out;
+}
+
+// How to read the --areal files: the same as the boundary condition's `type areal`.
+ArealReadOptions arealReadOptions(const Options& o)
+{
+    ArealReadOptions ro;
+    if (o.units) {
+        ro.units = parseLengthUnit(*o.units);
+    }
+    ro.dx = o.dx;
+    ro.dy = o.dy;
+    ro.fillInvalid = o.fillInvalid;
+    return ro;
+}
+
+Spectrum surfaceOf(const Options& o)
+{
+    if (o.profiles.empty() && o.stride != 1) {
+        throw ParameterError("--stride", "subsamples a --profile; there is no profile here");
+    }
+    if (o.profiles.empty() && o.areals.empty() && o.dx) {
+        throw ParameterError("--dx",
+                             "is the spacing of a one-column --profile or an --areal matrix; there is "
+                             "neither here");
+    }
+    if (o.areals.empty()) {
+        if (o.dy) {
+            throw ParameterError("--dy",
+                                 "is the y spacing of an --areal matrix; there is no areal surface here");
+        }
+        if (o.direction) {
+            throw ParameterError("--direction",
+                                 "chooses the line scans of an --areal surface; there is none here");
+        }
+        if (o.fillInvalid) {
+            throw ParameterError("--fill-invalid", "is for an --areal X3P file; there is none here");
+        }
+    }
+    if (!o.areals.empty()) {
+        if (o.stride != 1) {
+            throw ParameterError("--stride", "subsamples a --profile; an --areal surface is used whole");
+        }
+        if (o.length) {
+            throw ParameterError("--length", "is set by the areal surface itself (nx dx, ny dy); it is for "
+                                             "--spectrum, --power-law and --fractal");
+        }
+        // The same surface as the boundary condition's `type areal` (SurfaceSpec::Kind::areal).
+        const ArealReadOptions ro = arealReadOptions(o);
+        const ScanDirection direction = parseScanDirection(o.direction.value_or("x"), "--direction");
+        std::optional<Spectrum> total;
+        for (const std::string& path : o.areals) {
+            const Spectrum s = lineScanSpectrum(readAreal(path, ro).detrended(), direction);
+            total = total ? Spectrum::combine(*total, s) : s;
+        }
+        return *total;
+    }
+    if (!o.profiles.empty() && o.length) {
+        throw ParameterError("--length", "is set by the profile itself (N dx); it is for --spectrum, "
+                                         "--power-law and --fractal");
+    }
+    if (!o.profiles.empty()) {
+        ProfileReadOptions ro;
+        if (o.units) {
+            ro.units = parseLengthUnit(*o.units); // "" is an unknown unit, not the default
+        }
+        ro.spacing = o.dx;
+        std::optional<Spectrum> total;
+        for (const std::string& path : o.profiles) {
+            const Profile p = readProfile(path, ro).subsampled(o.stride);
+            const Spectrum s = Spectrum::fromProfile(p);
+            total = total ? Spectrum::combine(*total, s) : s;
+        }
+        return *total;
+    }
+    if (!o.spectra.empty()) {
+        std::optional<Spectrum> total;
+        for (const std::string& path : o.spectra) {
+            const Spectrum s = readSpectrum(path, o.length);
+            total = total ? Spectrum::combine(*total, s) : s;
+        }
+        return *total;
+    }
+    if (!o.powerLaw.empty()) {
+        const auto& p = o.powerLaw;
+        return Spectrum::powerLaw(p[0], p[1], p[2], p[3], o.length.value_or(0.0));
+    }
+    const auto& p = o.fractal;
+    return Spectrum::fractal(p[0], p[1], p[2], p[3], o.length.value_or(0.0));
+}
+
+// sigma and the mean absolute slope of the surfaces, for the correlations (the same surfaces
+// surfaceOf reads; two combined): a profile's and a map's from their heights, a spectrum's from
+// its moments (Roughness.hpp).
+SurfaceRoughness roughnessOf(const Options& o)
+{
+    std::optional<SurfaceRoughness> total;
+    const auto add = [&](const SurfaceRoughness& r) { total = total ? combined(*total, r) : r; };
+    if (!o.areals.empty()) {
+        const ScanDirection direction = parseScanDirection(o.direction.value_or("x"), "--direction");
+        for (const std::string& path : o.areals) {
+            add(arealRoughness(readAreal(path, arealReadOptions(o)), direction));
+        }
+    } else if (!o.profiles.empty()) {
+        ProfileReadOptions ro;
+        if (o.units) {
+            ro.units = parseLengthUnit(*o.units);
+        }
+        ro.spacing = o.dx;
+        for (const std::string& path : o.profiles) {
+            add(profileRoughness(readProfile(path, ro).subsampled(o.stride)));
+        }
+    } else if (!o.spectra.empty()) {
+        for (const std::string& path : o.spectra) {
+            add(spectrumRoughness(readSpectrum(path, o.length)));
+        }
+    } else {
+        add(spectrumRoughness(surfaceOf(o)));
+    }
+    return *total;
+}
+
+// One --Sy item: a yield strength [Pa], or none (the solid does not yield: Material::elastic).
+void readYieldStrength(const std::string& item, Material& m)
+{
+    if (item == "none") {
+        m.elastic = true;
+        return;
+    }
+    m.Sy = splitNumbers(item, ',', "--Sy").front();
+}
+
+ContactMaterials materialsOf(const Options& o)
+{
+    if (!o.pressures.empty() && !o.Eprime && o.E.empty()) {
+        throw ParameterError("--pressures", "needs E' [Pa] to turn the pressures into loads F/(A_n E'): give "
+                                            "--E (with --nu) or --Eprime");
+    }
+    if (o.Eprime) {
+        if (o.nu.size() > 1 || o.Sy.size() > 1) {
+            throw ParameterError("--Eprime",
+                                 "takes one --nu and one --Sy (of the material that yields first)");
+        }
+        Material y;
+        if (!o.Sy.empty()) {
+            readYieldStrength(o.Sy[0], y);
+        }
+        return ContactMaterials::fromReducedModulus(
+            *o.Eprime, o.nu.empty() ? std::nullopt : std::optional<double>(o.nu[0]), y.Sy);
+    }
+    if (o.E.empty()) {
+        throw ParameterError("--E", "give --E (with --nu) or --Eprime");
+    }
+    if (o.nu.size() != o.E.size()) {
+        throw ParameterError("--nu", "give one Poisson's ratio per --E value");
+    }
+    if (!o.Sy.empty() && o.Sy.size() != o.E.size()) {
+        throw ParameterError("--Sy", "give one yield strength per --E value");
+    }
+    std::vector<Material> m(o.E.size());
+    for (std::size_t i = 0; i < m.size(); ++i) {
+        m[i].E = o.E[i];
+        m[i].nu = o.nu[i];
+        if (!o.Sy.empty()) {
+            readYieldStrength(o.Sy[i], m[i]);
+        }
+    }
+    return m.size() == 1 ? ContactMaterials::againstRigidFlat(m[0])
+                         : ContactMaterials::pair(m[0], m[1], "solid 1", "solid 2");
+}
+
+// --hardness H or --hardness-from-yield (H = 2.84 S_y): the boundary-element cap and the CMY
+// microhardness alike; none when neither is given.
+std::optional<double> hardnessOf(const Options& o, const ContactMaterials& materials, const std::string& who)
+{
+    if (o.hardness && o.hardnessFromYield) {
+        throw ParameterError("--hardness", "give a hardness or --hardness-from-yield, not both");
+    }
+    if (o.hardness) {
+        return limits::requireInRange("--hardness", *o.hardness, limits::minimumHardness, limits::maximumHardness, "Pa");
+    }
+    if (o.hardnessFromYield) {
+        return materials.hardness(who);
+    }
+    return std::nullopt;
+}
+
+void printInfo(const Spectrum& s, std::ostream& os)
+{
+    os << "# surface: " << s.source() << "\n# levels: " << s.size() << ", f = " << s.frequencies().front()
+       << " .. " << s.frequencies().back() << " 1/m, L = " << s.length() << " m, A_n = " << s.nominalArea()
+       << " m^2\n# rms height (Parseval): " << std::sqrt(s.profileVariance()) << " m\n";
+    try {
+        const SummitParameters p = mcCoolParameters(s);
+        os << "# McCool: eta = " << p.eta << " 1/m^2, R = " << p.R << " m, sigma_s = " << p.sigmaS
+           << " m, alpha = " << p.alpha << "\n";
+    } catch (const std::exception& e) {
+        os << "# McCool: " << e.what() << "\n";
+    }
+    try {
+        const FractalParameters f = fitFractal(s);
+        os << "# fractal fit: D = " << f.D << ", G = " << f.G << " m\n";
+    } catch (const std::exception& e) {
+        os << "# fractal fit: " << e.what() << "\n";
+    }
+}
+
+// The grid size N of --synthesize N[,SEED] or --resample N[,K]: a whole number, even, within
+// the synthesis limits; ParameterError naming the option otherwise.
+std::uint64_t gridSizeOf(const std::string& text, const std::string& option)
+{
+    const std::uint64_t n = wholeNumber(text, option, "the grid size N");
+    if (n < limits::minimumSynthesisSize || n > limits::maximumSynthesisSize || n % 2 != 0) {
+        std::ostringstream os;
+        os << "the grid size N must be even and within [" << limits::minimumSynthesisSize << ", "
+           << limits::maximumSynthesisSize << "], got " << text;
+        throw ParameterError(option, os.str());
+    }
+    return n;
+}
+
+// The areal surface of --model boundaryElement: the --areal map (the composite of two), or one
+// synthesized from the 1-D description (--synthesize N[,SEED]); and whether it is periodic.
+std::pair<ArealSurface, bool> arealSurfaceOf(const Options& o)
+{
+    if (!o.areals.empty()) {
+        if (!o.synthesize.empty()) {
+            throw ParameterError("--synthesize", "makes an areal surface from a profile or spectrum; --areal is one");
+        }
+        if (o.direction) {
+            throw ParameterError("--direction", "chooses line scans for the line-scan models; boundaryElement "
+                                                "uses the whole map");
+        }
+        const ArealReadOptions ro = arealReadOptions(o);
+        std::optional<ArealSurface> total;
+        for (const std::string& path : o.areals) {
+            // As read: BoundaryElementModel detrends the composite (--detrend).
+            const ArealSurface one = readAreal(path, ro);
+            total = total ? compositeSurface(*total, one) : one;
+        }
+        if (!o.resample.empty()) {
+            throw ParameterError("--resample", "puts a --synthesize'd (periodic) surface on another grid; an --areal "
+                                               "map is solved as measured");
+        }
+        return {*total, o.periodic};
+    }
+    if (o.synthesize.empty()) {
+        throw ParameterError("--model boundaryElement",
+                             "needs an areal surface: --areal FILE, or --synthesize N[,SEED] with a profile or "
+                             "spectrum");
+    }
+    // N and SEED as whole numbers, read as integers: a double of 2^64 or more does not convert
+    // to a seed (it was undefined behaviour, and gave seed 0's surface).
+    const std::size_t comma = o.synthesize.find(',');
+    const std::uint64_t nGiven = gridSizeOf(o.synthesize.substr(0, comma), "--synthesize");
+    const auto seed = comma == std::string::npos
+                          ? std::uint64_t(1)
+                          : wholeNumber(o.synthesize.substr(comma + 1), "--synthesize", "the seed SEED");
+    const Spectrum lineScan = surfaceOf(o);
+    const auto n = static_cast<std::size_t>(nGiven);
+    // A synthesized surface is periodic: it is solved so (the option is for measured maps).
+    ArealSurface synthesized = synthesizeIsotropic(lineScan, n, seed, "synthesized from " + lineScan.source());
+    if (o.resample.empty()) {
+        return {std::move(synthesized), true};
+    }
+    // --resample N[,K]: the same surface (its Fourier series) on N x N, without wavelengths
+    // shorter than L/K if K is given.
+    const std::size_t rc = o.resample.find(',');
+    const std::uint64_t m = gridSizeOf(o.resample.substr(0, rc), "--resample");
+    std::optional<double> levels;
+    if (rc != std::string::npos) {
+        const std::uint64_t k = wholeNumber(o.resample.substr(rc + 1), "--resample", "the levels kept K");
+        if (k < 1) {
+            throw ParameterError("--resample", "keeps at least 1 level (K >= 1), got " + o.resample.substr(rc + 1));
+        }
+        levels = static_cast<double>(k);
+    }
+    return {resampledPeriodic(synthesized, static_cast<std::size_t>(m), levels), true};
+}
+
+// An output file of --pressure-map: not one of the inputs (it would replace the map being
+// solved), not a directory, in a directory that can be written to. Checked before any solve.
+void checkOutputFile(const Options& o, const std::string& path, const std::string& option)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    for (const std::vector<std::string>* inputs : {&o.areals, &o.profiles, &o.spectra}) {
+        for (const std::string& input : *inputs) {
+            if (fs::equivalent(fs::path(path), fs::path(input), ec)) {
+                throw ParameterError(option, "'" + path + "' is an input of this run (" + input +
+                                                 "); it would be overwritten: name another file");
+            }
+        }
+    }
+    if (fs::is_directory(fs::path(path), ec)) {
+        throw ParameterError(option, "'" + path + "' is a directory; name a file");
+    }
+    const fs::path parent = fs::path(path).parent_path();
+    const std::string directory = parent.empty() ? "." : parent.string();
+    if (::access(directory.c_str(), W_OK | X_OK) != 0) {
+        throw ParameterError(option, "cannot write into the directory '" + directory + "' of '" + path +
+                                         "' (missing, or not writable)");
+    }
+}
+
+// --k1 --k2: k_s = 2 k1 k2/(k1 + k2) [W/(m K)], for the column h = k_s h_c/k_s [W/(m^2 K)] after
+// h_per_k; none without them. `conductance`: the run has an h_per_k column.
+std::optional<double> harmonicConductivityOf(const Options& o, bool conductance)
+{
+    if (!o.k1 && !o.k2) {
+        return std::nullopt;
+    }
+    if (!(o.k1 && o.k2)) {
+        throw ParameterError(o.k1 ? "--k2" : "--k1", "give both conductivities, --k1 and --k2 [W/(m K)]");
+    }
+    if (!conductance) {
+        throw ParameterError("--k1", "turns h_per_k into h [W/(m^2 K)]: add --conductance (or a --conductance-law)");
+    }
+    for (const auto& [k, what] : {std::pair<double, const char*>{*o.k1, "--k1"}, {*o.k2, "--k2"}}) {
+        limits::requireInRange(what, k, limits::minimumConductivity, limits::maximumConductivity, "W/(m K)");
+    }
+    return harmonicMeanConductivity(*o.k1, *o.k2);
+}
+
+// The surfaces as SurfaceSpecs (the boundary condition's description of the same options).
+std::vector<SurfaceSpec> surfaceSpecsOf(const Options& o)
+{
+    surfaceOf(o); // every rule of the surface options (and the files readable) before anything else
+    std::vector<SurfaceSpec> out;
+    const auto add = [&](SurfaceSpec::Kind kind, const std::string& file) {
+        SurfaceSpec s;
+        s.kind = kind;
+        s.file = file;
+        if (o.units) {
+            s.profileOptions.units = parseLengthUnit(*o.units);
+        }
+        s.profileOptions.spacing = o.dx;
+        s.arealOptions = arealReadOptions(o);
+        s.direction = parseScanDirection(o.direction.value_or("x"), "--direction");
+        s.stride = o.stride;
+        s.length = o.length;
+        out.push_back(s);
+    };
+    for (const std::string& f : o.profiles) {
+        add(SurfaceSpec::Kind::profile, f);
+    }
+    for (const std::string& f : o.areals) {
+        add(SurfaceSpec::Kind::areal, f);
+    }
+    for (const std::string& f : o.spectra) {
+        add(SurfaceSpec::Kind::spectrum, f);
+    }
+    if (!o.powerLaw.empty()) {
+        add(SurfaceSpec::Kind::powerLaw, "");
+        out.back().parameters = o.powerLaw;
+    }
+    if (!o.fractal.empty()) {
+        add(SurfaceSpec::Kind::fractal, "");
+        out.back().parameters = o.fractal;
+    }
+    return out;
+}
+
+} // namespace multiscaleContact

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// multiscaleContact's options turned into the core's objects: the loads, the surfaces, their
+// roughness, the materials, the cap, the grid sizes. Each error is a ParameterError naming the
+// option (the README's exit status 1), raised before anything is solved.
+#pragma once
+
+#include "Options.hpp"
+
+#include "roughContact/interface/ContactInterface.hpp"
+#include "roughContact/io/ArealReader.hpp"
+#include "roughContact/material/Materials.hpp"
+#include "roughContact/surface/ArealSurface.hpp"
+#include "roughContact/surface/Roughness.hpp"
+#include "roughContact/surface/Spectrum.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace multiscaleContact {
+
+using roughContact::ArealReadOptions;
+using roughContact::ArealSurface;
+using roughContact::ContactMaterials;
+using roughContact::Material;
+using roughContact::Spectrum;
+using roughContact::SurfaceRoughness;
+using roughContact::SurfaceSpec;
+
+std::vector<double> splitNumbers(const std::string& text, char sep, const std::string& option);
+
+// A whole number 0 .. 2^64 - 1 written in decimal digits ("--synthesize 8,SEED"); ParameterError
+// naming the option and the item otherwise (a sign, a fraction, an exponent, more than 2^64 - 1).
+std::uint64_t wholeNumber(const std::string& text, const std::string& option, const std::string& what);
+
+// The loads F/(A_n E') to compute: --loads, --load-range, or --pressures [Pa] divided by E' (Ep);
+// `given` (optional) receives the --pressures as given, one per load.
+std::vector<double> loadsOf(const Options& o, double Ep, std::vector<double>* given = nullptr);
+
+// How to read the --areal files: the same as the boundary condition's `type areal`.
+ArealReadOptions arealReadOptions(const Options& o);
+
+Spectrum surfaceOf(const Options& o);
+
+// sigma and the mean absolute slope of the surfaces, for the correlations (the same surfaces
+// surfaceOf reads; two combined): a profile's and a map's from their heights, a spectrum's from
+// its moments (Roughness.hpp).
+SurfaceRoughness roughnessOf(const Options& o);
+
+// One --Sy item: a yield strength [Pa], or none (the solid does not yield: Material::elastic).
+void readYieldStrength(const std::string& item, Material& m);
+
+ContactMaterials materialsOf(const Options& o);
+
+// --hardness H or --hardness-from-yield (H = 2.84 S_y): the boundary-element cap and the CMY
+// microhardness alike; none when neither is given.
+std::optional<double> hardnessOf(const Options& o, const ContactMaterials& materials, const std::string& who);
+
+void printInfo(const Spectrum& s, std::ostream& os);
+
+// The grid size N of --synthesize N[,SEED] or --resample N[,K]: a whole number, even, within
+// the synthesis limits; ParameterError naming the option otherwise.
+std::uint64_t gridSizeOf(const std::string& text, const std::string& option);
+
+// The areal surface of --model boundaryElement: the --areal map (the composite of two), or one
+// synthesized from the 1-D description (--synthesize N[,SEED]); and whether it is periodic.
+std::pair<ArealSurface, bool> arealSurfaceOf(const Options& o);
+
+// An output file of --pressure-map: not one of the inputs (it would replace the map being
+// solved), not a directory, in a directory that can be written to. Checked before any solve.
+void checkOutputFile(const Options& o, const std::string& path, const std::string& option);
+
+// --k1 --k2: k_s = 2 k1 k2/(k1 + k2) [W/(m K)], for the column h = k_s h_c/k_s [W/(m^2 K)] after
+// h_per_k; none without them. `conductance`: the run has an h_per_k column.
+std::optional<double> harmonicConductivityOf(const Options& o, bool conductance);
+
+// The surfaces as SurfaceSpecs (the boundary condition's description of the same options).
+std::vector<SurfaceSpec> surfaceSpecsOf(const Options& o);
+
+} // namespace multiscaleContact

@@ -1,0 +1,158 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "Options.hpp"
+
+#include "roughContact/models/ModelFactory.hpp"
+#include "roughContact/thermal/ConductanceLaw.hpp"
+
+#include <string>
+#include <vector>
+
+using namespace roughContact;
+
+namespace multiscaleContact {
+
+void addOptions(CLI::App& app, Options& o)
+{
+    auto* surface = app.add_option_group("surface", "exactly one surface description");
+    surface
+        ->add_option("--profile", o.profiles,
+                     "measured profile: columns 'x z', or 'z' with --dx; comma or whitespace separated, "
+                     "# comments and one header line allowed, Dektak CSV exports read as is; mean and tilt "
+                     "are removed. Give it twice for two rough surfaces")
+        ->expected(1, 2)
+        ->check(CLI::ExistingFile);
+    surface
+        ->add_option(
+            "--areal", o.areals,
+            "measured areal surface (height map): an X3P file (.x3p, ISO 25178-72), or a text matrix "
+            "of heights (rows along y, columns along x) with --dx (and --dy, --units); plane removed, "
+            "its line scans (--direction) averaged into one spectrum. Twice for two rough surfaces")
+        ->expected(1, 2)
+        ->check(CLI::ExistingFile);
+    surface
+        ->add_option("--spectrum", o.spectra,
+                     "spectrum table: columns 'frequency [1/m]  amplitude [m]'; twice for two surfaces")
+        ->expected(1, 2)
+        ->check(CLI::ExistingFile);
+    surface
+        ->add_option("--power-law", o.powerLaw,
+                     "BM,M,FMIN,FMAX: amplitude BM f^-M [m] at f = i/L in [FMIN, FMAX]")
+        ->delimiter(',')
+        ->expected(4);
+    surface
+        ->add_option("--fractal", o.fractal,
+                     "D,G,FMIN,FMAX: Majumdar-Bhushan (Weierstrass-Mandelbrot) spectrum, G in m")
+        ->delimiter(',')
+        ->expected(4);
+    surface->require_option(1);
+
+    app.add_option("--units", o.units,
+                   "units of profile and --areal matrix files: m (default), um or nm; a Dektak export's "
+                   "own header (um) is used when this is not given");
+    app.add_option("--dx", o.dx,
+                   "sample spacing of one-column profiles and of --areal matrices (along x), in --units");
+    app.add_option("--dy", o.dy, "spacing along y of an --areal matrix, in --units (default --dx)");
+    app.add_option("--direction", o.direction,
+                   "line scans of an --areal surface: x (rows, default), y (columns) or both");
+    app.add_flag("--fill-invalid", o.fillInvalid,
+                 "fill the invalid points of an --areal X3P file with the mean of their valid neighbours "
+                 "(default: they are an error)");
+    app.add_option("--length", o.length,
+                   "scan length L [m] for --spectrum/--power-law/--fractal "
+                   "(default 1/lowest frequency); A_n = L^2");
+    app.add_option("--stride", o.stride,
+                   "use every K-th profile sample (sampling interval K dx; seed Fig. 8)")
+        ->check(CLI::Range(std::size_t(1), std::size_t(1000000000)));
+
+    std::vector<std::string> allModels = modelNames();
+    allModels.push_back("boundaryElement");
+    app.add_option("--model", o.model,
+                   "hertz | jgh | jghConsistent | jacksonGreen | truncation (multi-scale, seed §2) | "
+                   "greenwoodWilliamson | greenwoodWilliamsonJG | majumdarBhushan | persson (Persson's theory, "
+                   "Yang-Persson mean separation, gamma 0.42, on the isotropic 2-D form of the spectrum) | "
+                   "boundaryElement (the exact reference: boundary elements on an --areal or --synthesize'd "
+                   "surface)")
+        ->required()
+        ->check(CLI::IsMember(allModels));
+    app.add_option("--synthesize", o.synthesize,
+                   "N[,SEED]: boundaryElement on an N x N isotropic Gaussian surface synthesized from the "
+                   "--profile/--spectrum/--power-law/--fractal (periodic; SEED default 1)");
+    app.add_option("--resample", o.resample,
+                   "N[,K]: boundaryElement on the --synthesize'd surface put on an N x N grid (its Fourier series "
+                   "there: the same surface, finer or coarser), without its wavelengths shorter than L/K if K is "
+                   "given (the same surface with fewer levels)");
+    app.add_flag("--periodic", o.periodic,
+                 "boundaryElement: solve an --areal map as one period of a periodic surface (default: "
+                 "non-periodic, zero-padded)");
+    app.add_option("--detrend", o.detrend,
+                   "boundaryElement: what is removed from the heights before the solve: none, mean or plane "
+                   "(default: mean for a periodic solve, which has no trend to remove; plane for a "
+                   "non-periodic map, whose fixture tilts it)");
+    app.add_option("--hardness", o.hardness, "boundaryElement: perfectly plastic cap p <= H [Pa]");
+    app.add_option("--pressure-map", o.pressureMap,
+                   "boundaryElement: write the contact pressure [Pa] at the highest load to this file, as a "
+                   "text matrix (rows along x, one per line)");
+    app.add_flag("--hardness-from-yield", o.hardnessFromYield,
+                 "boundaryElement: the cap H = 2.84 S_y (--Sy of the yielding material)");
+
+    auto* E = app.add_option("--E", o.E, "Young's modulus [Pa]; E1,E2 for two solids")
+                  ->delimiter(',')
+                  ->expected(1, 2);
+    app.add_option("--nu", o.nu, "Poisson's ratio; nu1,nu2 with two moduli")->delimiter(',')->expected(1, 2);
+    auto* Ep = app.add_option("--Eprime", o.Eprime, "reduced modulus E' [Pa] instead of --E/--nu");
+    E->excludes(Ep);
+    app.add_option("--Sy", o.Sy,
+                   "yield strength [Pa] (jacksonGreen, truncation, greenwoodWilliamsonJG, "
+                   "majumdarBhushan); Sy1,Sy2 with two moduli, none for a solid that does not yield "
+                   "(Sy1,none)")
+        ->delimiter(',')
+        ->expected(1, 2);
+
+    auto* loads = app.add_option("--loads", o.loads, "loads F/(A_n E'), comma separated: 0, or 1e-30 to 1e4");
+    auto* range = app.add_option("--load-range", o.loadRange, "MIN:MAX:N, N loads log spaced");
+    loads->excludes(range);
+    auto* pressures = app.add_option("--pressures", o.pressures,
+                                     "nominal pressures F/A_n [Pa], comma separated, instead of --loads: each is "
+                                     "the load P/E' (E' from --E/--nu or --Eprime); the output gains a first "
+                                     "column nominal_pressure [Pa]");
+    pressures->excludes(loads);
+    pressures->excludes(range);
+
+    app.add_option("--D", o.D, "Majumdar-Bhushan fractal dimension (default: fitted to the spectrum)");
+    app.add_option("--G", o.G, "Majumdar-Bhushan fractal roughness [m] (default: fitted)");
+    app.add_option("--fit-range", o.fitRange, "FMIN:FMAX [1/m]: frequencies the D,G fit uses (default all)");
+    app.add_flag("--levels", o.levels, "print the per-level trace (seed Fig. 5) instead of the load curve");
+    app.add_flag(
+        "--conductance", o.conductance,
+        "add the columns separation and h_per_k: contact conductance over k_s = 2 k1 k2/(k1 + k2), in 1/m, "
+        "from the --conductance-law (default: the multi-scale constriction resistances in series, inf at "
+        "complete contact, for the multi-scale models; for persson its mean separation [m] and Barber's "
+        "h_c/k_s = -(1/E') dp/du); separation [m] is the model's (persson) or the law's (persson, "
+        "multiscaleBarber: Barber-consistent with their h_per_k), empty where neither defines one");
+    std::string lawNames;
+    for (const std::string& n : conductanceLawNames()) {
+        lawNames += (lawNames.empty() ? "" : ", ") + n;
+    }
+    app.add_option("--conductance-law", o.conductanceLaw,
+                   "the law of the h_per_k column (implies --conductance): " + lawNames + " (default " +
+                       defaultConductanceLaw() + "); 'all': the default's column and one h_per_k_NAME "
+                       "column per law that can be built. cooperMikicYovanovich needs the microhardness: "
+                       "--hardness H_C, --hardness-from-yield (2.84 S_y) or --vickers C1,C2");
+    app.add_option("--vickers", o.vickers,
+                   "cooperMikicYovanovich: Vickers coefficients C1 [Pa], C2 of H_v = c1 (d_v/1 um)^c2, the "
+                   "microhardness from Song & Yovanovich's correlation");
+    app.add_flag("--info", o.info, "print the surface's parameters (McCool, fractal fit) to stderr");
+    app.add_option("--k1", o.k1, "conductivity [W/(m K)] of solid 1: with --k2, add the column h = k_s h_per_k "
+                                 "[W/(m^2 K)], k_s = 2 k1 k2/(k1 + k2)");
+    app.add_option("--k2", o.k2, "conductivity [W/(m K)] of solid 2 (with --k1)");
+    app.add_flag("--check", o.check,
+                 "check the laws on this surface: the exact model (boundaryElement) on the --areal map, or on "
+                 "3 surfaces of 512 x 512 (--synthesize N) synthesized from the profile or spectrum, at the "
+                 "given pressures (up to 5) or 4 across their range, within p/(E' h') 1e-4 to 1e-1; capped at "
+                 "H where --Sy, --hardness or --hardness-from-yield say, elastic otherwise. Prints every law's "
+                 "ratio to the exact h_c/k_s, the closest, and whether the chosen law (--conductance-law, "
+                 "default " + defaultConductanceLaw() + ") is within 25 %");
+
+}
+
+} // namespace multiscaleContact

@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// multiscaleContact's command line: what it says (Options) and how CLI11 reads it (addOptions).
+// Nothing here computes: Inputs.hpp turns the options into the core's objects, Run.hpp runs them.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace multiscaleContact {
+
+struct Options {
+    std::vector<std::string> profiles;
+    std::vector<std::string> areals;
+    std::vector<std::string> spectra;
+    std::vector<double> powerLaw; // b_m, m, fmin, fmax
+    std::vector<double> fractal;  // D, G, fmin, fmax
+    std::optional<std::string> units;
+    std::optional<double> dx;
+    std::optional<double> dy;
+    std::optional<std::string> direction;
+    bool fillInvalid = false;
+    std::string synthesize; // "N[,SEED]"
+    std::string resample;   // "N[,K]"
+    bool periodic = false;
+    std::optional<std::string> detrend; // boundaryElement: none | mean | plane
+    std::optional<double> hardness;
+    bool hardnessFromYield = false;
+    std::string pressureMap; // boundaryElement: the pressure field of the highest load, to this file
+    std::optional<double> length;
+    std::size_t stride = 1;
+    std::string model;
+    std::vector<double> E;
+    std::vector<double> nu;
+    std::optional<double> Eprime;
+    std::vector<std::string> Sy; // numbers [Pa], or none: the solid does not yield
+    std::vector<std::string> loads; // as given: "1e-5,1e-4" (split here, so "" is an error)
+    std::string loadRange;
+    std::vector<std::string> pressures; // --pressures: nominal pressures F/A_n [Pa], as given
+    std::optional<double> D;
+    std::optional<double> G;
+    std::string fitRange;
+    bool levels = false;
+    bool conductance = false;
+    std::string conductanceLaw; // --conductance-law NAME (implies --conductance)
+    std::string vickers;        // "C1,C2"
+    bool info = false;
+    bool check = false; // --check: the exact model on this surface against every law
+    std::optional<double> k1; // --k1, --k2 [W/(m K)]: add the column h [W/(m^2 K)]
+    std::optional<double> k2;
+};
+
+/// Every option and flag of multiscaleContact on app, read into o (their help texts are the
+/// README's table of the CLI; --help prints them).
+void addOptions(CLI::App& app, Options& o);
+
+} // namespace multiscaleContact

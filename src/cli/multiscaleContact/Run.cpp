@@ -1,0 +1,275 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "Run.hpp"
+#include "Inputs.hpp"
+
+#include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
+#include "roughContact/interface/InterfaceRegime.hpp"
+#include "roughContact/interface/SurfaceCheck.hpp"
+#include "roughContact/io/ArealReader.hpp"
+#include "roughContact/io/Numbers.hpp"
+#include "roughContact/io/ProfileReader.hpp"
+#include "roughContact/io/SpectrumReader.hpp"
+#include "roughContact/io/Units.hpp"
+#include "roughContact/material/Materials.hpp"
+#include "roughContact/models/BoundaryElement.hpp"
+#include "roughContact/models/ModelFactory.hpp"
+#include "roughContact/models/MultiscaleModel.hpp"
+#include "roughContact/models/Persson.hpp"
+#include "roughContact/surface/ArealSurface.hpp"
+#include "roughContact/surface/ArealSynthesis.hpp"
+#include "roughContact/surface/SpectralResampling.hpp"
+#include "roughContact/surface/FractalFit.hpp"
+#include "roughContact/surface/Profile.hpp"
+#include "roughContact/surface/Roughness.hpp"
+#include "roughContact/surface/SpectralMoments.hpp"
+#include "roughContact/surface/Spectrum.hpp"
+#include "roughContact/thermal/ConductanceLaw.hpp"
+#include "roughContact/thermal/ConstrictionConductance.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace roughContact;
+
+namespace multiscaleContact {
+
+int run(const Options& o)
+{
+    if (o.check) {
+        return runCheck(o);
+    }
+    if (o.model == "boundaryElement") {
+        return runBoundaryElement(o);
+    }
+    const bool cmy = o.conductanceLaw == "cooperMikicYovanovich" || o.conductanceLaw == "all";
+    for (const auto& [given, what] : {std::pair<bool, const char*>{!o.synthesize.empty(), "--synthesize"},
+                                      {!o.resample.empty(), "--resample"},
+                                      {o.periodic, "--periodic"},
+                                      {o.detrend.has_value(), "--detrend"},
+                                      {o.hardness.has_value() && !cmy, "--hardness"},
+                                      {o.hardnessFromYield && !cmy, "--hardness-from-yield"},
+                                      {!o.pressureMap.empty(), "--pressure-map"}}) {
+        if (given) {
+            throw ParameterError(what, std::string("is for --model boundaryElement") +
+                                           (std::string(what).rfind("--hardness", 0) == 0
+                                                ? " and --conductance-law cooperMikicYovanovich"
+                                                : ""));
+        }
+    }
+    if (!o.vickers.empty() && !cmy) {
+        throw ParameterError("--vickers", "is for --conductance-law cooperMikicYovanovich");
+    }
+    const Spectrum spectrum = surfaceOf(o);
+    if (o.info) {
+        printInfo(spectrum, std::cerr);
+    }
+    const ContactMaterials materials = materialsOf(o);
+    ModelOptions mo;
+    if (o.D || o.G) {
+        if (!(o.D && o.G)) {
+            throw ParameterError("--D/--G", "give both or neither");
+        }
+        mo.fractal = FractalParameters{*o.D, *o.G};
+    } else if (!o.fractal.empty()) {
+        mo.fractal = FractalParameters{o.fractal[0], o.fractal[1]};
+    } else if (o.model == "majumdarBhushan" && !o.fitRange.empty()) {
+        const std::vector<double> r = splitNumbers(o.fitRange, ':', "--fit-range");
+        if (r.size() != 2) {
+            throw ParameterError("--fit-range", "expects FMIN:FMAX");
+        }
+        mo.fractal = fitFractal(spectrum, r[0], r[1]);
+    }
+    std::vector<double> pressures; // --pressures [Pa]: the first column
+    const std::vector<double> loads = loadsOf(o, materials.reducedModulus(), &pressures);
+    const auto model = makeContactModel(o.model, spectrum, materials, mo);
+
+    // The whole CSV is made before any of it is printed: an error half way leaves stdout empty.
+    std::ostringstream out;
+    out.precision(10);
+    if (o.levels) {
+        const auto* ms = dynamic_cast<const MultiscaleModel*>(model.get());
+        if (ms == nullptr) {
+            throw ParameterError("--levels", "the per-level trace exists for the multi-scale models only");
+        }
+        const double An = spectrum.nominalArea();
+        out << (pressures.empty() ? "" : "nominal_pressure,")
+            << "load,level,frequency,amplitude,eta,radius,asperities,asperity_force,area,complete\n";
+        for (std::size_t i = 0; i < loads.size(); ++i) {
+            const double load = loads[i];
+            for (const LevelState& s : ms->trace(load)) {
+                if (!pressures.empty()) {
+                    out << pressures[i] << ',';
+                }
+                out << load << ',' << s.index + 1 << ',' << s.frequency << ',' << s.amplitude << ','
+                          << s.density << ',' << s.radius << ',' << s.asperities << ',' << s.asperityForce
+                    << ',' << s.area / An << ',' << (s.complete ? 1 : 0) << '\n';
+            }
+        }
+        std::cout << out.str();
+        return 0;
+    }
+    const auto* ms = dynamic_cast<const MultiscaleModel*>(model.get());
+    const auto* persson = dynamic_cast<const PerssonModel*>(model.get());
+    const bool conductance = o.conductance || !o.conductanceLaw.empty();
+    const bool allLaws = o.conductanceLaw == "all";
+    // persson's own conductance (Barber's relation with its mean separation) unless a law is named.
+    const std::string lawName = o.conductanceLaw.empty() || allLaws
+                                    ? (persson != nullptr ? "persson" : defaultConductanceLaw())
+                                    : o.conductanceLaw;
+    ConductanceLawInputs in;
+    if (conductance) {
+        in.multiscale = ms;
+        in.spectrum = &spectrum;
+        in.Eprime = materials.reducedModulus();
+        if (allLaws || conductanceLawNeedsRoughness(lawName)) {
+            in.roughness = roughnessOf(o);
+        }
+        in.microhardness = hardnessOf(o, materials, "--hardness-from-yield");
+        // fittedElastoPlastic's cap: --hardness (or from yield), else 2.84 S_y where --Sy is given.
+        in.hardness = conductanceLawHardness(in.microhardness, materials);
+        if (!o.vickers.empty()) {
+            const std::vector<double> c = splitNumbers(o.vickers, ',', "--vickers");
+            if (c.size() != 2) {
+                throw ParameterError("--vickers", "expects C1,C2: c1 [Pa] and c2 of H_v = c1 (d_v/1 um)^c2");
+            }
+            in.vickers = VickersCoefficients{c[0], c[1]};
+        }
+    }
+    // Why a law cannot be built here, or "" when it can.
+    const auto missing = [&](const std::string& name) -> std::string {
+        if (name == "cooperMikicYovanovich" && !in.microhardness && !in.vickers) {
+            return "needs the microhardness: --hardness H_C [Pa], --hardness-from-yield (2.84 S_y) or "
+                   "--vickers C1,C2";
+        }
+        if ((name == "jacksonBhavnaniFerguson" || name == "multiscaleBarber") && ms == nullptr) {
+            return "needs a multi-scale model; choose another --conductance-law (mikic, persson, ...)";
+        }
+        return "";
+    };
+    std::unique_ptr<ConductanceLaw> law; // the h_per_k column's (none: persson's own)
+    if (conductance && !(persson != nullptr && lawName == "persson")) {
+        const std::string why = missing(lawName);
+        if (!why.empty() && allLaws) {
+            // all: h_per_k stays empty where the default law cannot be built; the other columns say.
+        } else if (!why.empty()) {
+            throw ParameterError(o.conductanceLaw.empty() ? "--conductance" : "--conductance-law " + lawName,
+                                 (o.conductanceLaw.empty() ? "the default law " + lawName + " " : "") + why);
+        }
+        if (why.empty()) {
+            law = makeConductanceLaw(lawName, in);
+        }
+    }
+    // --conductance-law all: every law that can be built here, a column h_per_k_NAME each.
+    std::vector<std::pair<std::string, std::unique_ptr<ConductanceLaw>>> every;
+    if (allLaws) {
+        for (const std::string& name : conductanceLawNames()) {
+            const std::string why = missing(name);
+            if (why.empty()) {
+                every.emplace_back(name, makeConductanceLaw(name, in));
+            } else {
+                std::cerr << "multiscaleContact: --conductance-law all: no column for " << name << ": " << why
+                          << '\n';
+            }
+        }
+    }
+    if (conductance) {
+        // The regime at the run's lightest and heaviest load and the law's measured accuracy there
+        // (InterfaceRegime.hpp), on stderr: the hardness the materials give (2.84 S_y) or
+        // --hardness; the law held to the capped reference where the area model caps the pressure.
+        std::vector<double> positive;
+        for (double l : loads) {
+            if (l > 0.0) {
+                positive.push_back(l);
+            }
+        }
+        if (!positive.empty()) {
+            const double Ep = materials.reducedModulus();
+            const std::optional<double> H = in.hardness; // conductanceLawHardness
+            const std::string shown = law || persson == nullptr ? lawName : std::string("persson");
+            const bool capped = heldToCappedReference(o.model, shown, H.has_value());
+            const auto [lo, hi] = std::minmax_element(positive.begin(), positive.end());
+            const InterfaceRegime r =
+                interfaceRegime(spectrum, Ep, H, shown, persson != nullptr ? std::string("persson") : o.model, capped,
+                                *lo * Ep, *hi * Ep);
+            std::cerr << "multiscaleContact: " << r.describe() << std::endl;
+        }
+    }
+    const std::optional<double> ks = harmonicConductivityOf(o, conductance);
+    out << (pressures.empty() ? "" : "nominal_pressure,") << "load,area,pressure" << (conductance ? ",separation,h_per_k" : "")
+        << (ks ? ",h" : "");
+    for (const auto& [name, l] : every) {
+        out << ",h_per_k_" << name;
+    }
+    out << '\n';
+    const double Ep = materials.reducedModulus();
+    for (std::size_t i = 0; i < loads.size(); ++i) {
+        const double load = loads[i];
+        if (!pressures.empty()) {
+            out << pressures[i] << ',';
+        }
+        if (persson != nullptr && conductance) {
+            // Persson's theory: the mean separation [m] and Barber's h_c/k_s = -(1/E') dp/du
+            // (Persson.hpp), or the named law's; u = inf at load 0, h_per_k = inf beyond double range.
+            const PerssonPoint p = persson->evaluate(load);
+            out << load << ',' << p.areaFraction << ',';
+            if (p.areaFraction > 0.0) {
+                out << load / p.areaFraction;
+            }
+            const double hk = law ? law->perConductivity(load * Ep) : p.conductancePerConductivity;
+            out << ',' << p.meanSeparation << ',' << hk;
+            if (ks) {
+                out << ',' << *ks * hk;
+            }
+        } else {
+            const double a = model->areaFraction(load);
+            out << load << ',' << a << ',';
+            if (a > 0.0) {
+                out << load / a; // F/(A_r E'), seed Eq. 34
+            }
+            if (conductance) {
+                // No mean separation in these models: the law's where it defines one
+                // (ConductanceLaw::meanSeparation: persson, multiscaleBarber), else empty.
+                out << ',';
+                if (law) {
+                    const double Y = law->meanSeparation(load * Ep);
+                    if (!std::isnan(Y)) {
+                        out << Y;
+                    }
+                }
+                out << ',';
+                if (law) {
+                    out << law->perConductivity(load * Ep); // inf at complete contact
+                }
+                if (ks) {
+                    out << ',';
+                    if (law) {
+                        out << *ks * law->perConductivity(load * Ep);
+                    }
+                }
+            }
+        }
+        for (const auto& [name, l] : every) {
+            out << ',' << l->perConductivity(load * Ep);
+        }
+        out << '\n';
+    }
+    std::cout << out.str();
+    return 0;
+}
+
+} // namespace multiscaleContact

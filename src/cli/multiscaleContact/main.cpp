@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// multiscaleContact: real contact area of rough surfaces against load, from the command line.
+// The interface is fixed (issue 2): scripts rely on --profile/--spectrum, --model, the
+// material options, --loads/--load-range, --levels and the CSV columns load and area. --pressures
+// (nominal pressures in Pa, each the load P/E') adds a first column nominal_pressure [Pa].
+//
+// The program in files: Options (the command line), Inputs (options to the core's objects), Run,
+// Check, BoundaryElementRun (what it computes); this file only parses and reports errors.
+#include "Options.hpp"
+#include "Run.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <iostream>
+
+using namespace multiscaleContact;
+
+int main(int argc, char** argv)
+{
+    CLI::App app{
+        "multiscaleContact: real contact area A_r/A_n of a rough surface against a flat, or of two rough\n"
+        "surfaces, as a function of the load F/(A_n E'), by the multi-scale model of Jackson & Streator\n"
+        "(2006) and the models it is compared with. Prints CSV on stdout: load,area,pressure with\n"
+        "load = F/(A_n E'), area = A_r/A_n and pressure = F/(A_r E') (with --pressures, a first column\n"
+        "nominal_pressure = F/A_n [Pa]); errors go to stderr, exit 1.",
+        "multiscaleContact"};
+    Options o;
+
+    addOptions(app, o);
+
+    try {
+        app.parse(argc, argv);
+        if (o.loads.empty() && o.loadRange.empty() && o.pressures.empty()) {
+            throw CLI::RequiredError("--loads, --load-range or --pressures");
+        }
+    } catch (const CLI::ParseError& e) {
+        // CLI11 prints the message (or the help); its own codes (104-114) become the README's 1.
+        return app.exit(e) == 0 ? 0 : 1;
+    }
+    try {
+        return run(o);
+    } catch (const std::exception& e) {
+        std::cerr << "multiscaleContact: error: " << e.what() << '\n';
+        return 1;
+    }
+}
