@@ -102,6 +102,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::readContact
             << " constant conductance [W/m^2/K]) and 'contact' (an entry of"
             << " constant/thermalContactProperties)" << exit(FatalIOError);
     }
+    mode_ = hasH ? conductanceMode::constantH : conductanceMode::contact;
     if (hasH)
     {
         hConstant_ = dict.get<scalar>("h");
@@ -326,17 +327,17 @@ void Foam::thermalContactResistanceFvPatchScalarField::checkNeighbour
 )
 {
     string problem;
-    if ((hConstant_ > 0) != (nbr.hConstant_ > 0))
+    if (mode_ != nbr.mode_)
     {
         problem = "one side gives 'h', the other 'contact'";
     }
-    else if (hConstant_ > 0 && hConstant_ != nbr.hConstant_)
+    else if (mode_ == conductanceMode::constantH && hConstant_ != nbr.hConstant_)
     {
         problem =
             "the two sides give different 'h' (" + Foam::name(hConstant_)
           + " and " + Foam::name(nbr.hConstant_) + ")";
     }
-    else if (hConstant_ <= 0 && contactName_ != nbr.contactName_)
+    else if (mode_ == conductanceMode::contact && contactName_ != nbr.contactName_)
     {
         problem =
             "the two sides name different 'contact' entries ('"
@@ -444,10 +445,10 @@ void Foam::thermalContactResistanceFvPatchScalarField::storeOutput() const
         &conductance_, &areaFraction_, &contactPressure_, &contactState_,
         &gapConductance_
     };
-    const bool gap = hConstant_ <= 0 && interface_->hasGap();
+    const bool gap = mode_ == conductanceMode::contact && interface_->hasGap();
     for (label k = 0; k < nOutputs; ++k)
     {
-        if ((hConstant_ > 0 && k != outConductance) || (k == outGap && !gap))
+        if ((mode_ == conductanceMode::constantH && k != outConductance) || (k == outGap && !gap))
         {
             continue;
         }
@@ -603,7 +604,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::writeSeries() const
 
 void Foam::thermalContactResistanceFvPatchScalarField::report() const
 {
-    if (hConstant_ > 0)
+    if (mode_ == conductanceMode::constantH)
     {
         Info<< "thermalContactResistance: " << who().c_str()
             << ": h = " << hConstant_ << " W/m^2/K (constant)" << endl;
@@ -652,7 +653,8 @@ thermalContactResistanceFvPatchScalarField
 #endif
     TnbrName_("undefined-Tnbr"),
     contactName_(),
-    hConstant_(-1),
+    mode_(conductanceMode::contact),
+    hConstant_(0),
     pressure_(),
     pressureFieldName_(),
     gapWidth_(-1),
@@ -695,7 +697,8 @@ thermalContactResistanceFvPatchScalarField
     temperatureCoupledBase(patch(), checkedKappaMethod(p, iF, dict)),
     TnbrName_(dict.get<word>("Tnbr")),
     contactName_(),
-    hConstant_(-1),
+    mode_(conductanceMode::contact),
+    hConstant_(0),
     pressure_(),
     pressureFieldName_(),
     gapWidth_(-1),
@@ -757,6 +760,7 @@ thermalContactResistanceFvPatchScalarField
     temperatureCoupledBase(patch(), ptf),
     TnbrName_(ptf.TnbrName_),
     contactName_(ptf.contactName_),
+    mode_(ptf.mode_),
     hConstant_(ptf.hConstant_),
     pressure_(),
     pressureFieldName_(ptf.pressureFieldName_),
@@ -804,6 +808,7 @@ thermalContactResistanceFvPatchScalarField
     temperatureCoupledBase(patch(), ptf),
     TnbrName_(ptf.TnbrName_),
     contactName_(ptf.contactName_),
+    mode_(ptf.mode_),
     hConstant_(ptf.hConstant_),
     pressure_
     (
@@ -847,6 +852,7 @@ thermalContactResistanceFvPatchScalarField
     temperatureCoupledBase(patch(), ptf),
     TnbrName_(ptf.TnbrName_),
     contactName_(ptf.contactName_),
+    mode_(ptf.mode_),
     hConstant_(ptf.hConstant_),
     pressure_
     (
@@ -1034,7 +1040,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
     // face; with a gap also its face temperature and gap width (a
     // symmTensor's six components carry the five); and (once, while the mesh
     // does not change) its deltaCoeffs.
-    const bool withGap = hConstant_ <= 0 && interface_->hasGap();
+    const bool withGap = mode_ == conductanceMode::contact && interface_->hasGap();
     const label nNbr = nbrPatch.size();
     scalarField nbrT(size());
     scalarField nbrKappa(size());
@@ -1045,7 +1051,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
     {
         const scalarField T
         (
-            hConstant_ > 0
+            mode_ == conductanceMode::constantH
           ? scalarField(nbrField)
           : nbrField.patchInternalField()()
         );
@@ -1112,7 +1118,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
     }
     try
     {
-        if (hConstant_ > 0)
+        if (mode_ == conductanceMode::constantH)
         {
             in.faceTemperatureNbr = nbrT.cdata();
             roughContact::coupleConstant(hConstant_, in, coupling_);
@@ -1189,7 +1195,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
             out.gapConductance[facei] + out.radiativeConductance[facei];
     }
 
-    if (hConstant_ <= 0)
+    if (mode_ == conductanceMode::contact)
     {
         if (returnReduce(apart, orOp<bool>()) && !warnedNoContact_)
         {
@@ -1259,7 +1265,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::write(Ostream& os) const
 {
     mixedFvPatchScalarField::write(os);
     os.writeEntry("Tnbr", TnbrName_);
-    if (hConstant_ > 0)
+    if (mode_ == conductanceMode::constantH)
     {
         os.writeEntry("h", hConstant_);
     }
@@ -1305,7 +1311,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::write(Ostream& os) const
     if (evaluated_)
     {
         report();
-        if (hConstant_ <= 0)
+        if (mode_ == conductanceMode::contact)
         {
             writeSeries();
         }
