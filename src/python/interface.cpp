@@ -11,6 +11,8 @@
 #include "bindings.hpp"
 #include "convert.hpp"
 
+#include "roughContact/Error.hpp"
+#include "roughContact/interface/BoundaryElementTable.hpp"
 #include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/interface/InterfaceGap.hpp"
 #include "roughContact/io/Units.hpp"
@@ -150,12 +152,23 @@ void bindInterface(py::module_& m)
                          std::optional<double> minPressure, std::optional<double> maxPressure,
                          std::size_t pointsPerDecade, std::optional<std::size_t> synthesize, std::uint64_t seed,
                          std::optional<bool> periodic, std::optional<double> hardness, bool hardnessFromYield,
-                         std::size_t bemPointsPerDecade, std::optional<GapSpec> gap, std::optional<std::string> detrend) {
+                         std::size_t bemPointsPerDecade, std::optional<GapSpec> gap, std::optional<std::string> detrend,
+                         std::optional<std::string> tableFile) {
                  const InterfaceSpec s =
                      interfaceSpec(surfaces, side1, side2, model, conductance, microhardness, vickers, minPressure,
                                    maxPressure, pointsPerDecade, synthesize, seed, periodic, hardness,
                                    hardnessFromYield, bemPointsPerDecade, gap, detrend);
+                 if (tableFile && s.model != "boundaryElement") {
+                     throw ParameterError("table_file", "is the cache of model 'boundaryElement', not of '" +
+                                                            s.model + "'");
+                 }
                  py::gil_scoped_release release;
+                 if (tableFile) {
+                     // The case's cache, shared with the condition: read when it holds this table
+                     // (its key and digest), else built and written (BoundaryElementTable.hpp).
+                     const BoundaryElementTablePoints points = BoundaryElementTable(s).loadOrBuild(*tableFile);
+                     return std::make_unique<ContactInterface>(s, &points);
+                 }
                  return std::make_unique<ContactInterface>(s);
              }),
              py::kw_only(), py::arg("surfaces"), py::arg("side1"), py::arg("side2"), py::arg("model") = "jacksonGreen",
@@ -164,7 +177,7 @@ void bindInterface(py::module_& m)
              py::arg("points_per_decade") = 40, py::arg("synthesize") = py::none(), py::arg("seed") = 1,
              py::arg("periodic") = py::none(), py::arg("hardness") = py::none(),
              py::arg("hardness_from_yield") = false, py::arg("bem_points_per_decade") = 6,
-             py::arg("gap") = py::none(), py::arg("detrend") = py::none(),
+             py::arg("gap") = py::none(), py::arg("detrend") = py::none(), py::arg("table_file") = py::none(),
              "ContactInterface(*, surfaces, side1, side2, model='jacksonGreen', conductance='', ...): "
              "surfaces a list of one or two SurfaceSpec; side1, side2 the Materials of the two solids; model a "
              "multi-scale model or 'boundaryElement'; conductance a law name ('' the default); microhardness "
@@ -172,7 +185,9 @@ void bindInterface(py::module_& m)
              "table's range (default 1e-9 E' to E'); points_per_decade; boundaryElement only: synthesize N "
              "(an N x N surface from the 1-D surfaces), seed, periodic, detrend ('none', 'mean' or 'plane'; None: "
              "'mean' when periodic, 'plane' otherwise), hardness [Pa], hardness_from_yield, "
-             "bem_points_per_decade; gap a GapSpec (gas and/or radiation beside the contact) or None. Building the table takes a fraction of a second for the multi-scale "
+             "bem_points_per_decade, table_file (the boundary-element table's cache file, as the condition's "
+             "constant/boundaryElementTable.NAME.csv: read when it holds this table, else built and written); "
+             "gap a GapSpec (gas and/or radiation beside the contact) or None. Building the table takes a fraction of a second for the multi-scale "
              "models, far longer for boundaryElement.")
         .def(
             "area_fraction",

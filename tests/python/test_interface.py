@@ -78,6 +78,33 @@ def test_boundary_element_interface():
     assert np.all(np.diff(ci.table_area_fractions) >= 0)
 
 
+def test_boundary_element_table_file(tmp_path):
+    """table_file (issue 21, item 3): the core's cache, as the condition keeps it in
+    constant/boundaryElementTable.NAME.csv: written by the first build, read by the next (the same
+    table to the last bit, its 17 digits read back exactly), rebuilt when it is not this table's."""
+    kw = dict(surfaces=[rc.SurfaceSpec.profile(STANDIN)], side1=STEEL_M, side2=STEEL_M, model="boundaryElement",
+              synthesize=16, seed=2, bem_points_per_decade=2)
+    path = tmp_path / "boundaryElementTable.slabs.csv"
+    built = rc.ContactInterface(**kw, table_file=str(path))
+    text = path.read_text()
+    assert text.startswith("# roughContact boundary-element table v3") and "# sha256 " in text
+    inode = path.stat().st_ino  # a rewrite is a new file renamed over it: a new inode
+    again = rc.ContactInterface(**kw, table_file=str(path))
+    assert path.read_text() == text and path.stat().st_ino == inode  # reused, not rewritten
+    plain = rc.ContactInterface(**kw)
+    for ci in (again, plain):
+        assert np.array_equal(ci.table_pressures, built.table_pressures)
+        assert np.array_equal(ci.table_conductances_per_conductivity, built.table_conductances_per_conductivity)
+    # Another surface (seed 3) has another key: the file is rebuilt for it, not trusted.
+    other = rc.ContactInterface(**dict(kw, seed=3), table_file=str(path))
+    assert path.read_text() != text
+    assert not np.array_equal(other.table_area_fractions, built.table_area_fractions)
+    # The cache is the boundary-element model's only.
+    with pytest.raises(rc.ParameterError, match="^table_file: .*boundaryElement"):
+        rc.ContactInterface(surfaces=[rc.SurfaceSpec.profile(STANDIN)], side1=STEEL_M, side2=STEEL_M,
+                            model="hertz", table_file=str(path))
+
+
 def test_errors():
     with pytest.raises(rc.ParameterError) as e:
         rc.ContactInterface(surfaces=[rc.SurfaceSpec.profile(STANDIN)], side1=STEEL_M, side2=STEEL_M, model="nope")
