@@ -145,6 +145,13 @@ void addOptions(CLI::App& app, Options& o)
     app.add_option("--k1", o.k1, "conductivity [W/(m K)] of solid 1: with --k2, add the column h = k_s h_per_k "
                                  "[W/(m^2 K)], k_s = 2 k1 k2/(k1 + k2)");
     app.add_option("--k2", o.k2, "conductivity [W/(m K)] of solid 2 (with --k1)");
+    app.add_option("--table", o.table,
+                   "with --model boundaryElement and two solids (--E E1,E2 --nu nu1,nu2, the condition's side1 "
+                   "and side2): the boundary-element table the boundary condition builds for these inputs "
+                   "(loads 1e-6 E' to min(0.1 E', 0.95 H), 6 a decade; --pressures MIN[,MAX] [Pa] sets the "
+                   "range), read from FILE when it holds this table (its key and digest), else solved and "
+                   "written to FILE, the condition's constant/boundaryElementTable.NAME.csv; prints "
+                   "pressure,area,h_per_k,separation");
     app.add_flag("--check", o.check,
                  "check the laws on this surface: the exact model (boundaryElement) on the --areal map, or on "
                  "3 surfaces of 512 x 512 (--synthesize N) synthesized from the profile or spectrum, at the "

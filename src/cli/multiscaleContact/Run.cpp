@@ -53,6 +53,9 @@ int run(const Options& o)
     if (o.check) {
         return runCheck(o);
     }
+    if (!o.table.empty()) {
+        return runTable(o);
+    }
     if (o.model == "boundaryElement") {
         return runBoundaryElement(o);
     }

@@ -16,6 +16,10 @@ int run(const Options& o);
 /// range), every law's ratio to it; the report, then its numbers as CSV, on stdout.
 int runCheck(const Options& o);
 
+/// --table FILE: the boundary-element table of the interface (BoundaryElementTable::loadOrBuild,
+/// the condition's cache), its points as CSV.
+int runTable(const Options& o);
+
 /// --model boundaryElement: the curve, one progress line on stderr per load once the run takes
 /// longer than 2 s, then the whole CSV.
 int runBoundaryElement(const Options& o);

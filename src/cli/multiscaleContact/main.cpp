@@ -5,7 +5,7 @@
 // (nominal pressures in Pa, each the load P/E') adds a first column nominal_pressure [Pa].
 //
 // The program in files: Options (the command line), Inputs (options to the core's objects), Run,
-// Check, BoundaryElementRun (what it computes); this file only parses and reports errors.
+// Check, BoundaryElementRun, Table (what it computes); this file only parses and reports errors.
 #include "Options.hpp"
 #include "Run.hpp"
 
@@ -31,7 +31,7 @@ int main(int argc, char** argv)
 
     try {
         app.parse(argc, argv);
-        if (o.loads.empty() && o.loadRange.empty() && o.pressures.empty()) {
+        if (o.loads.empty() && o.loadRange.empty() && o.pressures.empty() && o.table.empty()) {
             throw CLI::RequiredError("--loads, --load-range or --pressures");
         }
     } catch (const CLI::ParseError& e) {

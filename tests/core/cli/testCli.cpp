@@ -3,9 +3,11 @@
 // library's, and its error paths (stderr, non-zero exit, nothing on stdout).
 #include "RunCommand.hpp"
 
+#include "roughContact/interface/BoundaryElementTable.hpp"
 #include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/interface/SurfaceCheck.hpp"
 #include "roughContact/io/ArealReader.hpp"
+#include "roughContact/io/Numbers.hpp"
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/io/X3pReader.hpp"
 #include "roughContact/material/Materials.hpp"
@@ -109,7 +111,8 @@ TEST(Cli, HelpDocumentsEveryOptionAndModel)
     for (const char* opt : {"--profile", "--units", "--spectrum", "--length", "--power-law", "--fractal",
                             "--model", "--E", "--nu", "--Eprime", "--Sy", "--loads", "--load-range", "--pressures",
                             "--levels", "--stride", "--areal", "--dy", "--direction", "--fill-invalid",
-                            "--conductance-law", "--vickers", "--hardness-from-yield", "--check", "--k1", "--k2"}) {
+                            "--conductance-law", "--vickers", "--hardness-from-yield", "--check", "--k1", "--k2",
+                            "--table"}) {
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
     }
     for (const std::string& m : modelNames()) {
@@ -845,4 +848,52 @@ TEST(Cli, YieldStrengthNoneSaysASolidDoesNotYield)
     expectError(p + " --E 200e9,300e9 --nu 0.3,0.25 --Sy 0.4e9,soft", {"--Sy", "soft"});
     // Said not to yield and then needed: jacksonGreen needs the S_y of some solid.
     expectError(p + " --E 200e9,300e9 --nu 0.3,0.25 --Sy none,none", {"yield strength S_y", "jacksonGreen"});
+}
+
+TEST(Cli, TableIsTheLibrarysBoundaryElementCache)
+{
+    // --table FILE (issue 21, item 3): the interface's boundary-element table through the core's
+    // loadOrBuild, as the condition makes it (tests/cases/boundaryElementCache: the same file byte
+    // for byte): the file the library writes for the same InterfaceSpec, the points printed to
+    // the 10 digits the CLI prints, and the file reused by a second run.
+    TempDir dir;
+    const std::string file = (dir.path() / "table.csv").string();
+    const std::string args = "--power-law 2.56e-4,0.8,1e3,32e3 --length 1e-3 --model boundaryElement --synthesize 32,3 "
+                             "--E 200e9,120e9 --nu 0.3,0.34 --Sy 0.4e9,none --hardness-from-yield --table '" + file + "'";
+    const CommandResult first = run(args);
+    ASSERT_EQ(first.status, 0) << first.err;
+    InterfaceSpec spec;
+    spec.model = "boundaryElement";
+    SurfaceSpec s;
+    s.kind = SurfaceSpec::Kind::powerLaw;
+    s.parameters = {2.56e-4, 0.8, 1e3, 32e3};
+    s.length = 1e-3;
+    spec.surfaces = {s};
+    spec.side1 = Material{200e9, 0.3, 0.4e9};
+    spec.side2 = Material{120e9, 0.34, std::nullopt};
+    spec.side2.elastic = true;
+    spec.synthesize = 32;
+    spec.seed = 3;
+    spec.hardnessFromYield = true;
+    const BoundaryElementTable table(spec);
+    const BoundaryElementTablePoints points = table.build();
+    std::ifstream in(file);
+    const std::string written((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(written, table.write(points));
+    const Csv csv = parseCsv(first.out);
+    ASSERT_EQ(csv.rows.size(), points.pressures.size());
+    for (std::size_t i = 0; i < points.pressures.size(); ++i) {
+        EXPECT_EQ(csv.rows[i][column(csv, "pressure")], formatNumber(points.pressures[i], 10));
+        EXPECT_EQ(csv.rows[i][column(csv, "h_per_k")], formatNumber(points.conductancesPerConductivity[i], 10));
+    }
+    const CommandResult second = run(args);
+    EXPECT_EQ(second.out, first.out);
+    EXPECT_NE(second.err.find("reusing"), std::string::npos) << second.err;
+    // What the table is not.
+    expectError("--power-law 2.56e-4,0.8,1e3,32e3 --model hertz --E 2e11,2e11 --nu 0.3,0.3 --table '" + file + "'",
+                {"--table", "boundaryElement"});
+    expectError("--power-law 2.56e-4,0.8,1e3,32e3 --length 1e-3 --model boundaryElement --synthesize 32 --E 2e11 "
+                "--nu 0.3 --table '" + file + "'",
+                {"--table", "two solids"});
+    expectError(args + " --loads 1e-4", {"--loads", "--table"});
 }
