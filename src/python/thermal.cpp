@@ -128,7 +128,7 @@ void bindThermal(py::module_& m)
              }),
              py::kw_only(), py::arg("conductivity"), py::arg("conductivity_exponent"),
              py::arg("reference_temperature"), py::arg("heat_capacity_ratio"), py::arg("prandtl"),
-             py::arg("mean_free_path"), py::arg("reference_pressure") = 101325.0, py::arg("accommodation"),
+             py::arg("mean_free_path"), py::arg("reference_pressure") = standardAtmosphere, py::arg("accommodation"),
              "k_g [W/(m K)] at T0 [K], k_g(T) = k_g (T/T0)^conductivity_exponent, gamma, Pr, the mean free "
              "path [m] at T0 and reference_pressure [Pa], the default accommodation coefficient. "
              "ParameterError names a number out of range.")
@@ -163,7 +163,7 @@ void bindThermal(py::module_& m)
                  }
                  return GasGap(spec);
              }),
-             py::arg("gas"), py::arg("pressure") = 101325.0, py::arg("accommodation") = py::none(),
+             py::arg("gas"), py::arg("pressure") = standardAtmosphere, py::arg("accommodation") = py::none(),
              "gas a Gas; pressure P_g [Pa]; accommodation (a1, a2), each in (0, 1], or None for the gas's "
              "default.")
         .def_property_readonly("accommodation",
@@ -239,7 +239,7 @@ void bindThermal(py::module_& m)
                  }
                  return g;
              }),
-             py::kw_only(), py::arg("gas") = py::none(), py::arg("pressure") = 101325.0,
+             py::kw_only(), py::arg("gas") = py::none(), py::arg("pressure") = standardAtmosphere,
              py::arg("accommodation") = py::none(), py::arg("emissivity") = py::none(),
              "gas a name ('air'), a Gas or None (vacuum); pressure P_g [Pa]; accommodation (a1, a2), each in "
              "(0, 1], or None for the gas's default; emissivity (e1, e2) for radiation, or None. "

@@ -239,7 +239,7 @@ roughContact::GapSpec readGap(const dictionary& d)
             q.prandtl = p.get<scalar>("prandtl");
             q.meanFreePath = p.get<scalar>("meanFreePath");
             q.referencePressure =
-                p.getOrDefault<scalar>("referencePressure", 101325);
+                p.getOrDefault<scalar>("referencePressure", roughContact::standardAtmosphere);
             q.accommodation = p.get<scalar>("accommodation");
         }
         else
@@ -255,7 +255,7 @@ roughContact::GapSpec readGap(const dictionary& d)
                     << "entry " << e.what() << exit(FatalIOError);
             }
         }
-        gas.pressure = d.getOrDefault<scalar>("pressure", 101325);
+        gas.pressure = d.getOrDefault<scalar>("pressure", roughContact::standardAtmosphere);
         if (d.found("accommodation"))
         {
             const List<scalar> a(d.lookup("accommodation"));

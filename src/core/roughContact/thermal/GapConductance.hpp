@@ -73,7 +73,7 @@ constexpr double stefanBoltzmann = 5.670374419e-8;
 
 struct GasGapSpec {
     GasProperties gas;
-    double pressure = 101325;                      ///< gas pressure P_g [Pa]
+    double pressure = standardAtmosphere;          ///< gas pressure P_g [Pa]
     /// The thermal accommodation coefficients of the two surfaces, in (0, 1]; unset: the gas's
     /// default (GasProperties::accommodation). There is no number meaning "default": 0 is an
     /// error, as any value outside the range (issue 18: 0 and 1e-300, which OpenFOAM reads as

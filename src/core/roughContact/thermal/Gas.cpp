@@ -13,7 +13,7 @@ namespace {
 
 // The reference state of the table: 300 K, 1 atm.
 constexpr double tableTemperature = 300.0;
-constexpr double tablePressure = 101325.0;
+constexpr double tablePressure = standardAtmosphere;
 
 // Karniadakis, Beskok & Aluru, "Microflows and Nanoflows", Table 1.1 (298 K, 1 atm): mean free
 // path, viscosity mu, specific heat c_p and conductivity k of one row; Lambda_0 is scaled to 300 K

@@ -47,6 +47,10 @@
 
 namespace roughContact {
 
+/// One standard atmosphere [Pa]: the gases' reference pressure P_0 and the gap's default gas
+/// pressure (the one place of the number: the dictionary and Python take their defaults from here).
+inline constexpr double standardAtmosphere = 101325.0;
+
 struct GasProperties {
     std::string name;                  ///< "air", or "user" for numbers given
     double conductivity = 0;           ///< k_g [W/(m K)] at referenceTemperature
@@ -55,7 +59,7 @@ struct GasProperties {
     double heatCapacityRatio = 0;      ///< gamma [-]
     double prandtl = 0;                ///< Pr [-]
     double meanFreePath = 0;           ///< Lambda0 [m] at T0 and referencePressure
-    double referencePressure = 101325; ///< P0 [Pa]
+    double referencePressure = standardAtmosphere; ///< P0 [Pa]
     double accommodation = 0;          ///< a typical thermal accommodation coefficient on engineering
                                        ///< metal surfaces (the default for both sides)
 };
