@@ -155,7 +155,9 @@ ArealReadOptions arealReadOptions(const Options& o)
     return ro;
 }
 
-Spectrum surfaceOf(const Options& o)
+// The rules of the surface options among themselves (which option goes with which surface),
+// each error naming the option; the files are read later, by the core (SurfaceSpec).
+static void checkSurfaceOptions(const Options& o)
 {
     if (o.profiles.empty() && o.stride != 1) {
         throw ParameterError("--stride", "subsamples a --profile; there is no profile here");
@@ -186,48 +188,16 @@ Spectrum surfaceOf(const Options& o)
             throw ParameterError("--length", "is set by the areal surface itself (nx dx, ny dy); it is for "
                                              "--spectrum, --power-law and --fractal");
         }
-        // The same surface as the boundary condition's `type areal` (SurfaceSpec::Kind::areal).
-        const ArealReadOptions ro = arealReadOptions(o);
-        const ScanDirection direction = parseScanDirection(o.direction.value_or("x"), "--direction");
-        std::optional<Spectrum> total;
-        for (const std::string& path : o.areals) {
-            const Spectrum s = lineScanSpectrum(readAreal(path, ro).detrended(), direction);
-            total = total ? Spectrum::combine(*total, s) : s;
-        }
-        return *total;
     }
     if (!o.profiles.empty() && o.length) {
         throw ParameterError("--length", "is set by the profile itself (N dx); it is for --spectrum, "
                                          "--power-law and --fractal");
     }
-    if (!o.profiles.empty()) {
-        ProfileReadOptions ro;
-        if (o.units) {
-            ro.units = parseLengthUnit(*o.units); // "" is an unknown unit, not the default
-        }
-        ro.spacing = o.dx;
-        std::optional<Spectrum> total;
-        for (const std::string& path : o.profiles) {
-            const Profile p = readProfile(path, ro).subsampled(o.stride);
-            const Spectrum s = Spectrum::fromProfile(p);
-            total = total ? Spectrum::combine(*total, s) : s;
-        }
-        return *total;
-    }
-    if (!o.spectra.empty()) {
-        std::optional<Spectrum> total;
-        for (const std::string& path : o.spectra) {
-            const Spectrum s = readSpectrum(path, o.length);
-            total = total ? Spectrum::combine(*total, s) : s;
-        }
-        return *total;
-    }
-    if (!o.powerLaw.empty()) {
-        const auto& p = o.powerLaw;
-        return Spectrum::powerLaw(p[0], p[1], p[2], p[3], o.length.value_or(0.0));
-    }
-    const auto& p = o.fractal;
-    return Spectrum::fractal(p[0], p[1], p[2], p[3], o.length.value_or(0.0));
+}
+
+Spectrum surfaceOf(const Options& o)
+{
+    return equivalentSurface(surfaceSpecsOf(o));
 }
 
 // sigma and the mean absolute slope of the surfaces, for the correlations (the same surfaces
@@ -235,30 +205,7 @@ Spectrum surfaceOf(const Options& o)
 // its moments (Roughness.hpp).
 SurfaceRoughness roughnessOf(const Options& o)
 {
-    std::optional<SurfaceRoughness> total;
-    const auto add = [&](const SurfaceRoughness& r) { total = total ? combined(*total, r) : r; };
-    if (!o.areals.empty()) {
-        const ScanDirection direction = parseScanDirection(o.direction.value_or("x"), "--direction");
-        for (const std::string& path : o.areals) {
-            add(arealRoughness(readAreal(path, arealReadOptions(o)), direction));
-        }
-    } else if (!o.profiles.empty()) {
-        ProfileReadOptions ro;
-        if (o.units) {
-            ro.units = parseLengthUnit(*o.units);
-        }
-        ro.spacing = o.dx;
-        for (const std::string& path : o.profiles) {
-            add(profileRoughness(readProfile(path, ro).subsampled(o.stride)));
-        }
-    } else if (!o.spectra.empty()) {
-        for (const std::string& path : o.spectra) {
-            add(spectrumRoughness(readSpectrum(path, o.length)));
-        }
-    } else {
-        add(spectrumRoughness(surfaceOf(o)));
-    }
-    return *total;
+    return equivalentRoughness(surfaceSpecsOf(o));
 }
 
 // One --Sy item: a yield strength [Pa], or none (the solid does not yield: Material::elastic).
@@ -466,7 +413,7 @@ std::optional<double> harmonicConductivityOf(const Options& o, bool conductance)
 // The surfaces as SurfaceSpecs (the boundary condition's description of the same options).
 std::vector<SurfaceSpec> surfaceSpecsOf(const Options& o)
 {
-    surfaceOf(o); // every rule of the surface options (and the files readable) before anything else
+    checkSurfaceOptions(o); // every rule of the surface options before anything is read
     std::vector<SurfaceSpec> out;
     const auto add = [&](SurfaceSpec::Kind kind, const std::string& file) {
         SurfaceSpec s;

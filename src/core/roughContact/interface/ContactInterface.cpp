@@ -70,6 +70,19 @@ SurfaceRoughness SurfaceSpec::roughness() const
     }
 }
 
+SurfaceRoughness equivalentRoughness(const std::vector<SurfaceSpec>& surfaces)
+{
+    if (surfaces.empty() || surfaces.size() > 2) {
+        throw ParameterError("surfaces", "give one equivalent surface or one per side");
+    }
+    std::optional<SurfaceRoughness> total;
+    for (const SurfaceSpec& s : surfaces) {
+        const SurfaceRoughness one = s.roughness();
+        total = total ? combined(*total, one) : one;
+    }
+    return *total;
+}
+
 Spectrum equivalentSurface(const std::vector<SurfaceSpec>& surfaces)
 {
     if (surfaces.empty() || surfaces.size() > 2) {
@@ -149,11 +162,7 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
     in.vickers = spec.vickers;
     in.hardness = conductanceLawHardness(spec.microhardness, materials_);
     if (conductanceLawNeedsRoughness(conductanceLaw_)) {
-        std::optional<SurfaceRoughness> r;
-        for (const SurfaceSpec& s : spec.surfaces) {
-            r = r ? combined(*r, s.roughness()) : s.roughness();
-        }
-        in.roughness = r;
+        in.roughness = equivalentRoughness(spec.surfaces);
     }
     const std::unique_ptr<ConductanceLaw> law = makeConductanceLaw(conductanceLaw_, in);
     table_ = std::make_unique<ContactTable>(*model_, spec.minPressure.value_or(1e-9 * Ep),
@@ -181,11 +190,7 @@ void ContactInterface::buildGap(const InterfaceSpec& spec)
         separation = [table](double P) { return table->meanSeparation(P); };
     } else {
         // The correlation's inputs: the surfaces' combined rms height and the microhardness.
-        std::optional<SurfaceRoughness> r;
-        for (const SurfaceSpec& s : spec.surfaces) {
-            r = r ? combined(*r, s.roughness()) : s.roughness();
-        }
-        sigma = r->sigma;
+        sigma = equivalentRoughness(spec.surfaces).sigma;
         Hc = spec.microhardness ? *spec.microhardness
              : spec.hardness    ? *spec.hardness
                                 : materials_.hardness("the gap's separation (the correlation of sigma and P/H_c)");

@@ -99,6 +99,9 @@ struct InterfaceSpec {
 /// The equivalent surface of one or two surfaces: the spectrum of one, the combination of two
 /// (Spectrum::combine, seed §2.1). ParameterError for none or more than two.
 Spectrum equivalentSurface(const std::vector<SurfaceSpec>& surfaces);
+/// The equivalent roughness of the same surfaces (SurfaceSpec::roughness(); two combined:
+/// Roughness.hpp combined). ParameterError for none or more than two.
+SurfaceRoughness equivalentRoughness(const std::vector<SurfaceSpec>& surfaces);
 
 /// What a boundary condition needs at one face.
 struct FaceContact {

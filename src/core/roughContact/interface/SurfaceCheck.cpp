@@ -310,14 +310,7 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     in.multiscale = &multiscale;
     in.spectrum = &*lawSpectrum;
     in.Eprime = Ep;
-    in.roughness = areal ? [&] {
-        std::optional<SurfaceRoughness> r;
-        for (const SurfaceSpec& s : spec.surfaces) {
-            r = r ? combined(*r, s.roughness()) : s.roughness();
-        }
-        return *r;
-    }()
-                         : spectrumRoughness(*lawSpectrum);
+    in.roughness = areal ? equivalentRoughness(spec.surfaces) : spectrumRoughness(*lawSpectrum);
     in.microhardness = spec.microhardness ? spec.microhardness : out.hardness;
     in.hardness = in.microhardness;
     in.vickers = spec.vickers;
