@@ -48,7 +48,7 @@ TEST(MeasuredAccuracy, IsTheReportsRowForTheLawModelReferenceAndDecade)
     EXPECT_EQ(measuredAccuracy("persson", "hertz", false, 3e-3)->high,
               measuredAccuracy("persson", "jacksonGreen", false, 3e-3)->high);
     EXPECT_FALSE(measuredAccuracy("jacksonBhavnaniFerguson", "jgh", false, 3e-3).has_value());
-    // Nothing measured below the reports' lightest load or beyond 1, nor for
+    // Nothing measured below the reports' lightest load or beyond the largest, nor for
     // cooperMikicYovanovich against the elastic one.
     EXPECT_FALSE(measuredAccuracy("jacksonBhavnaniFerguson", "jacksonGreen", true, 1e-7).has_value());
     EXPECT_FALSE(measuredAccuracy("jacksonBhavnaniFerguson", "jacksonGreen", true, 2.0).has_value());
@@ -56,6 +56,16 @@ TEST(MeasuredAccuracy, IsTheReportsRowForTheLawModelReferenceAndDecade)
     EXPECT_EQ(describeAccuracy(std::nullopt, 1e-7), "not measured at p/(E' h') = 1e-07");
     EXPECT_EQ(describeAccuracy(d, 3e-3),
               "0.19-1.3 of exact (5 surfaces of the engineering-range report, p/(E' h') 0.001 to 0.01)");
+    // The report's top decade holds one load, x = 0.1: the band says so, and claims nothing
+    // beyond it (the default law is 3.05 of exact at x = 0.64 on the Dektak surface, where the
+    // decade's x = 0.1 alone said 0.92-1.11).
+    const auto top = measuredAccuracy("fittedElastoPlastic", "", false, 0.1);
+    ASSERT_TRUE(top.has_value());
+    EXPECT_EQ(describeAccuracy(top, 0.1), "0.92-1.1 of exact (5 surfaces of the engineering-range report, "
+                                          "p/(E' h') = 0.1 only, the largest measured)");
+    EXPECT_FALSE(measuredAccuracy("fittedElastoPlastic", "", false, 0.2).has_value());
+    EXPECT_FALSE(measuredAccuracy("fittedElastoPlastic", "", true, 0.64).has_value());
+    EXPECT_TRUE(measuredAccuracy("fittedElastoPlastic", "", true, 0.09).has_value()); // the decade below: whole
 }
 
 TEST(InterfaceRegime, FromTheDefinitions)

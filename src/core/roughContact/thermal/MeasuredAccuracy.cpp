@@ -30,8 +30,13 @@ std::string describeAccuracy(const std::optional<AccuracyBand>& band, double loa
         return os.str();
     }
     os << band->low << "-" << band->high << " of exact (" << band->surfaces
-       << (band->surfaces == 1 ? " surface" : " surfaces") << " of the " << band->report << ", p/(E' h') " << band->from
-       << " to " << band->to << ")";
+       << (band->surfaces == 1 ? " surface" : " surfaces") << " of the " << band->report << ", p/(E' h') ";
+    if (band->to < 1.01 * band->from) {
+        os << "= " << band->from << " only, the largest measured"; // the top of the report's range
+    } else {
+        os << band->from << " to " << band->to;
+    }
+    os << ")";
     return os.str();
 }
 

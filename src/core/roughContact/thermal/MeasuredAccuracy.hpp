@@ -13,7 +13,9 @@
 namespace roughContact {
 
 struct AccuracyBand {
-    double from = 0.0; ///< the decade of p/(E' h') [from, to) the band was measured in
+    /// The decade of p/(E' h') [from, to) the band was measured in; `to` is below the decade's end
+    /// where the report measured less of it (its top decade: x = 0.1 only).
+    double from = 0.0;
     double to = 0.0;
     double low = 0.0;  ///< the smallest law / exact over the report's surfaces there
     double high = 0.0; ///< the largest
