@@ -162,6 +162,10 @@ static void checkSurfaceOptions(const Options& o)
     if (o.profiles.empty() && o.stride != 1) {
         throw ParameterError("--stride", "subsamples a --profile; there is no profile here");
     }
+    if (o.profiles.empty() && o.areals.empty() && o.units) {
+        throw ParameterError("--units", "is the unit of --profile and --areal matrix files; a --spectrum file, "
+                                        "--power-law and --fractal are in metres");
+    }
     if (o.profiles.empty() && o.areals.empty() && o.dx) {
         throw ParameterError("--dx",
                              "is the spacing of a one-column --profile or an --areal matrix; there is "

@@ -500,6 +500,8 @@ TEST(Cli, BadInputFoundByAHostileUser)
     expectError(p + hertz + " --loads 1e-4,1e-3,1e300", {"load", "1e+300"});
     // A surface too large for the cap: the count and the memory in the message.
     expectError("--power-law 1e-8,1,1,1e9" + hertz + " --loads 1e-4", {"1e+09 frequency levels", "MB"});
+    // --units with a surface in metres: was accepted and ignored (a spectrum in um read as m).
+    expectError("--power-law 1e-8,1,1e3,1e5" + hertz + " --units um --loads 1e-4", {"--units", "metres"});
     // Materials outside the fitted range: was SIGFPE under OpenFOAM, area 0 here.
     expectError(p + " --model jacksonGreen --E 2e11 --nu 0.3 --Sy 1e65 --loads 1e-4", {"S_y/E"});
     // Help is not an error.
