@@ -222,6 +222,40 @@ void readYieldStrength(const std::string& item, Material& m)
     m.Sy = splitNumbers(item, ',', "--Sy").front();
 }
 
+std::vector<Material> solidsOf(const Options& o)
+{
+    if (o.E.empty()) {
+        throw ParameterError("--E", "give --E (with --nu) or --Eprime");
+    }
+    if (o.nu.size() != o.E.size()) {
+        throw ParameterError("--nu", "give one Poisson's ratio per --E value");
+    }
+    if (!o.Sy.empty() && o.Sy.size() != o.E.size()) {
+        throw ParameterError("--Sy", "give one yield strength per --E value");
+    }
+    std::vector<Material> m(o.E.size());
+    for (std::size_t i = 0; i < m.size(); ++i) {
+        m[i].E = o.E[i];
+        m[i].nu = o.nu[i];
+        if (!o.Sy.empty()) {
+            readYieldStrength(o.Sy[i], m[i]);
+        }
+    }
+    return m;
+}
+
+std::pair<std::size_t, std::uint64_t> synthesisOf(const Options& o)
+{
+    // N and SEED as whole numbers, read as integers: a double of 2^64 or more does not convert
+    // to a seed (it was undefined behaviour, and gave seed 0's surface).
+    const std::size_t comma = o.synthesize.find(',');
+    const std::uint64_t n = gridSizeOf(o.synthesize.substr(0, comma), "--synthesize");
+    const auto seed = comma == std::string::npos
+                          ? std::uint64_t(1)
+                          : wholeNumber(o.synthesize.substr(comma + 1), "--synthesize", "the seed SEED");
+    return {static_cast<std::size_t>(n), seed};
+}
+
 ContactMaterials materialsOf(const Options& o)
 {
     if (!o.pressures.empty() && !o.Eprime && o.E.empty()) {
@@ -240,23 +274,7 @@ ContactMaterials materialsOf(const Options& o)
         return ContactMaterials::fromReducedModulus(
             *o.Eprime, o.nu.empty() ? std::nullopt : std::optional<double>(o.nu[0]), y.Sy);
     }
-    if (o.E.empty()) {
-        throw ParameterError("--E", "give --E (with --nu) or --Eprime");
-    }
-    if (o.nu.size() != o.E.size()) {
-        throw ParameterError("--nu", "give one Poisson's ratio per --E value");
-    }
-    if (!o.Sy.empty() && o.Sy.size() != o.E.size()) {
-        throw ParameterError("--Sy", "give one yield strength per --E value");
-    }
-    std::vector<Material> m(o.E.size());
-    for (std::size_t i = 0; i < m.size(); ++i) {
-        m[i].E = o.E[i];
-        m[i].nu = o.nu[i];
-        if (!o.Sy.empty()) {
-            readYieldStrength(o.Sy[i], m[i]);
-        }
-    }
+    const std::vector<Material> m = solidsOf(o);
     return m.size() == 1 ? ContactMaterials::againstRigidFlat(m[0])
                          : ContactMaterials::pair(m[0], m[1], "solid 1", "solid 2");
 }
@@ -341,15 +359,8 @@ std::pair<ArealSurface, bool> arealSurfaceOf(const Options& o)
                              "needs an areal surface: --areal FILE, or --synthesize N[,SEED] with a profile or "
                              "spectrum");
     }
-    // N and SEED as whole numbers, read as integers: a double of 2^64 or more does not convert
-    // to a seed (it was undefined behaviour, and gave seed 0's surface).
-    const std::size_t comma = o.synthesize.find(',');
-    const std::uint64_t nGiven = gridSizeOf(o.synthesize.substr(0, comma), "--synthesize");
-    const auto seed = comma == std::string::npos
-                          ? std::uint64_t(1)
-                          : wholeNumber(o.synthesize.substr(comma + 1), "--synthesize", "the seed SEED");
+    const auto [n, seed] = synthesisOf(o);
     const Spectrum lineScan = surfaceOf(o);
-    const auto n = static_cast<std::size_t>(nGiven);
     // A synthesized surface is periodic: it is solved so (the option is for measured maps).
     ArealSurface synthesized = synthesizeIsotropic(lineScan, n, seed, "synthesized from " + lineScan.source());
     if (o.resample.empty()) {

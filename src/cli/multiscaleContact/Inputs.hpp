@@ -53,6 +53,13 @@ SurfaceRoughness roughnessOf(const Options& o);
 // One --Sy item: a yield strength [Pa], or none (the solid does not yield: Material::elastic).
 void readYieldStrength(const std::string& item, Material& m);
 
+// The solids of --E, --nu, --Sy (one or two; one of each per --E value); ParameterError naming the
+// option otherwise.
+std::vector<Material> solidsOf(const Options& o);
+
+// --synthesize N[,SEED]: the grid size N and the seed (default 1).
+std::pair<std::size_t, std::uint64_t> synthesisOf(const Options& o);
+
 ContactMaterials materialsOf(const Options& o);
 
 // --hardness H or --hardness-from-yield (H = 2.84 S_y): the boundary-element cap and the CMY

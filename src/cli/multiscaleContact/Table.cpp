@@ -13,6 +13,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 using namespace roughContact;
@@ -45,26 +46,11 @@ int runTable(const Options& o)
     InterfaceSpec spec;
     spec.model = "boundaryElement";
     spec.surfaces = surfaceSpecsOf(o);
-    Material sides[2];
-    for (std::size_t i = 0; i < 2; ++i) {
-        sides[i].E = o.E[i];
-        sides[i].nu = o.nu[i];
-        if (!o.Sy.empty()) {
-            if (o.Sy.size() != 2) {
-                throw ParameterError("--Sy", "give one yield strength per --E value (none for one that does not "
-                                             "yield)");
-            }
-            readYieldStrength(o.Sy[i], sides[i]);
-        }
-    }
+    const std::vector<Material> sides = solidsOf(o);
     spec.side1 = sides[0];
     spec.side2 = sides[1];
     if (!o.synthesize.empty()) {
-        const std::size_t comma = o.synthesize.find(',');
-        spec.synthesize = static_cast<std::size_t>(gridSizeOf(o.synthesize.substr(0, comma), "--synthesize"));
-        if (comma != std::string::npos) {
-            spec.seed = wholeNumber(o.synthesize.substr(comma + 1), "--synthesize", "the seed SEED");
-        }
+        std::tie(spec.synthesize, spec.seed) = synthesisOf(o);
     }
     if (o.periodic) {
         spec.periodic = true;

@@ -70,11 +70,18 @@ SurfaceRoughness SurfaceSpec::roughness() const
     }
 }
 
-SurfaceRoughness equivalentRoughness(const std::vector<SurfaceSpec>& surfaces)
+namespace {
+void requireOneOrTwo(const std::vector<SurfaceSpec>& surfaces)
 {
     if (surfaces.empty() || surfaces.size() > 2) {
         throw ParameterError("surfaces", "give one equivalent surface or one per side");
     }
+}
+} // namespace
+
+SurfaceRoughness equivalentRoughness(const std::vector<SurfaceSpec>& surfaces)
+{
+    requireOneOrTwo(surfaces);
     std::optional<SurfaceRoughness> total;
     for (const SurfaceSpec& s : surfaces) {
         const SurfaceRoughness one = s.roughness();
@@ -85,9 +92,7 @@ SurfaceRoughness equivalentRoughness(const std::vector<SurfaceSpec>& surfaces)
 
 Spectrum equivalentSurface(const std::vector<SurfaceSpec>& surfaces)
 {
-    if (surfaces.empty() || surfaces.size() > 2) {
-        throw ParameterError("surfaces", "give one equivalent surface or one per side");
-    }
+    requireOneOrTwo(surfaces);
     std::optional<Spectrum> total;
     for (const SurfaceSpec& s : surfaces) {
         const Spectrum one = s.spectrum();

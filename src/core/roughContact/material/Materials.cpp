@@ -77,14 +77,13 @@ ContactMaterials ContactMaterials::pair(const Material& a, const Material& b, co
     checkMaterial(b, nameB);
     if (a.Sy.has_value() != b.Sy.has_value()) {
         const bool aMissing = !a.Sy;
-        const Material& without = aMissing ? a : b;
         const Material& with = aMissing ? b : a;
-        if (!without.elastic) {
+        const std::string& missing = aMissing ? nameA : nameB;
+        if (!(aMissing ? a : b).elastic) {
             std::ostringstream os;
             os << "is not given, while " << (aMissing ? nameB : nameA) << " has one (S_y = " << *with.Sy
-               << " Pa): give it, or say that " << (aMissing ? nameA : nameB) << " does not yield ("
-               << notYieldingSpelling << ")";
-            throw ParameterError((aMissing ? nameA : nameB) + " yield strength S_y", os.str());
+               << " Pa): give it, or say that " << missing << " does not yield (" << notYieldingSpelling << ")";
+            throw ParameterError(missing + " yield strength S_y", os.str());
         }
     }
     ContactMaterials c;
