@@ -15,6 +15,8 @@
 #include "roughContact/interface/BoundaryElementTable.hpp"
 #include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/interface/InterfaceGap.hpp"
+#include "roughContact/interface/InterfaceSpecReader.hpp"
+#include "roughContact/interface/SpecSource.hpp"
 #include "roughContact/io/Units.hpp"
 #include "roughContact/material/Materials.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
@@ -34,14 +36,55 @@ namespace roughcontact_py {
 
 namespace {
 
-/// A SurfaceSpec given by its spectrum's parameters (power law, fractal) and length.
-SurfaceSpec parametricSurface(SurfaceSpec::Kind kind, std::vector<double> parameters, std::optional<double> length)
+/// Python's name of an entry: its keyword argument (snake_case; a surface's file is `path`).
+std::string argumentOf(const std::string& key)
 {
-    SurfaceSpec s;
-    s.kind = kind;
-    s.parameters = std::move(parameters);
-    s.length = length;
-    return s;
+    if (key == "file") {
+        return "path";
+    }
+    std::string out;
+    for (char c : key) {
+        if (c >= 'A' && c <= 'Z') {
+            out += '_';
+            out += static_cast<char>(c - 'A' + 'a');
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
+/// The keyword arguments given (not None) as a specification's entries, for the core's reader.
+SpecValues arguments(const std::string& context)
+{
+    return SpecValues(context, argumentOf);
+}
+
+template <class T>
+void setIf(SpecValues& v, const std::string& key, const std::optional<T>& value)
+{
+    if (value) {
+        v.set(key, *value);
+    }
+}
+
+/// A surface through the core's reader of a surface (InterfaceSpecReader.hpp): the same rules as
+/// the dictionary's surface entry and the CLI's surface options.
+SurfaceSpec surfaceOf(const SpecValues& v)
+{
+    return readSurfaceSpec(v);
+}
+
+SpecValues parametric(const char* type, const char* const (&keys)[4], const double (&values)[4],
+                      std::optional<double> length)
+{
+    SpecValues v = arguments(std::string("SurfaceSpec.") + type);
+    v.set("type", std::string(type));
+    for (std::size_t i = 0; i < 4; ++i) {
+        v.set(keys[i], values[i]);
+    }
+    setIf(v, "length", length);
+    return v;
 }
 
 } // namespace
@@ -54,29 +97,40 @@ InterfaceSpec interfaceSpec(const std::vector<SurfaceSpec>& surfaces, const Mate
                             std::optional<bool> periodic, std::optional<double> hardness, bool hardnessFromYield,
                             std::size_t bemPointsPerDecade, std::optional<GapSpec> gap, std::optional<std::string> detrend)
 {
+    // The parts are objects already read (SurfaceSpec and GapSpec through the core's reader,
+    // Material checked by the pair); the settings through the core's reader of them.
     InterfaceSpec s;
     s.surfaces = surfaces;
     s.side1 = side1;
     s.side2 = side2;
-    s.model = model;
-    s.conductanceLaw = conductance;
-    s.microhardness = microhardness;
-    if (vickers) {
-        s.vickers = VickersCoefficients{vickers->first, vickers->second};
-    }
-    s.minPressure = minPressure;
-    s.maxPressure = maxPressure;
-    s.pointsPerDecade = pointsPerDecade;
-    s.synthesize = synthesize;
-    s.seed = seed;
-    s.periodic = periodic;
-    s.hardness = hardness;
-    s.hardnessFromYield = hardnessFromYield;
-    s.bemPointsPerDecade = bemPointsPerDecade;
     s.gap = gap;
-    if (detrend) {
-        s.detrend = parseDetrend(*detrend, "detrend");
+    SpecValues v = arguments("ContactInterface");
+    v.set("model", model);
+    if (!conductance.empty()) {
+        v.set("conductance", conductance);
     }
+    setIf(v, "microhardness", microhardness);
+    if (vickers) {
+        v.set("vickers", std::vector<double>{vickers->first, vickers->second});
+    }
+    setIf(v, "minPressure", minPressure);
+    setIf(v, "maxPressure", maxPressure);
+    if (synthesize) {
+        v.set("synthesize", std::uint64_t(*synthesize));
+    }
+    if (synthesize || seed != 1) {
+        v.set("seed", seed);
+    }
+    setIf(v, "periodic", periodic);
+    setIf(v, "hardness", hardness);
+    if (hardnessFromYield) {
+        v.set("hardnessFromYield", true);
+    }
+    setIf(v, "detrend", detrend);
+    readInterfaceSettings(v, s);
+    // Python has an argument for each table's points (the dictionary one entry, for the model named).
+    s.pointsPerDecade = pointsPerDecade;
+    s.bemPointsPerDecade = bemPointsPerDecade;
     return s;
 }
 
@@ -89,37 +143,35 @@ void bindInterface(py::module_& m)
             "profile",
             [](const std::string& path, std::optional<std::string> units, std::optional<double> spacing,
                std::size_t stride) {
-                SurfaceSpec s;
-                s.kind = SurfaceSpec::Kind::profile;
-                s.file = path;
-                s.profileOptions.units = unitsOf(units);
-                s.profileOptions.spacing = spacing;
-                s.stride = stride;
-                return s;
+                SpecValues v = arguments("SurfaceSpec.profile");
+                v.set("type", std::string("profile")).set("file", path);
+                setIf(v, "units", units);
+                setIf(v, "spacing", spacing);
+                v.set("stride", std::uint64_t(stride));
+                return surfaceOf(v);
             },
             py::arg("path"), py::arg("units") = py::none(), py::arg("spacing") = py::none(), py::arg("stride") = 1,
             "A profile file (read_profile's units and spacing), every stride-th sample.")
         .def_static(
             "spectrum",
             [](const std::string& path, std::optional<double> length) {
-                SurfaceSpec s;
-                s.kind = SurfaceSpec::Kind::spectrum;
-                s.file = path;
-                s.length = length;
-                return s;
+                SpecValues v = arguments("SurfaceSpec.spectrum");
+                v.set("type", std::string("spectrum")).set("file", path);
+                setIf(v, "length", length);
+                return surfaceOf(v);
             },
             py::arg("path"), py::arg("length") = py::none(), "A spectrum table file; length [m].")
         .def_static(
             "power_law",
             [](double bm, double mm, double fmin, double fmax, std::optional<double> length) {
-                return parametricSurface(SurfaceSpec::Kind::powerLaw, {bm, mm, fmin, fmax}, length);
+                return surfaceOf(parametric("powerLaw", {"bm", "m", "fmin", "fmax"}, {bm, mm, fmin, fmax}, length));
             },
             py::arg("bm"), py::arg("m"), py::arg("fmin"), py::arg("fmax"), py::arg("length") = py::none(),
             "A power-law spectrum bm f^-m [m], fmin, fmax [1/m], length [m].")
         .def_static(
             "fractal",
             [](double D, double G, double fmin, double fmax, std::optional<double> length) {
-                return parametricSurface(SurfaceSpec::Kind::fractal, {D, G, fmin, fmax}, length);
+                return surfaceOf(parametric("fractal", {"D", "G", "fmin", "fmax"}, {D, G, fmin, fmax}, length));
             },
             py::arg("D"), py::arg("G"), py::arg("fmin"), py::arg("fmax"), py::arg("length") = py::none(),
             "A Weierstrass-Mandelbrot spectrum: D, G [m], fmin, fmax [1/m], length [m].")
@@ -127,15 +179,13 @@ void bindInterface(py::module_& m)
             "areal",
             [](const std::string& path, std::optional<std::string> units, std::optional<double> dx,
                std::optional<double> dy, bool fillInvalid, const std::string& direction) {
-                SurfaceSpec s;
-                s.kind = SurfaceSpec::Kind::areal;
-                s.file = path;
-                s.arealOptions.units = unitsOf(units);
-                s.arealOptions.dx = dx;
-                s.arealOptions.dy = dy;
-                s.arealOptions.fillInvalid = fillInvalid;
-                s.direction = parseScanDirection(direction);
-                return s;
+                SpecValues v = arguments("SurfaceSpec.areal");
+                v.set("type", std::string("areal")).set("file", path);
+                setIf(v, "units", units);
+                setIf(v, "dx", dx);
+                setIf(v, "dy", dy);
+                v.set("fillInvalid", fillInvalid).set("direction", direction);
+                return surfaceOf(v);
             },
             py::arg("path"), py::arg("units") = py::none(), py::arg("dx") = py::none(), py::arg("dy") = py::none(),
             py::arg("fill_invalid") = false, py::arg("direction") = "x",

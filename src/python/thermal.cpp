@@ -14,6 +14,8 @@
 
 #include "roughContact/Error.hpp"
 #include "roughContact/interface/ContactInterface.hpp"
+#include "roughContact/interface/InterfaceSpecReader.hpp"
+#include "roughContact/interface/SpecSource.hpp"
 #include "roughContact/surface/Roughness.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
@@ -221,21 +223,37 @@ void bindThermal(py::module_& m)
                         "dictionary's gap entry).")
         .def(py::init([](const py::object& gas, double pressure, std::optional<std::pair<double, double>> accommodation,
                          std::optional<std::pair<double, double>> emissivity) {
-                 GapSpec g;
-                 if (!gas.is_none()) {
-                     const GasProperties props = py::isinstance<py::str>(gas) ? gasByName(gas.cast<std::string>())
-                                                                              : gas.cast<GasProperties>();
-                     g.gas = GasGapSpec{props, pressure, std::nullopt, std::nullopt};
-                     if (accommodation) {
-                         g.gas->accommodation1 = accommodation->first;
-                         g.gas->accommodation2 = accommodation->second;
-                     }
-                 } else if (accommodation) {
-                     throw ParameterError("accommodation", "is for a gas; this gap has none (gas=None)");
+                 // Through the core's reader of a gap (InterfaceSpecReader.hpp): the dictionary's
+                 // rules. A Gas object goes in as its properties and keeps its name.
+                 SpecValues v("GapSpec", [](const std::string& key) { return key; });
+                 std::optional<GasProperties> object;
+                 if (py::isinstance<py::str>(gas)) {
+                     v.set("gas", gas.cast<std::string>());
+                 } else if (!gas.is_none()) {
+                     object = gas.cast<GasProperties>();
+                     SpecValues p("GapSpec gas", [](const std::string& key) { return "gas." + key; });
+                     p.set("conductivity", object->conductivity)
+                         .set("conductivityExponent", object->conductivityExponent)
+                         .set("referenceTemperature", object->referenceTemperature)
+                         .set("heatCapacityRatio", object->heatCapacityRatio)
+                         .set("prandtl", object->prandtl)
+                         .set("meanFreePath", object->meanFreePath)
+                         .set("referencePressure", object->referencePressure)
+                         .set("accommodation", object->accommodation);
+                     v.set("gas", std::make_shared<const SpecValues>(p));
+                 }
+                 if (!gas.is_none() || pressure != standardAtmosphere) {
+                     v.set("pressure", pressure);
+                 }
+                 if (accommodation) {
+                     v.set("accommodation", std::vector<double>{accommodation->first, accommodation->second});
                  }
                  if (emissivity) {
-                     g.emissivity1 = emissivity->first;
-                     g.emissivity2 = emissivity->second;
+                     v.set("emissivity", std::vector<double>{emissivity->first, emissivity->second});
+                 }
+                 GapSpec g = readGapSpec(v);
+                 if (object) {
+                     g.gas->gas.name = object->name;
                  }
                  return g;
              }),

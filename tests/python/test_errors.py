@@ -50,7 +50,6 @@ def test_bad_file_content_same_message_as_the_cli(tmp_path, cli):
      ["--model", "hertz", *STEEL_ARGS, "--loads", "1e5"]),
     (lambda s: rc.ConductanceLaw("noSuchLaw", model=rc.Model("hertz", s, rc.Material(**STEEL))),
      ["--model", "hertz", *STEEL_ARGS, "--conductance-law", "noSuchLaw"]),
-    (lambda s: rc.read_profile(STANDIN, units="inch"), ["--model", "hertz", *STEEL_ARGS, "--units", "inch"]),
 ])
 def test_bad_parameter_same_message_as_the_cli(cli, python, args):
     spectrum = rc.Spectrum.from_profile(rc.read_profile(STANDIN))
@@ -63,6 +62,16 @@ def test_bad_parameter_same_message_as_the_cli(cli, python, args):
     assert r.status == 1 and r.out == ""
     assert r.error() == str(e.value)
     assert str(e.value).startswith(e.value.parameter + ": ")
+
+
+def test_bad_unit_same_message_as_the_cli_naming_each_its_own_way(cli):
+    # The same rule and words (parseLengthUnit); the CLI names its option, Python its argument.
+    with pytest.raises(rc.ParameterError) as e:
+        rc.read_profile(STANDIN, units="inch")
+    assert str(e.value) == "units: unknown unit 'inch'; use m, um or nm"
+    r = cli("--profile", STANDIN, "--model", "hertz", *STEEL_ARGS, "--units", "inch", "--loads", "1e-4")
+    assert r.status == 1 and r.out == ""
+    assert r.error() == "--" + str(e.value)
 
 
 def test_parameter_errors_in_vectorized_calls():

@@ -4,6 +4,8 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
 #include "roughContact/interface/InterfaceRegime.hpp"
+#include "roughContact/interface/InterfaceSpecReader.hpp"
+#include "roughContact/interface/SpecSource.hpp"
 #include "roughContact/interface/SurfaceCheck.hpp"
 #include "roughContact/io/ArealReader.hpp"
 #include "roughContact/io/Numbers.hpp"
@@ -142,63 +144,6 @@ std::vector<double> loadsOf(const Options& o, double Ep, std::vector<double>* gi
     return out;
 }
 
-// How to read the --areal files: the same as the boundary condition's `type areal`.
-ArealReadOptions arealReadOptions(const Options& o)
-{
-    ArealReadOptions ro;
-    if (o.units) {
-        ro.units = parseLengthUnit(*o.units);
-    }
-    ro.dx = o.dx;
-    ro.dy = o.dy;
-    ro.fillInvalid = o.fillInvalid;
-    return ro;
-}
-
-// The rules of the surface options among themselves (which option goes with which surface),
-// each error naming the option; the files are read later, by the core (SurfaceSpec).
-static void checkSurfaceOptions(const Options& o)
-{
-    if (o.profiles.empty() && o.stride != 1) {
-        throw ParameterError("--stride", "subsamples a --profile; there is no profile here");
-    }
-    if (o.profiles.empty() && o.areals.empty() && o.units) {
-        throw ParameterError("--units", "is the unit of --profile and --areal matrix files; a --spectrum file, "
-                                        "--power-law and --fractal are in metres");
-    }
-    if (o.profiles.empty() && o.areals.empty() && o.dx) {
-        throw ParameterError("--dx",
-                             "is the spacing of a one-column --profile or an --areal matrix; there is "
-                             "neither here");
-    }
-    if (o.areals.empty()) {
-        if (o.dy) {
-            throw ParameterError("--dy",
-                                 "is the y spacing of an --areal matrix; there is no areal surface here");
-        }
-        if (o.direction) {
-            throw ParameterError("--direction",
-                                 "chooses the line scans of an --areal surface; there is none here");
-        }
-        if (o.fillInvalid) {
-            throw ParameterError("--fill-invalid", "is for an --areal X3P file; there is none here");
-        }
-    }
-    if (!o.areals.empty()) {
-        if (o.stride != 1) {
-            throw ParameterError("--stride", "subsamples a --profile; an --areal surface is used whole");
-        }
-        if (o.length) {
-            throw ParameterError("--length", "is set by the areal surface itself (nx dx, ny dy); it is for "
-                                             "--spectrum, --power-law and --fractal");
-        }
-    }
-    if (!o.profiles.empty() && o.length) {
-        throw ParameterError("--length", "is set by the profile itself (N dx); it is for --spectrum, "
-                                         "--power-law and --fractal");
-    }
-}
-
 Spectrum surfaceOf(const Options& o)
 {
     return equivalentSurface(surfaceSpecsOf(o));
@@ -212,15 +157,15 @@ SurfaceRoughness roughnessOf(const Options& o)
     return equivalentRoughness(surfaceSpecsOf(o));
 }
 
-// One --Sy item: a yield strength [Pa], or none (the solid does not yield: Material::elastic).
-void readYieldStrength(const std::string& item, Material& m)
+namespace {
+
+// How an entry of a solid is written on the command line (the reader names it so).
+std::string solidOption(const std::string& key)
 {
-    if (item == "none") {
-        m.elastic = true;
-        return;
-    }
-    m.Sy = splitNumbers(item, ',', "--Sy").front();
+    return "--" + key;
 }
+
+} // namespace
 
 std::vector<Material> solidsOf(const Options& o)
 {
@@ -233,13 +178,17 @@ std::vector<Material> solidsOf(const Options& o)
     if (!o.Sy.empty() && o.Sy.size() != o.E.size()) {
         throw ParameterError("--Sy", "give one yield strength per --E value");
     }
-    std::vector<Material> m(o.E.size());
-    for (std::size_t i = 0; i < m.size(); ++i) {
-        m[i].E = o.E[i];
-        m[i].nu = o.nu[i];
+    // Each solid through the core's reader of a solid (InterfaceSpecReader.hpp: the rules of
+    // E, nu and Sy, "none" included), named "solid 1", "solid 2" and its options.
+    std::vector<Material> m;
+    for (std::size_t i = 0; i < o.E.size(); ++i) {
+        // (one solid is against a rigid flat: "material", as ContactMaterials::againstRigidFlat)
+        SpecValues solid(o.E.size() == 1 ? "material" : "solid " + std::to_string(i + 1), solidOption);
+        solid.set("E", o.E[i]).set("nu", o.nu[i]);
         if (!o.Sy.empty()) {
-            readYieldStrength(o.Sy[i], m[i]);
+            solid.set("Sy", o.Sy[i]);
         }
+        m.push_back(readMaterial(solid));
     }
     return m;
 }
@@ -269,7 +218,9 @@ ContactMaterials materialsOf(const Options& o)
         }
         Material y;
         if (!o.Sy.empty()) {
-            readYieldStrength(o.Sy[0], y);
+            SpecValues solid("the yielding solid", solidOption);
+            solid.set("Sy", o.Sy[0]);
+            readYieldStrength(solid, y);
         }
         return ContactMaterials::fromReducedModulus(
             *o.Eprime, o.nu.empty() ? std::nullopt : std::optional<double>(o.nu[0]), y.Sy);
@@ -341,11 +292,14 @@ std::pair<ArealSurface, bool> arealSurfaceOf(const Options& o)
             throw ParameterError("--direction", "chooses line scans for the line-scan models; boundaryElement "
                                                 "uses the whole map");
         }
-        const ArealReadOptions ro = arealReadOptions(o);
         std::optional<ArealSurface> total;
-        for (const std::string& path : o.areals) {
+        for (const SurfaceSpec& spec : surfaceSpecsOf(o)) {
+            if (spec.kind != SurfaceSpec::Kind::areal) {
+                throw ParameterError("--model boundaryElement", "solves --areal maps, or a surface --synthesize'd "
+                                                                "from a profile or spectrum; not both");
+            }
             // As read: BoundaryElementModel detrends the composite (--detrend).
-            const ArealSurface one = readAreal(path, ro);
+            const ArealSurface one = readAreal(spec.file, spec.arealOptions);
             total = total ? compositeSurface(*total, one) : one;
         }
         if (!o.resample.empty()) {
@@ -425,41 +379,94 @@ std::optional<double> harmonicConductivityOf(const Options& o, bool conductance)
     return harmonicMeanConductivity(*o.k1, *o.k2);
 }
 
-// The surfaces as SurfaceSpecs (the boundary condition's description of the same options).
+// The surfaces as SurfaceSpecs, read by the core's reader of a surface (InterfaceSpecReader.hpp)
+// from the options as a dictionary's entries, each named by its option. An option goes to the
+// surfaces whose type takes it (--units to a profile and an areal map, not to a spectrum beside
+// them); one that no surface takes is the core's error for the first surface.
 std::vector<SurfaceSpec> surfaceSpecsOf(const Options& o)
 {
-    checkSurfaceOptions(o); // every rule of the surface options before anything is read
-    std::vector<SurfaceSpec> out;
-    const auto add = [&](SurfaceSpec::Kind kind, const std::string& file) {
-        SurfaceSpec s;
-        s.kind = kind;
-        s.file = file;
-        if (o.units) {
-            s.profileOptions.units = parseLengthUnit(*o.units);
+    struct Given {
+        std::string key;       ///< the entry's name in a dictionary
+        std::string arealKey;  ///< ... for an areal surface (--dx: a profile's spacing, a map's dx)
+        SpecValues::Value value;
+        std::string option;
+    };
+    std::vector<Given> given;
+    if (o.units) {
+        given.push_back({"units", "units", *o.units, "--units"});
+    }
+    if (o.dx) {
+        given.push_back({"spacing", "dx", *o.dx, "--dx"});
+    }
+    if (o.dy) {
+        given.push_back({"dy", "dy", *o.dy, "--dy"});
+    }
+    if (o.fillInvalid) {
+        given.push_back({"fillInvalid", "fillInvalid", true, "--fill-invalid"});
+    }
+    if (o.direction) {
+        given.push_back({"direction", "direction", *o.direction, "--direction"});
+    }
+    if (o.stride != 1) {
+        given.push_back({"stride", "stride", std::uint64_t(o.stride), "--stride"});
+    }
+    if (o.length) {
+        given.push_back({"length", "length", *o.length, "--length"});
+    }
+
+    std::vector<SpecValues> surfaces;
+    const auto add = [&](const char* type, const std::string& option, const std::string& file) {
+        SpecValues v(option + " " + file);
+        v.set("type", std::string(type), option);
+        if (!file.empty()) {
+            v.set("file", file, option);
         }
-        s.profileOptions.spacing = o.dx;
-        s.arealOptions = arealReadOptions(o);
-        s.direction = parseScanDirection(o.direction.value_or("x"), "--direction");
-        s.stride = o.stride;
-        s.length = o.length;
-        out.push_back(s);
+        surfaces.push_back(v);
+        return &surfaces.back();
     };
     for (const std::string& f : o.profiles) {
-        add(SurfaceSpec::Kind::profile, f);
+        add("profile", "--profile", f);
     }
     for (const std::string& f : o.areals) {
-        add(SurfaceSpec::Kind::areal, f);
+        add("areal", "--areal", f);
     }
     for (const std::string& f : o.spectra) {
-        add(SurfaceSpec::Kind::spectrum, f);
+        add("spectrum", "--spectrum", f);
     }
     if (!o.powerLaw.empty()) {
-        add(SurfaceSpec::Kind::powerLaw, "");
-        out.back().parameters = o.powerLaw;
+        SpecValues* v = add("powerLaw", "--power-law", "");
+        const char* keys[] = {"bm", "m", "fmin", "fmax"};
+        for (std::size_t i = 0; i < o.powerLaw.size() && i < 4; ++i) {
+            v->set(keys[i], o.powerLaw[i], "--power-law");
+        }
     }
     if (!o.fractal.empty()) {
-        add(SurfaceSpec::Kind::fractal, "");
-        out.back().parameters = o.fractal;
+        SpecValues* v = add("fractal", "--fractal", "");
+        const char* keys[] = {"D", "G", "fmin", "fmax"};
+        for (std::size_t i = 0; i < o.fractal.size() && i < 4; ++i) {
+            v->set(keys[i], o.fractal[i], "--fractal");
+        }
+    }
+    for (const Given& g : given) {
+        bool taken = false;
+        for (SpecValues& v : surfaces) {
+            const SurfaceSpec::Kind kind = parseSurfaceKind(v.word("type"));
+            const std::string& key = kind == SurfaceSpec::Kind::areal ? g.arealKey : g.key;
+            const std::vector<std::string>& entries = surfaceEntries(kind);
+            if (std::find(entries.begin(), entries.end(), key) != entries.end()) {
+                v.set(key, g.value, g.option);
+                taken = true;
+            }
+        }
+        if (!taken && !surfaces.empty()) {
+            SpecValues first = surfaces.front();
+            first.set(g.key, g.value, g.option);
+            readSurfaceSpec(first); // throws: no surface of this run takes the option
+        }
+    }
+    std::vector<SurfaceSpec> out;
+    for (const SpecValues& v : surfaces) {
+        out.push_back(readSurfaceSpec(v));
     }
     return out;
 }

@@ -40,18 +40,12 @@ std::uint64_t wholeNumber(const std::string& text, const std::string& option, co
 // `given` (optional) receives the --pressures as given, one per load.
 std::vector<double> loadsOf(const Options& o, double Ep, std::vector<double>* given = nullptr);
 
-// How to read the --areal files: the same as the boundary condition's `type areal`.
-ArealReadOptions arealReadOptions(const Options& o);
-
 Spectrum surfaceOf(const Options& o);
 
 // sigma and the mean absolute slope of the surfaces, for the correlations (the same surfaces
 // surfaceOf reads; two combined): a profile's and a map's from their heights, a spectrum's from
 // its moments (Roughness.hpp).
 SurfaceRoughness roughnessOf(const Options& o);
-
-// One --Sy item: a yield strength [Pa], or none (the solid does not yield: Material::elastic).
-void readYieldStrength(const std::string& item, Material& m);
 
 // The solids of --E, --nu, --Sy (one or two; one of each per --E value); ParameterError naming the
 // option otherwise.

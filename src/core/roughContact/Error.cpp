@@ -25,7 +25,7 @@ InputError::InputError(const std::string& file, long line, const std::string& me
 }
 
 ParameterError::ParameterError(const std::string& parameter, const std::string& message)
-    : std::invalid_argument(parameter + ": " + message), parameter_(parameter)
+    : std::invalid_argument(parameter + ": " + message), parameter_(parameter), message_(message)
 {
 }
 

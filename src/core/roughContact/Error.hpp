@@ -32,9 +32,12 @@ public:
     ParameterError(const std::string& parameter, const std::string& message);
 
     const std::string& parameter() const noexcept { return parameter_; }
+    /// The message without the name.
+    const std::string& message() const noexcept { return message_; }
 
 private:
     std::string parameter_;
+    std::string message_;
 };
 
 /// Throws ParameterError unless value is finite and > 0.

@@ -94,6 +94,10 @@ struct InterfaceSpec {
     /// The gap beside the contact (gas, radiation: InterfaceGap.hpp); none: nothing crosses
     /// where the surfaces do not touch.
     std::optional<GapSpec> gap;
+
+    /// Front-ends: check the laws on this surface at start-up (checkSurface, SurfaceCheck.hpp)
+    /// and warn when the chosen one misses the exact model. ContactInterface does not use it.
+    bool check = false;
 };
 
 /// The equivalent surface of one or two surfaces: the spectrum of one, the combination of two

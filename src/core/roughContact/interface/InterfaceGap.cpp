@@ -20,12 +20,7 @@ double emissivity(const char* name, double e)
     return e;
 }
 
-} // namespace
-
-InterfaceGap::InterfaceGap(const GapSpec& spec, std::function<double(double)> separation, double sigma, double Hc,
-                           double firstTouchPressure)
-    : spec_(spec), separation_(std::move(separation)), sigma_(sigma), Hc_(Hc), firstTouch_(0.0),
-      radiationFactor_(0.0)
+void checkEmissivities(const GapSpec& spec)
 {
     if (spec.emissivity1.has_value() != spec.emissivity2.has_value()) {
         throw ParameterError("gap emissivity", "give both sides' emissivities (radiation) or neither");
@@ -33,10 +28,30 @@ InterfaceGap::InterfaceGap(const GapSpec& spec, std::function<double(double)> se
     if (spec.emissivity1) {
         emissivity("gap emissivity e1", *spec.emissivity1);
         emissivity("gap emissivity e2", *spec.emissivity2);
-        radiationFactor_ = stefanBoltzmann * greyFactor(*spec.emissivity1, *spec.emissivity2);
     }
     if (!spec.gas && !spec.emissivity1) {
         throw ParameterError("gap", "has neither a gas nor emissivities: nothing crosses it (leave the gap out)");
+    }
+}
+
+} // namespace
+
+void checkGapSpec(const GapSpec& spec)
+{
+    checkEmissivities(spec);
+    if (spec.gas) {
+        GasGap check(*spec.gas);
+    }
+}
+
+InterfaceGap::InterfaceGap(const GapSpec& spec, std::function<double(double)> separation, double sigma, double Hc,
+                           double firstTouchPressure)
+    : spec_(spec), separation_(std::move(separation)), sigma_(sigma), Hc_(Hc), firstTouch_(0.0),
+      radiationFactor_(0.0)
+{
+    checkEmissivities(spec);
+    if (spec.emissivity1) {
+        radiationFactor_ = stefanBoltzmann * greyFactor(*spec.emissivity1, *spec.emissivity2);
     }
     if (spec.gas) {
         gas_.emplace(*spec.gas);

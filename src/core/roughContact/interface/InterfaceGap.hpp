@@ -39,6 +39,11 @@ struct GapSpec {
     std::optional<double> emissivity2;
 };
 
+/// The rules of a gap description, for a reader before anything is built (InterfaceGap checks
+/// the same): both emissivities in (0, 1] or neither; a gas or radiation; the gas's properties,
+/// pressure and accommodation coefficients (GasGap). ParameterError naming the entry.
+void checkGapSpec(const GapSpec& spec);
+
 class InterfaceGap {
 public:
     /// separation: the contact model's Y(P) [m] for P > 0, or an empty function (then the
