@@ -9,6 +9,7 @@
 #include "error.H"
 #include "IOstreams.H"
 #include "Pstream.H"
+#include "Time.H"
 
 #include "roughContact/interface/BoundaryElementTable.hpp"
 #include "roughContact/interface/InterfaceSpecReader.hpp"
@@ -19,10 +20,9 @@
 
 #include <cmath>
 #include <limits>
-#include <map>
-#include <mutex>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace Foam
 {
@@ -147,8 +147,55 @@ roughContact::BoundaryElementTablePoints boundaryElementPoints
 } // End anonymous namespace
 
 
+defineTypeNameAndDebug(contactInterfaces, 0);
+
+
+contactInterfaces::contactInterfaces(const IOobject& io)
+:
+    regIOobject(io)
+{}
+
+
+contactInterfaces& contactInterfaces::New(const objectRegistry& db)
+{
+    const word name("thermalContactInterfaces");
+    if (!db.foundObject<contactInterfaces>(name))
+    {
+        contactInterfaces* p = new contactInterfaces
+        (
+            IOobject
+            (
+                name, db.time().constant(), db,
+                IOobject::NO_READ, IOobject::NO_WRITE
+            )
+        );
+        p->store();
+    }
+    return db.lookupObjectRef<contactInterfaces>(name);
+}
+
+
+std::shared_ptr<const roughContact::ContactInterface>
+contactInterfaces::find(const word& key) const
+{
+    const auto i = table_.find(key);
+    return i == table_.end() ? nullptr : i->second;
+}
+
+
+void contactInterfaces::insert
+(
+    const word& key,
+    std::shared_ptr<const roughContact::ContactInterface> iface
+)
+{
+    table_[key] = std::move(iface);
+}
+
+
 std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
 (
+    const objectRegistry& db,
     const dictionary& parent,
     const word& name,
     const fileName& dictFile,
@@ -156,15 +203,14 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
     const string& who
 )
 {
-    static std::mutex mutex;
-    static std::map<std::string, std::shared_ptr<const roughContact::ContactInterface>> cache;
-
-    const std::string key = dictFile + "::" + name;
-    std::lock_guard<std::mutex> lock(mutex);
-    const auto found = cache.find(key);
-    if (found != cache.end())
+    // Built once per entry and file, shared by both sides and every patch
+    // that names it: an object on the registry that holds the dictionary
+    // (the case's Time), living as long as the run.
+    contactInterfaces& shared = contactInterfaces::New(db);
+    const word key = dictFile + "::" + name;
+    if (const auto found = shared.find(key))
     {
-        return found->second;
+        return found;
     }
 
     const dictionary& dict = parent.subDict(name);
@@ -249,7 +295,7 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
                     << " without it" << endl;
             }
         }
-        cache.emplace(key, iface);
+        shared.insert(key, iface);
         return iface;
     }
     catch (const IOerror& e)

@@ -12,16 +12,12 @@
 #include "mappedPatchBase.H"
 #include "IOdictionary.H"
 #include "StringStream.H"
-#include "OSspecific.H"
 
-#include "roughContact/interface/InterfaceMonitor.hpp"
 #include "roughContact/thermal/InterfaceCoupling.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <exception>
-#include <fstream>
-#include <set>
 #include <string>
 
 // An error found at run time (not while reading the dictionary): FatalIOError
@@ -33,23 +29,6 @@
     )
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-    //- The fields the condition writes, in one list: name and dimensions.
-    //  The constant-h mode writes the first only; gapConductance is written
-    //  where the interface has a gap.
-    enum outputField
-    {
-        outConductance, outAreaFraction, outPressure, outState, outGap, nOutputs
-    };
-    const char* const outputNames[nOutputs] =
-    {
-        "contactConductance", "contactAreaFraction", "contactPressure",
-        "contactState", "gapConductance"
-    };
-}
-
 
 namespace
 {
@@ -183,7 +162,8 @@ void Foam::thermalContactResistanceFvPatchScalarField::readContact
     }
     interface_ = contactInterfaceFromDict
     (
-        props, contactName_, props.objectPath(), runTime.globalPath(), who()
+        runTime, props, contactName_, props.objectPath(), runTime.globalPath(),
+        who()
     );
     try
     {
@@ -433,201 +413,13 @@ Foam::thermalContactResistanceFvPatchScalarField::checkedKappaMethod
 }
 
 
-void Foam::thermalContactResistanceFvPatchScalarField::storeOutput() const
+const Foam::thermalContactResistanceFvPatchScalarField&
+Foam::thermalContactResistanceFvPatchScalarField::neighbour() const
 {
-    const fvMesh& mesh = patch().boundaryMesh().mesh();
-    const label patchi = patch().index();
-    const dimensionSet hDims(dimPower/dimArea/dimTemperature);
-    const dimensionSet dims[nOutputs] =
-        {hDims, dimless, dimPressure, dimless, hDims};
-    const scalarField* values[nOutputs] =
-    {
-        &conductance_, &areaFraction_, &contactPressure_, &contactState_,
-        &gapConductance_
-    };
-    const bool gap = mode_ == conductanceMode::contact && interface_->hasGap();
-    for (label k = 0; k < nOutputs; ++k)
-    {
-        if ((mode_ == conductanceMode::constantH && k != outConductance) || (k == outGap && !gap))
-        {
-            continue;
-        }
-        if (!mesh.foundObject<volScalarField>(outputNames[k]))
-        {
-            volScalarField* f = new volScalarField
-            (
-                IOobject
-                (
-                    outputNames[k],
-                    mesh.time().timeName(),
-                    mesh,
-                    IOobject::NO_READ,
-                    IOobject::AUTO_WRITE
-                ),
-                mesh,
-                dimensionedScalar(dims[k], Zero)
-            );
-            f->store();
-        }
-        const_cast<volScalarField&>
-        (
-            mesh.lookupObject<volScalarField>(outputNames[k])
-        ).boundaryFieldRef()[patchi] = *values[k];
-    }
-}
-
-
-::roughContact::CouplingSummary
-Foam::thermalContactResistanceFvPatchScalarField::summary() const
-{
-    ::roughContact::CouplingSummary s;
-    if (coupling_.state.size() == size_t(size()))
-    {
-        s.add(coupling_, patch().magSf().cdata(), totalConductance_.cdata());
-    }
-    // Over all processors: sums, and the extremes where there are any.
-    const label nPartialHere = label(s.partial + s.beyondTable);
-    scalar hMin = nPartialHere ? s.hPartialMin : GREAT;
-    scalar hMax = nPartialHere ? s.hPartialMax : -GREAT;
-    reduce(hMin, minOp<scalar>());
-    reduce(hMax, maxOp<scalar>());
-    s.hPartialMin = hMin;
-    s.hPartialMax = hMax;
-    for
+    return refCast<const thermalContactResistanceFvPatchScalarField>
     (
-        scalar* x :
-        {
-            &s.area, &s.touchingArea, &s.partialArea, &s.pressureArea,
-            &s.areaFractionArea, &s.areaFractionPartialArea,
-            &s.hTouchingArea, &s.hPartialArea, &s.hAllArea, &s.gapAllArea
-        }
-    )
-    {
-        reduce(*x, sumOp<scalar>());
-    }
-    for
-    (
-        std::size_t* c : {&s.apart, &s.partial, &s.complete, &s.beyondTable}
-    )
-    {
-        label n = label(*c);
-        reduce(n, sumOp<label>());
-        *c = std::size_t(n);
-    }
-    return s;
-}
-
-
-Foam::scalar
-Foam::thermalContactResistanceFvPatchScalarField::heatIntoCells() const
-{
-    // kappa dT/dn |S_f| summed: the heat [W] entering this side's cells
-    // through the interface (the face flux of the mixed condition).
-    return gSum(kappa(*this)*snGrad()*patch().magSf());
-}
-
-
-void Foam::thermalContactResistanceFvPatchScalarField::writeSeries() const
-{
-    const mappedPatchBase& mpp =
-        refCast<const mappedPatchBase>(patch().patch());
-    const word region(patch().boundaryMesh().mesh().name());
-    const word nbrRegion(mpp.sampleRegion());
-    const word nbrPatchName(mpp.samplePatch());
-    // One of the two sides writes: the one whose region (then patch) name
-    // comes first.
-    if
-    (
-        nbrRegion < region
-     || (nbrRegion == region && nbrPatchName < patch().name())
-    )
-    {
-        return;
-    }
-    const auto& nbrField =
-        refCast<const thermalContactResistanceFvPatchScalarField>
-        (
-            *neighbourField(true)
-        );
-    // Collective (every processor): the sums, then the master writes.
-    const scalar heatFrom = -heatIntoCells();
-    const scalar heatInto = nbrField.heatIntoCells();
-    const ::roughContact::CouplingSummary s = summary();
-    if (!Pstream::master())
-    {
-        return;
-    }
-    const Time& runTime = db().time();
-    const fileName dir =
-        runTime.globalPath()/"postProcessing"/"thermalContactResistance"
-       /(region + "_" + patch().name())
-       /runTime.timeName(runTime.startTime().value());
-    const fileName series = dir/"interface.csv";
-    // Started once per run (and process): the header, and the table.
-    static std::set<std::string> started;
-    const bool first = started.insert(series).second;
-    if (first)
-    {
-        mkDir(dir);
-        const std::string description =
-            "interface of contact '" + contactName_ + "' between "
-          + region + "/" + patch().name() + " and " + nbrRegion + "/"
-          + nbrPatchName;
-        std::ofstream header(series, std::ios::trunc);
-        header
-            << ::roughContact::interfaceSeriesHeader
-               (
-                   description, region, nbrRegion
-               );
-        std::ofstream table(dir/"table.csv", std::ios::trunc);
-        ::roughContact::writeInterfaceTable(table, *interface_, description);
-        if (!header || !table)
-        {
-            WarningInFunction
-                << who().c_str() << ": cannot write " << series << " or "
-                << dir/"table.csv" << endl;
-        }
-        else
-        {
-            Info<< "thermalContactResistance: " << who().c_str()
-                << ": writing the interface's time series to " << series
-                << " and its table to " << dir/"table.csv" << endl;
-        }
-    }
-    std::ofstream os(series, std::ios::app);
-    os << ::roughContact::interfaceSeriesRow
-          (
-              runTime.value(), heatFrom, heatInto, s
-          );
-}
-
-
-void Foam::thermalContactResistanceFvPatchScalarField::report() const
-{
-    if (mode_ == conductanceMode::constantH)
-    {
-        Info<< "thermalContactResistance: " << who().c_str()
-            << ": h = " << hConstant_ << " W/m^2/K (constant)" << endl;
-        return;
-    }
-    const ::roughContact::CouplingSummary s = summary();
-    const label nPartial = label(s.partial + s.beyondTable);
-    Info<< "thermalContactResistance: " << who().c_str() << ": ";
-    if (nPartial > 0)
-    {
-        Info<< "h min/mean/max = " << s.hPartialMin << " / "
-            << s.hPartialArea/s.partialArea << " / " << s.hPartialMax
-            << " W/m^2/K, A_r/A_n mean = "
-            << s.areaFractionPartialArea/s.partialArea
-            << " (area-weighted over " << nPartial
-            << " faces in partial contact)";
-    }
-    else
-    {
-        Info<< "no face in partial contact";
-    }
-    Info<< "; " << label(s.complete) << " faces in complete contact (h infinite),"
-        << " " << label(s.apart) << " faces apart (P <= 0)" << endl;
+        *neighbourField(true)
+    );
 }
 
 
@@ -1254,7 +1046,6 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
 
     mixedFvPatchScalarField::updateCoeffs();
 
-    storeOutput();
     evaluated_ = true;
 
     UPstream::msgType() = oldTag;
@@ -1305,17 +1096,6 @@ void Foam::thermalContactResistanceFvPatchScalarField::write(Ostream& os) const
         }
     }
     temperatureCoupledBase::write(os);
-
-    // One log line per patch per write (after a solver evaluated it; not in
-    // utilities such as decomposePar that only read and write the field).
-    if (evaluated_)
-    {
-        report();
-        if (mode_ == conductanceMode::contact)
-        {
-            writeSeries();
-        }
-    }
 }
 
 

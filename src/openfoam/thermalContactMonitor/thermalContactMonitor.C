@@ -1,0 +1,372 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Part of roughContact, licensed GPL-3.0-or-later (LICENSE). Builds on OpenFOAM (Copyright
+// OpenCFD Ltd. and The OpenFOAM Foundation; GPL-3.0-or-later).
+#include "thermalContactMonitor.H"
+#include "thermalContactResistanceFvPatchScalarField.H"
+
+#include "addToRunTimeSelectionTable.H"
+#include "fvMesh.H"
+#include "mappedPatchBase.H"
+#include "OSspecific.H"
+#include "Time.H"
+#include "volFields.H"
+
+#include "roughContact/interface/InterfaceMonitor.hpp"
+
+#include <fstream>
+#include <string>
+
+namespace Foam
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(thermalContactMonitor, 0);
+    addToRunTimeSelectionTable(functionObject, thermalContactMonitor, dictionary);
+}
+}
+
+
+namespace
+{
+    using Foam::thermalContactResistanceFvPatchScalarField;
+
+    //- The fields, in one list: name and dimensions. The constant-h mode
+    //  writes the first only; gapConductance is written where the interface
+    //  has a gap.
+    enum outputField
+    {
+        outConductance, outAreaFraction, outPressure, outState, outGap, nOutputs
+    };
+    const char* const outputNames[nOutputs] =
+    {
+        "contactConductance", "contactAreaFraction", "contactPressure",
+        "contactState", "gapConductance"
+    };
+
+    //- Counts and area-weighted sums of the side's last update, over all
+    //  processors
+    ::roughContact::CouplingSummary summary
+    (
+        const thermalContactResistanceFvPatchScalarField& side
+    )
+    {
+        using namespace Foam;
+        ::roughContact::CouplingSummary s;
+        if (side.coupling().state.size() == size_t(side.size()))
+        {
+            s.add
+            (
+                side.coupling(), side.patch().magSf().cdata(),
+                side.totalConductance().cdata()
+            );
+        }
+        // Over all processors: sums, and the extremes where there are any.
+        const label nPartialHere = label(s.partial + s.beyondTable);
+        scalar hMin = nPartialHere ? s.hPartialMin : GREAT;
+        scalar hMax = nPartialHere ? s.hPartialMax : -GREAT;
+        reduce(hMin, minOp<scalar>());
+        reduce(hMax, maxOp<scalar>());
+        s.hPartialMin = hMin;
+        s.hPartialMax = hMax;
+        for
+        (
+            scalar* x :
+            {
+                &s.area, &s.touchingArea, &s.partialArea, &s.pressureArea,
+                &s.areaFractionArea, &s.areaFractionPartialArea,
+                &s.hTouchingArea, &s.hPartialArea, &s.hAllArea, &s.gapAllArea
+            }
+        )
+        {
+            reduce(*x, sumOp<scalar>());
+        }
+        for
+        (
+            std::size_t* c : {&s.apart, &s.partial, &s.complete, &s.beyondTable}
+        )
+        {
+            label n = label(*c);
+            reduce(n, sumOp<label>());
+            *c = std::size_t(n);
+        }
+        return s;
+    }
+
+    //- kappa dT/dn |S_f| summed: the heat [W] entering the side's cells
+    //  through the interface (the face flux of the mixed condition)
+    Foam::scalar heatIntoCells
+    (
+        const thermalContactResistanceFvPatchScalarField& side
+    )
+    {
+        return Foam::gSum
+        (
+            side.kappa(side)*side.snGrad()*side.patch().magSf()
+        );
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::functionObjects::thermalContactMonitor::storeFields
+(
+    const fvMesh& mesh,
+    const thermalContactResistanceFvPatchScalarField& side
+) const
+{
+    const label patchi = side.patch().index();
+    const dimensionSet hDims(dimPower/dimArea/dimTemperature);
+    const dimensionSet dims[nOutputs] =
+        {hDims, dimless, dimPressure, dimless, hDims};
+    const scalarField* values[nOutputs] =
+    {
+        &side.conductance(), &side.areaFraction(), &side.contactPressure(),
+        &side.contactState(), &side.gapConductance()
+    };
+    for (label k = 0; k < nOutputs; ++k)
+    {
+        if
+        (
+            (side.constantConductance() && k != outConductance)
+         || (k == outGap && !side.hasGap())
+        )
+        {
+            continue;
+        }
+        if (!mesh.foundObject<volScalarField>(outputNames[k]))
+        {
+            volScalarField* f = new volScalarField
+            (
+                IOobject
+                (
+                    outputNames[k],
+                    mesh.time().timeName(),
+                    mesh,
+                    IOobject::NO_READ,
+                    IOobject::NO_WRITE
+                ),
+                mesh,
+                dimensionedScalar(dims[k], Zero)
+            );
+            f->store();
+        }
+        volScalarField& f =
+            mesh.lookupObjectRef<volScalarField>(outputNames[k]);
+        f.boundaryFieldRef()[patchi] = *values[k];
+    }
+}
+
+
+void Foam::functionObjects::thermalContactMonitor::report
+(
+    const thermalContactResistanceFvPatchScalarField& side
+) const
+{
+    if (side.constantConductance())
+    {
+        Info<< "thermalContactResistance: " << side.who().c_str()
+            << ": h = " << side.hConstant() << " W/m^2/K (constant)" << endl;
+        return;
+    }
+    const ::roughContact::CouplingSummary s = summary(side);
+    const label nPartial = label(s.partial + s.beyondTable);
+    Info<< "thermalContactResistance: " << side.who().c_str() << ": ";
+    if (nPartial > 0)
+    {
+        Info<< "h min/mean/max = " << s.hPartialMin << " / "
+            << s.hPartialArea/s.partialArea << " / " << s.hPartialMax
+            << " W/m^2/K, A_r/A_n mean = "
+            << s.areaFractionPartialArea/s.partialArea
+            << " (area-weighted over " << nPartial
+            << " faces in partial contact)";
+    }
+    else
+    {
+        Info<< "no face in partial contact";
+    }
+    Info<< "; " << label(s.complete) << " faces in complete contact (h infinite),"
+        << " " << label(s.apart) << " faces apart (P <= 0)" << endl;
+}
+
+
+void Foam::functionObjects::thermalContactMonitor::writeSeries
+(
+    const thermalContactResistanceFvPatchScalarField& side
+)
+{
+    const mappedPatchBase& mpp =
+        refCast<const mappedPatchBase>(side.patch().patch());
+    const word region(side.patch().boundaryMesh().mesh().name());
+    const word nbrRegion(mpp.sampleRegion());
+    const word nbrPatchName(mpp.samplePatch());
+    // One of the two sides writes: the one whose region (then patch) name
+    // comes first.
+    if
+    (
+        nbrRegion < region
+     || (nbrRegion == region && nbrPatchName < side.patch().name())
+    )
+    {
+        return;
+    }
+    const thermalContactResistanceFvPatchScalarField& nbr = side.neighbour();
+    // Collective (every processor): the sums, then the master writes.
+    const scalar heatFrom = -heatIntoCells(side);
+    const scalar heatInto = heatIntoCells(nbr);
+    const ::roughContact::CouplingSummary s = summary(side);
+    if (!Pstream::master())
+    {
+        return;
+    }
+    const fileName dir =
+        time_.globalPath()/"postProcessing"/"thermalContactResistance"
+       /(region + "_" + side.patch().name())
+       /time_.timeName(time_.startTime().value());
+    const fileName series = dir/"interface.csv";
+    // Started once per run: the header, and the table.
+    if (started_.insert(series))
+    {
+        mkDir(dir);
+        const std::string description =
+            "interface of contact '" + side.contactName() + "' between "
+          + region + "/" + side.patch().name() + " and " + nbrRegion + "/"
+          + nbrPatchName;
+        std::ofstream header(series, std::ios::trunc);
+        header
+            << ::roughContact::interfaceSeriesHeader
+               (
+                   description, region, nbrRegion
+               );
+        std::ofstream table(dir/"table.csv", std::ios::trunc);
+        ::roughContact::writeInterfaceTable
+        (
+            table, side.contactInterface(), description
+        );
+        if (!header || !table)
+        {
+            WarningInFunction
+                << side.who().c_str() << ": cannot write " << series
+                << " or " << dir/"table.csv" << endl;
+        }
+        else
+        {
+            Info<< "thermalContactResistance: " << side.who().c_str()
+                << ": writing the interface's time series to " << series
+                << " and its table to " << dir/"table.csv" << endl;
+        }
+    }
+    std::ofstream os(series, std::ios::app);
+    os << ::roughContact::interfaceSeriesRow
+          (
+              time_.value(), heatFrom, heatInto, s
+          );
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::functionObjects::thermalContactMonitor::thermalContactMonitor
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    timeFunctionObject(name, runTime),
+    fieldName_("T")
+{
+    read(dict);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::functionObjects::thermalContactMonitor::read(const dictionary& dict)
+{
+    fieldName_ = dict.getOrDefault<word>("field", "T");
+    return true;
+}
+
+
+Foam::List<const Foam::thermalContactResistanceFvPatchScalarField*>
+Foam::functionObjects::thermalContactMonitor::sides(const fvMesh& mesh) const
+{
+    DynamicList<const thermalContactResistanceFvPatchScalarField*> out;
+    if (!mesh.foundObject<volScalarField>(fieldName_))
+    {
+        return List<const thermalContactResistanceFvPatchScalarField*>();
+    }
+    const volScalarField& T = mesh.lookupObject<volScalarField>(fieldName_);
+    forAll(T.boundaryField(), patchi)
+    {
+        const auto* side =
+            isA<thermalContactResistanceFvPatchScalarField>
+            (
+                T.boundaryField()[patchi]
+            );
+        // (not before the solver evaluated it: nothing to show yet)
+        if (side && side->evaluated())
+        {
+            out.append(side);
+        }
+    }
+    return List<const thermalContactResistanceFvPatchScalarField*>(out);
+}
+
+
+Foam::wordList
+Foam::functionObjects::thermalContactMonitor::regions() const
+{
+    // In name order: the same order on every processor (the series' sums
+    // are collective).
+    return time_.lookupClass<fvMesh>().sortedToc();
+}
+
+
+bool Foam::functionObjects::thermalContactMonitor::execute()
+{
+    // The fields, current after every step (another function object may
+    // use them: tutorials/loadRamp averages them over the interface).
+    for (const word& region : regions())
+    {
+        const fvMesh& mesh = time_.lookupObject<fvMesh>(region);
+        for (const auto* side : sides(mesh))
+        {
+            storeFields(mesh, *side);
+        }
+    }
+    return true;
+}
+
+
+bool Foam::functionObjects::thermalContactMonitor::write()
+{
+    execute();
+    for (const word& region : regions())
+    {
+        const fvMesh& mesh = time_.lookupObject<fvMesh>(region);
+        const List<const thermalContactResistanceFvPatchScalarField*> list =
+            sides(mesh);
+        if (list.empty())
+        {
+            continue;
+        }
+        for (const char* name : outputNames)
+        {
+            if (mesh.foundObject<volScalarField>(name))
+            {
+                mesh.lookupObject<volScalarField>(name).write();
+            }
+        }
+        for (const auto* side : list)
+        {
+            report(*side);
+            if (!side->constantConductance())
+            {
+                writeSeries(*side);
+            }
+        }
+    }
+    return true;
+}
