@@ -4,14 +4,11 @@
 // coupled-baffle arithmetic and structure follow compressible::
 // turbulentTemperatureCoupledBaffleMixedFvPatchScalarField and temperatureCoupledBase.
 #include "thermalContactResistanceFvPatchScalarField.H"
-#include "contactInterfaceFromDict.H"
 
 #include "addToRunTimeSelectionTable.H"
 #include "fvPatchFieldMapper.H"
 #include "volFields.H"
 #include "mappedPatchBase.H"
-#include "IOdictionary.H"
-#include "StringStream.H"
 
 #include "roughContact/thermal/InterfaceCoupling.hpp"
 
@@ -25,24 +22,10 @@
 #define RuntimeIOError                                                         \
     ::Foam::FatalIOError                                                       \
     (                                                                          \
-        FUNCTION_NAME, __FILE__, __LINE__, dictName_, dictStart_, dictEnd_     \
+        FUNCTION_NAME, __FILE__, __LINE__, settings_.dictName, settings_.dictStart, settings_.dictEnd     \
     )
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-    //- A dictionary's contents as text, to tell whether it changed. Not
-    //  dictionary::digest(): Debian 13's build of v1912 fails in its SHA1
-    //  stream ("error in IOstream sha1"), and a comparison needs no hash.
-    std::string entryText(const Foam::dictionary& dict)
-    {
-        Foam::OStringStream os;
-        dict.write(os, false);
-        return os.str();
-    }
-}
-
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -54,225 +37,18 @@ Foam::string Foam::thermalContactResistanceFvPatchScalarField::who() const
 }
 
 
-void Foam::thermalContactResistanceFvPatchScalarField::checkPatch() const
-{
-    if (!isA<mappedPatchBase>(patch().patch()))
-    {
-        RuntimeIOError
-            << who().c_str() << ": thermalContactResistance needs a mapped"
-            << " patch (mappedWall) coupling two regions; this patch is of"
-            << " type '" << patch().patch().type() << "'"
-            << exit(FatalIOError);
-    }
-}
-
-
-void Foam::thermalContactResistanceFvPatchScalarField::readContact
-(
-    const dictionary& dict
-)
-{
-    const bool hasH = dict.found("h");
-    const bool hasContact = dict.found("contact");
-    if (hasH == hasContact)
-    {
-        FatalIOErrorInFunction(dict)
-            << who().c_str() << ": give exactly one of the entries 'h' (a"
-            << " constant conductance [W/m^2/K]) and 'contact' (an entry of"
-            << " constant/thermalContactProperties)" << exit(FatalIOError);
-    }
-    mode_ = hasH ? conductanceMode::constantH : conductanceMode::contact;
-    if (hasH)
-    {
-        hConstant_ = dict.get<scalar>("h");
-        if (!(hConstant_ > 0) || !std::isfinite(hConstant_))
-        {
-            FatalIOErrorInFunction(dict)
-                << who().c_str() << ": entry 'h' must be a finite conductance"
-                << " > 0 [W/m^2/K], got " << hConstant_ << exit(FatalIOError);
-        }
-        for (const char* other : {"pressure", "pressureField", "gap", "gapField"})
-        {
-            if (dict.found(other))
-            {
-                FatalIOErrorInFunction(dict)
-                    << who().c_str() << ": entry '" << other << "' has no"
-                    << " meaning with a constant 'h'; remove one of them"
-                    << exit(FatalIOError);
-            }
-        }
-        return;
-    }
-
-    contactName_ = dict.get<word>("contact");
-    const bool hasP = dict.found("pressure");
-    const bool hasPField = dict.found("pressureField");
-    if (hasP == hasPField)
-    {
-        FatalIOErrorInFunction(dict)
-            << who().c_str() << ": give exactly one of the entries 'pressure'"
-            << " (a PatchFunction1, Pa) and 'pressureField' (the name of a"
-            << " volScalarField, Pa)" << exit(FatalIOError);
-    }
-    if (hasP)
-    {
-        pressure_ =
-            PatchFunction1<scalar>::New(patch().patch(), "pressure", dict);
-    }
-    else
-    {
-        pressureFieldName_ = dict.get<word>("pressureField");
-    }
-
-    // One place both sides read: constant/thermalContactProperties.
-    const Time& runTime = db().time();
-    const word propsName("thermalContactProperties");
-    if (!runTime.foundObject<IOdictionary>(propsName))
-    {
-        IOobject io
-        (
-            propsName,
-            runTime.constant(),
-            runTime,
-            // Re-read when modified (runTimeModifiable yes), only so that
-            // checkContactUnchanged() can say that a change is ignored.
-            IOobject::MUST_READ_IF_MODIFIED,
-            IOobject::NO_WRITE
-        );
-        if (!io.typeHeaderOk<IOdictionary>(true))
-        {
-            FatalIOErrorInFunction(dict)
-                << who().c_str() << ": entry 'contact " << contactName_
-                << "' needs the file constant/" << propsName << " of the"
-                << " case (" << runTime.globalPath()/"constant"/propsName
-                << "), which cannot be read" << exit(FatalIOError);
-        }
-        IOdictionary* props = new IOdictionary(io);
-        props->store();
-    }
-    const IOdictionary& props =
-        runTime.lookupObject<IOdictionary>(propsName);
-    if (!props.isDict(contactName_))
-    {
-        FatalIOErrorInFunction(dict)
-            << who().c_str() << ": entry 'contact " << contactName_
-            << "': there is no dictionary '" << contactName_ << "' in "
-            << props.objectPath() << " (it has: "
-            << flatOutput(props.toc()) << ")" << exit(FatalIOError);
-    }
-    interface_ = contactInterfaceFromDict
-    (
-        runTime, props, contactName_, props.objectPath(), runTime.globalPath(),
-        who()
-    );
-    try
-    {
-        surfaceChecksum_ = interface_->surfaceChecksum();
-    }
-    catch (const std::exception& e)
-    {
-        FatalIOErrorInFunction(dict)
-            << who().c_str() << ": entry 'contact " << contactName_
-            << "' (" << props.objectPath() << "): the surface's checksum: "
-            << e.what() << exit(FatalIOError);
-    }
-    contactDigest_ = entryText(props.subDict(contactName_));
-    contactCheckedTimeIndex_ = runTime.timeIndex();
-    checkRecordedSurface(dict);
-
-    // The width of the gap where the surfaces do not touch (P <= 0).
-    const bool hasGap = dict.found("gap");
-    const bool hasGapField = dict.found("gapField");
-    if (hasGap || hasGapField)
-    {
-        if (hasGap && hasGapField)
-        {
-            FatalIOErrorInFunction(dict)
-                << who().c_str() << ": give at most one of the entries 'gap'"
-                << " (a uniform gap width [m] of faces apart) and 'gapField'"
-                << " (the name of a volScalarField of gap widths [m])"
-                << exit(FatalIOError);
-        }
-        if (!interface_->hasGap())
-        {
-            FatalIOErrorInFunction(dict)
-                << who().c_str() << ": entry '"
-                << (hasGap ? "gap" : "gapField") << "': the contact '"
-                << contactName_ << "' of " << props.objectPath() << " has no"
-                << " gap sub-dictionary (gas, emissivity), so nothing would"
-                << " cross the gap: add one, or remove this entry"
-                << exit(FatalIOError);
-        }
-        if (hasGap)
-        {
-            gapWidth_ = dict.get<scalar>("gap");
-            if (!(gapWidth_ >= 0) || !std::isfinite(gapWidth_))
-            {
-                FatalIOErrorInFunction(dict)
-                    << who().c_str() << ": entry 'gap' must be a finite gap"
-                    << " width >= 0 [m], got " << gapWidth_
-                    << exit(FatalIOError);
-            }
-        }
-        else
-        {
-            gapFieldName_ = dict.get<word>("gapField");
-        }
-    }
-}
-
-
-void Foam::thermalContactResistanceFvPatchScalarField::checkRecordedSurface
+void Foam::thermalContactResistanceFvPatchScalarField::checkPatch
 (
     const dictionary& dict
 ) const
 {
-    string recorded;
-    if (!dict.readIfPresent("surfaceChecksum", recorded))
+    if (!isA<mappedPatchBase>(patch().patch()))
     {
-        return;
-    }
-    if (recorded != surfaceChecksum_)
-    {
-        WarningInFunction
-            << who().c_str() << ": the field file "
-            << internalField().objectPath() << " records the surface of"
-            << " the run that wrote it as surfaceChecksum " << recorded.c_str()
-            << ", but the surface of contact '" << contactName_
-            << "' now read (" << interface_->surface().source().c_str()
-            << ") has the checksum " << surfaceChecksum_.c_str() << "."
-            << " The surface has changed since the recorded run: h and"
-            << " A_r/A_n will change from that run's." << endl;
-    }
-}
-
-
-void Foam::thermalContactResistanceFvPatchScalarField::checkContactUnchanged()
-{
-    const Time& runTime = db().time();
-    if
-    (
-        warnedContactChanged_
-     || runTime.timeIndex() == contactCheckedTimeIndex_
-    )
-    {
-        return;
-    }
-    // Files are re-read between time steps: one comparison per step.
-    contactCheckedTimeIndex_ = runTime.timeIndex();
-    const IOdictionary& props =
-        runTime.lookupObject<IOdictionary>("thermalContactProperties");
-    const dictionary* entry = props.findDict(contactName_);
-    if (!entry || entryText(*entry) != contactDigest_)
-    {
-        WarningInFunction
-            << who().c_str() << ": entry '" << contactName_ << "' of "
-            << props.objectPath() << " has been "
-            << (entry ? "changed" : "removed") << " during the run. The"
-            << " change is ignored: the contact table stays as it was built"
-            << " at the start (surface, materials, model, pressure range)"
-            << " until the run is restarted." << endl;
-        warnedContactChanged_ = true;
+        FatalIOErrorInFunction(dict)
+            << who().c_str() << ": thermalContactResistance needs a mapped"
+            << " patch (mappedWall) coupling two regions; this patch is of"
+            << " type '" << patch().patch().type() << "'"
+            << exit(FatalIOError);
     }
 }
 
@@ -307,21 +83,21 @@ void Foam::thermalContactResistanceFvPatchScalarField::checkNeighbour
 )
 {
     string problem;
-    if (mode_ != nbr.mode_)
+    if (settings_.mode != nbr.settings_.mode)
     {
         problem = "one side gives 'h', the other 'contact'";
     }
-    else if (mode_ == conductanceMode::constantH && hConstant_ != nbr.hConstant_)
+    else if (settings_.mode == thermalContactSettings::conductanceMode::constantH && settings_.hConstant != nbr.settings_.hConstant)
     {
         problem =
-            "the two sides give different 'h' (" + Foam::name(hConstant_)
-          + " and " + Foam::name(nbr.hConstant_) + ")";
+            "the two sides give different 'h' (" + Foam::name(settings_.hConstant)
+          + " and " + Foam::name(nbr.settings_.hConstant) + ")";
     }
-    else if (mode_ == conductanceMode::contact && contactName_ != nbr.contactName_)
+    else if (settings_.mode == thermalContactSettings::conductanceMode::contact && settings_.contactName != nbr.settings_.contactName)
     {
         problem =
             "the two sides name different 'contact' entries ('"
-          + contactName_ + "' and '" + nbr.contactName_ + "')";
+          + settings_.contactName + "' and '" + nbr.settings_.contactName + "')";
     }
     else if (hasGapWidth() != nbr.hasGapWidth())
     {
@@ -361,28 +137,28 @@ Foam::thermalContactResistanceFvPatchScalarField::neighbourField
         return nullptr;
     }
     const polyMesh& nbrMesh = mpp.sampleMesh();
-    if (!nbrMesh.foundObject<volScalarField>(TnbrName_))
+    if (!nbrMesh.foundObject<volScalarField>(settings_.Tnbr))
     {
         if (!mustExist)
         {
             return nullptr;
         }
         RuntimeIOError
-            << who().c_str() << ": entry 'Tnbr " << TnbrName_ << "': the"
+            << who().c_str() << ": entry 'Tnbr " << settings_.Tnbr << "': the"
             << " neighbour region " << nbrMesh.name() << " has no"
-            << " volScalarField '" << TnbrName_ << "' (it has: "
+            << " volScalarField '" << settings_.Tnbr << "' (it has: "
             << flatOutput(nbrMesh.sortedNames<volScalarField>()) << ")"
             << exit(FatalIOError);
     }
     const fvPatchScalarField& nbrPf =
-        nbrMesh.lookupObject<volScalarField>(TnbrName_)
+        nbrMesh.lookupObject<volScalarField>(settings_.Tnbr)
        .boundaryField()[mpp.samplePolyPatch().index()];
     if (!isA<thermalContactResistanceFvPatchScalarField>(nbrPf))
     {
         RuntimeIOError
             << who().c_str() << ": the neighbour patch "
             << nbrPf.patch().name() << " of region " << nbrMesh.name()
-            << " has " << TnbrName_ << " of type '" << nbrPf.type()
+            << " has " << settings_.Tnbr << " of type '" << nbrPf.type()
             << "' (" << nbrPf.internalField().objectPath() << "); both sides"
             << " of the interface must be thermalContactResistance"
             << exit(FatalIOError);
@@ -443,18 +219,8 @@ thermalContactResistanceFvPatchScalarField
         patch(), "undefined", "undefined", "undefined-K", "undefined-alpha"
     ),
 #endif
-    TnbrName_("undefined-Tnbr"),
-    contactName_(),
-    mode_(conductanceMode::contact),
-    hConstant_(0),
+    settings_(),
     pressure_(),
-    pressureFieldName_(),
-    gapWidth_(-1),
-    gapFieldName_(),
-    interface_(),
-    surfaceChecksum_(),
-    contactDigest_(),
-    contactCheckedTimeIndex_(-1),
     areaFraction_(p.size(), Zero),
     conductance_(p.size(), Zero),
     contactPressure_(p.size(), Zero),
@@ -462,15 +228,12 @@ thermalContactResistanceFvPatchScalarField
     gapConductance_(p.size(), Zero),
     totalConductance_(p.size(), Zero),
     evaluated_(false),
-    dictName_(iF.objectPath()),
-    dictStart_(-1),
-    dictEnd_(-1),
     checkedNeighbour_(false),
     warnedNoContact_(false),
     warnedBeyondTable_(false),
-    warnedInput_(0),
-    warnedContactChanged_(false)
+    warnedInput_(0)
 {
+    settings_.dictName = iF.objectPath();
     this->refValue() = 0.0;
     this->refGrad() = 0.0;
     this->valueFraction() = 1.0;
@@ -487,18 +250,8 @@ thermalContactResistanceFvPatchScalarField
 :
     mixedFvPatchScalarField(p, iF),
     temperatureCoupledBase(patch(), checkedKappaMethod(p, iF, dict)),
-    TnbrName_(dict.get<word>("Tnbr")),
-    contactName_(),
-    mode_(conductanceMode::contact),
-    hConstant_(0),
+    settings_(),
     pressure_(),
-    pressureFieldName_(),
-    gapWidth_(-1),
-    gapFieldName_(),
-    interface_(),
-    surfaceChecksum_(),
-    contactDigest_(),
-    contactCheckedTimeIndex_(-1),
     areaFraction_(p.size(), Zero),
     conductance_(p.size(), Zero),
     contactPressure_(p.size(), Zero),
@@ -506,17 +259,21 @@ thermalContactResistanceFvPatchScalarField
     gapConductance_(p.size(), Zero),
     totalConductance_(p.size(), Zero),
     evaluated_(false),
-    dictName_(dict.name()),
-    dictStart_(dict.startLineNumber()),
-    dictEnd_(dict.endLineNumber()),
     checkedNeighbour_(false),
     warnedNoContact_(false),
     warnedBeyondTable_(false),
-    warnedInput_(0),
-    warnedContactChanged_(false)
+    warnedInput_(0)
 {
-    checkPatch();
-    readContact(dict);
+    checkPatch(dict);
+    settings_ = thermalContactSettings
+    (
+        dict, db().time(), who(), internalField().objectPath()
+    );
+    if (settings_.pressureGiven)
+    {
+        pressure_ =
+            PatchFunction1<scalar>::New(patch().patch(), "pressure", dict);
+    }
     // The neighbour's field exists already when this region is read after
     // it: a neighbour of another type is reported here, before that other
     // condition (evaluated first) fails on it with no patch or file named.
@@ -550,18 +307,8 @@ thermalContactResistanceFvPatchScalarField
 :
     mixedFvPatchScalarField(ptf, p, iF, mapper),
     temperatureCoupledBase(patch(), ptf),
-    TnbrName_(ptf.TnbrName_),
-    contactName_(ptf.contactName_),
-    mode_(ptf.mode_),
-    hConstant_(ptf.hConstant_),
+    settings_(ptf.settings_),
     pressure_(),
-    pressureFieldName_(ptf.pressureFieldName_),
-    gapWidth_(ptf.gapWidth_),
-    gapFieldName_(ptf.gapFieldName_),
-    interface_(ptf.interface_),
-    surfaceChecksum_(ptf.surfaceChecksum_),
-    contactDigest_(ptf.contactDigest_),
-    contactCheckedTimeIndex_(ptf.contactCheckedTimeIndex_),
     areaFraction_(ptf.areaFraction_, mapper),
     conductance_(ptf.conductance_, mapper),
     contactPressure_(ptf.contactPressure_, mapper),
@@ -569,14 +316,10 @@ thermalContactResistanceFvPatchScalarField
     gapConductance_(ptf.gapConductance_, mapper),
     totalConductance_(ptf.totalConductance_, mapper),
     evaluated_(ptf.evaluated_),
-    dictName_(ptf.dictName_),
-    dictStart_(ptf.dictStart_),
-    dictEnd_(ptf.dictEnd_),
     checkedNeighbour_(false),
     warnedNoContact_(ptf.warnedNoContact_),
     warnedBeyondTable_(ptf.warnedBeyondTable_),
-    warnedInput_(ptf.warnedInput_),
-    warnedContactChanged_(ptf.warnedContactChanged_)
+    warnedInput_(ptf.warnedInput_)
 {
     if (ptf.pressure_.valid())
     {
@@ -598,23 +341,13 @@ thermalContactResistanceFvPatchScalarField
 :
     mixedFvPatchScalarField(ptf),
     temperatureCoupledBase(patch(), ptf),
-    TnbrName_(ptf.TnbrName_),
-    contactName_(ptf.contactName_),
-    mode_(ptf.mode_),
-    hConstant_(ptf.hConstant_),
+    settings_(ptf.settings_),
     pressure_
     (
         ptf.pressure_.valid()
       ? ptf.pressure_().clone(patch().patch()).ptr()
       : nullptr
     ),
-    pressureFieldName_(ptf.pressureFieldName_),
-    gapWidth_(ptf.gapWidth_),
-    gapFieldName_(ptf.gapFieldName_),
-    interface_(ptf.interface_),
-    surfaceChecksum_(ptf.surfaceChecksum_),
-    contactDigest_(ptf.contactDigest_),
-    contactCheckedTimeIndex_(ptf.contactCheckedTimeIndex_),
     areaFraction_(ptf.areaFraction_),
     conductance_(ptf.conductance_),
     contactPressure_(ptf.contactPressure_),
@@ -622,14 +355,10 @@ thermalContactResistanceFvPatchScalarField
     gapConductance_(ptf.gapConductance_),
     totalConductance_(ptf.totalConductance_),
     evaluated_(ptf.evaluated_),
-    dictName_(ptf.dictName_),
-    dictStart_(ptf.dictStart_),
-    dictEnd_(ptf.dictEnd_),
     checkedNeighbour_(ptf.checkedNeighbour_),
     warnedNoContact_(ptf.warnedNoContact_),
     warnedBeyondTable_(ptf.warnedBeyondTable_),
-    warnedInput_(ptf.warnedInput_),
-    warnedContactChanged_(ptf.warnedContactChanged_)
+    warnedInput_(ptf.warnedInput_)
 {}
 
 
@@ -642,23 +371,13 @@ thermalContactResistanceFvPatchScalarField
 :
     mixedFvPatchScalarField(ptf, iF),
     temperatureCoupledBase(patch(), ptf),
-    TnbrName_(ptf.TnbrName_),
-    contactName_(ptf.contactName_),
-    mode_(ptf.mode_),
-    hConstant_(ptf.hConstant_),
+    settings_(ptf.settings_),
     pressure_
     (
         ptf.pressure_.valid()
       ? ptf.pressure_().clone(patch().patch()).ptr()
       : nullptr
     ),
-    pressureFieldName_(ptf.pressureFieldName_),
-    gapWidth_(ptf.gapWidth_),
-    gapFieldName_(ptf.gapFieldName_),
-    interface_(ptf.interface_),
-    surfaceChecksum_(ptf.surfaceChecksum_),
-    contactDigest_(ptf.contactDigest_),
-    contactCheckedTimeIndex_(ptf.contactCheckedTimeIndex_),
     areaFraction_(ptf.areaFraction_),
     conductance_(ptf.conductance_),
     contactPressure_(ptf.contactPressure_),
@@ -666,14 +385,10 @@ thermalContactResistanceFvPatchScalarField
     gapConductance_(ptf.gapConductance_),
     totalConductance_(ptf.totalConductance_),
     evaluated_(ptf.evaluated_),
-    dictName_(ptf.dictName_),
-    dictStart_(ptf.dictStart_),
-    dictEnd_(ptf.dictEnd_),
     checkedNeighbour_(ptf.checkedNeighbour_),
     warnedNoContact_(ptf.warnedNoContact_),
     warnedBeyondTable_(ptf.warnedBeyondTable_),
-    warnedInput_(ptf.warnedInput_),
-    warnedContactChanged_(ptf.warnedContactChanged_)
+    warnedInput_(ptf.warnedInput_)
 {}
 
 
@@ -686,21 +401,21 @@ Foam::thermalContactResistanceFvPatchScalarField::interfacePressure() const
     {
         return pressure_->value(db().time().timeOutputValue());
     }
-    if (!pressureFieldName_.empty())
+    if (!settings_.pressureFieldName.empty())
     {
         const fvMesh& mesh = patch().boundaryMesh().mesh();
-        if (!mesh.foundObject<volScalarField>(pressureFieldName_))
+        if (!mesh.foundObject<volScalarField>(settings_.pressureFieldName))
         {
             RuntimeIOError
                 << who().c_str() << ": entry 'pressureField "
-                << pressureFieldName_ << "': region " << mesh.name()
-                << " has no volScalarField '" << pressureFieldName_
+                << settings_.pressureFieldName << "': region " << mesh.name()
+                << " has no volScalarField '" << settings_.pressureFieldName
                 << "' (read it, e.g. with the readFields function object,"
                 << " or let a solver or function object create it)"
                 << exit(FatalIOError);
         }
         return
-            mesh.lookupObject<volScalarField>(pressureFieldName_)
+            mesh.lookupObject<volScalarField>(settings_.pressureFieldName)
            .boundaryField()[patch().index()];
     }
     return tmp<scalarField>(new scalarField(size(), Zero));
@@ -710,24 +425,24 @@ Foam::thermalContactResistanceFvPatchScalarField::interfacePressure() const
 Foam::tmp<Foam::scalarField>
 Foam::thermalContactResistanceFvPatchScalarField::interfaceGapWidth() const
 {
-    if (!gapFieldName_.empty())
+    if (!settings_.gapFieldName.empty())
     {
         const fvMesh& mesh = patch().boundaryMesh().mesh();
-        if (!mesh.foundObject<volScalarField>(gapFieldName_))
+        if (!mesh.foundObject<volScalarField>(settings_.gapFieldName))
         {
             RuntimeIOError
                 << who().c_str() << ": entry 'gapField "
-                << gapFieldName_ << "': region " << mesh.name()
-                << " has no volScalarField '" << gapFieldName_
+                << settings_.gapFieldName << "': region " << mesh.name()
+                << " has no volScalarField '" << settings_.gapFieldName
                 << "' (read it, e.g. with the readFields function object,"
                 << " or let a solver or function object create it)"
                 << exit(FatalIOError);
         }
         return
-            mesh.lookupObject<volScalarField>(gapFieldName_)
+            mesh.lookupObject<volScalarField>(settings_.gapFieldName)
            .boundaryField()[patch().index()];
     }
-    return tmp<scalarField>(new scalarField(size(), max(gapWidth_, 0.0)));
+    return tmp<scalarField>(new scalarField(size(), max(settings_.gapWidth, 0.0)));
 }
 
 
@@ -832,7 +547,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
     // face; with a gap also its face temperature and gap width (a
     // symmTensor's six components carry the five); and (once, while the mesh
     // does not change) its deltaCoeffs.
-    const bool withGap = mode_ == conductanceMode::contact && interface_->hasGap();
+    const bool withGap = settings_.mode == thermalContactSettings::conductanceMode::contact && settings_.interface->hasGap();
     const label nNbr = nbrPatch.size();
     scalarField nbrT(size());
     scalarField nbrKappa(size());
@@ -843,7 +558,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
     {
         const scalarField T
         (
-            mode_ == conductanceMode::constantH
+            settings_.mode == thermalContactSettings::conductanceMode::constantH
           ? scalarField(nbrField)
           : nbrField.patchInternalField()()
         );
@@ -910,14 +625,14 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
     }
     try
     {
-        if (mode_ == conductanceMode::constantH)
+        if (settings_.mode == thermalContactSettings::conductanceMode::constantH)
         {
             in.faceTemperatureNbr = nbrT.cdata();
-            roughContact::coupleConstant(hConstant_, in, coupling_);
+            roughContact::coupleConstant(settings_.hConstant, in, coupling_);
         }
         else
         {
-            checkContactUnchanged();
+            settings_.checkContactUnchanged(db().time(), who());
             in.pressure = myP.cdata();
             in.pressureNbr = nbrP.cdata();
             in.cellTemperatureNbr = nbrT.cdata();
@@ -933,7 +648,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
                     in.gapWidthNbr = nbrGapWidth.cdata();
                 }
             }
-            roughContact::couple(*interface_, in, couplingCache_, coupling_);
+            roughContact::couple(*settings_.interface, in, couplingCache_, coupling_);
         }
     }
     catch (const roughContact::FaceError& e)
@@ -952,7 +667,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
     {
         RuntimeIOError
             << who().c_str() << ": the interface coupling of the faces"
-            << (contactName_.empty() ? "" : " (contact '" + contactName_ + "')")
+            << (settings_.contactName.empty() ? "" : " (contact '" + settings_.contactName + "')")
             << " failed: " << e.what() << exit(FatalIOError);
     }
 
@@ -987,14 +702,14 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
             out.gapConductance[facei] + out.radiativeConductance[facei];
     }
 
-    if (mode_ == conductanceMode::contact)
+    if (settings_.mode == thermalContactSettings::conductanceMode::contact)
     {
         if (returnReduce(apart, orOp<bool>()) && !warnedNoContact_)
         {
             Info<< "thermalContactResistance: " << who().c_str()
                 << ": zero or negative pressure on some faces: the surfaces"
                 << " do not touch there ("
-                << (interface_->hasGap()
+                << (settings_.interface->hasGap()
                     ? "only the gap's conductance remains)"
                     : "h = 0, no heat crosses)") << endl;
             warnedNoContact_ = true;
@@ -1003,10 +718,10 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
         {
             WarningInFunction
                 << who().c_str() << ": pressures above "
-                << interface_->tableEnd()
-                << " Pa, the end of the table of contact '" << contactName_
+                << settings_.interface->tableEnd()
+                << " Pa, the end of the table of contact '" << settings_.contactName
                 << "' (its maxPressure), and below complete contact ("
-                << interface_->completeContactPressure()
+                << settings_.interface->completeContactPressure()
                 << " Pa): h is held at the table's last value"
                 << " there. Raise maxPressure." << endl;
             warnedBeyondTable_ = true;
@@ -1028,9 +743,9 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
         d.apartAtFirstTouch = std::size_t(firstTouch);
         const std::string messages[3] =
         {
-            d.belowTableMessage(*interface_),
+            d.belowTableMessage(*settings_.interface),
             d.pressureMismatchMessage(),
-            d.apartAtFirstTouchMessage(*interface_)
+            d.apartAtFirstTouchMessage(*settings_.interface)
         };
         for (label k = 0; k < 3; ++k)
         {
@@ -1055,46 +770,29 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
 void Foam::thermalContactResistanceFvPatchScalarField::write(Ostream& os) const
 {
     mixedFvPatchScalarField::write(os);
-    os.writeEntry("Tnbr", TnbrName_);
-    if (mode_ == conductanceMode::constantH)
+    settings_.write(os);
+    if (pressure_.valid())
     {
-        os.writeEntry("h", hConstant_);
-    }
-    else
-    {
-        os.writeEntry("contact", contactName_);
-        // What this run used: a restart compares it (checkRecordedSurface).
-        os.writeEntry("surfaceChecksum", surfaceChecksum_);
-        if (pressure_.valid())
+        if (pressure_->type() == "uniformValue")
         {
-            if (pressure_->type() == "uniformValue")
-            {
-                // v1912's UniformValueField writes only its Function1
-                // ("pressure table (...)"), which does not read back as a
-                // PatchFunction1; the dictionary form does.
-                os.beginBlock("pressure");
-                os.writeEntry("type", pressure_->type());
-                pressure_->writeData(os);
-                os.endBlock();
-            }
-            else
-            {
-                pressure_->writeData(os);
-            }
+            // v1912's UniformValueField writes only its Function1
+            // ("pressure table (...)"), which does not read back as a
+            // PatchFunction1; the dictionary form does.
+            os.beginBlock("pressure");
+            os.writeEntry("type", pressure_->type());
+            pressure_->writeData(os);
+            os.endBlock();
         }
         else
         {
-            os.writeEntry("pressureField", pressureFieldName_);
-        }
-        if (!gapFieldName_.empty())
-        {
-            os.writeEntry("gapField", gapFieldName_);
-        }
-        else if (gapWidth_ >= 0)
-        {
-            os.writeEntry("gap", gapWidth_);
+            pressure_->writeData(os);
         }
     }
+    else if (!settings_.pressureFieldName.empty())
+    {
+        os.writeEntry("pressureField", settings_.pressureFieldName);
+    }
+    settings_.writeGap(os);
     temperatureCoupledBase::write(os);
 }
 

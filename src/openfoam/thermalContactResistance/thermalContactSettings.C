@@ -1,0 +1,289 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Part of roughContact, licensed GPL-3.0-or-later (LICENSE). Builds on OpenFOAM (Copyright
+// OpenCFD Ltd. and The OpenFOAM Foundation; GPL-3.0-or-later).
+#include "thermalContactSettings.H"
+#include "contactInterfaceFromDict.H"
+
+#include "IOdictionary.H"
+#include "StringStream.H"
+#include "Time.H"
+
+#include <cmath>
+#include <exception>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    //- A dictionary's contents as text, to tell whether it changed. Not
+    //  dictionary::digest(): Debian 13's build of v1912 fails in its SHA1
+    //  stream ("error in IOstream sha1"), and a comparison needs no hash.
+    std::string entryText(const Foam::dictionary& dict)
+    {
+        Foam::OStringStream os;
+        dict.write(os, false);
+        return os.str();
+    }
+}
+
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::thermalContactSettings::thermalContactSettings()
+:
+    Tnbr("undefined-Tnbr")
+{}
+
+
+Foam::thermalContactSettings::thermalContactSettings
+(
+    const dictionary& dict,
+    const Time& runTime,
+    const string& who,
+    const fileName& fieldFile
+)
+:
+    Tnbr(dict.get<word>("Tnbr")),
+    dictName(dict.name()),
+    dictStart(dict.startLineNumber()),
+    dictEnd(dict.endLineNumber())
+{
+    const bool hasH = dict.found("h");
+    const bool hasContact = dict.found("contact");
+    if (hasH == hasContact)
+    {
+        FatalIOErrorInFunction(dict)
+            << who.c_str() << ": give exactly one of the entries 'h' (a"
+            << " constant conductance [W/m^2/K]) and 'contact' (an entry of"
+            << " constant/thermalContactProperties)" << exit(FatalIOError);
+    }
+    mode = hasH ? conductanceMode::constantH : conductanceMode::contact;
+    if (hasH)
+    {
+        hConstant = dict.get<scalar>("h");
+        if (!(hConstant > 0) || !std::isfinite(hConstant))
+        {
+            FatalIOErrorInFunction(dict)
+                << who.c_str() << ": entry 'h' must be a finite conductance"
+                << " > 0 [W/m^2/K], got " << hConstant << exit(FatalIOError);
+        }
+        for (const char* other : {"pressure", "pressureField", "gap", "gapField"})
+        {
+            if (dict.found(other))
+            {
+                FatalIOErrorInFunction(dict)
+                    << who.c_str() << ": entry '" << other << "' has no"
+                    << " meaning with a constant 'h'; remove one of them"
+                    << exit(FatalIOError);
+            }
+        }
+        return;
+    }
+
+    contactName = dict.get<word>("contact");
+    const bool hasP = dict.found("pressure");
+    const bool hasPField = dict.found("pressureField");
+    if (hasP == hasPField)
+    {
+        FatalIOErrorInFunction(dict)
+            << who.c_str() << ": give exactly one of the entries 'pressure'"
+            << " (a PatchFunction1, Pa) and 'pressureField' (the name of a"
+            << " volScalarField, Pa)" << exit(FatalIOError);
+    }
+    if (hasP)
+    {
+        // (built by the condition: a PatchFunction1 is bound to its patch)
+        pressureGiven = true;
+    }
+    else
+    {
+        pressureFieldName = dict.get<word>("pressureField");
+    }
+
+    // One place both sides read: constant/thermalContactProperties.
+    const word propsName("thermalContactProperties");
+    if (!runTime.foundObject<IOdictionary>(propsName))
+    {
+        IOobject io
+        (
+            propsName,
+            runTime.constant(),
+            runTime,
+            // Re-read when modified (runTimeModifiable yes), only so that
+            // checkContactUnchanged() can say that a change is ignored.
+            IOobject::MUST_READ_IF_MODIFIED,
+            IOobject::NO_WRITE
+        );
+        if (!io.typeHeaderOk<IOdictionary>(true))
+        {
+            FatalIOErrorInFunction(dict)
+                << who.c_str() << ": entry 'contact " << contactName
+                << "' needs the file constant/" << propsName << " of the"
+                << " case (" << runTime.globalPath()/"constant"/propsName
+                << "), which cannot be read" << exit(FatalIOError);
+        }
+        IOdictionary* props = new IOdictionary(io);
+        props->store();
+    }
+    const IOdictionary& props =
+        runTime.lookupObject<IOdictionary>(propsName);
+    if (!props.isDict(contactName))
+    {
+        FatalIOErrorInFunction(dict)
+            << who.c_str() << ": entry 'contact " << contactName
+            << "': there is no dictionary '" << contactName << "' in "
+            << props.objectPath() << " (it has: "
+            << flatOutput(props.toc()) << ")" << exit(FatalIOError);
+    }
+    interface = contactInterfaceFromDict
+    (
+        runTime, props, contactName, props.objectPath(), runTime.globalPath(),
+        who
+    );
+    try
+    {
+        surfaceChecksum = interface->surfaceChecksum();
+    }
+    catch (const std::exception& e)
+    {
+        FatalIOErrorInFunction(dict)
+            << who.c_str() << ": entry 'contact " << contactName
+            << "' (" << props.objectPath() << "): the surface's checksum: "
+            << e.what() << exit(FatalIOError);
+    }
+    contactDigest = entryText(props.subDict(contactName));
+    contactCheckedTimeIndex = runTime.timeIndex();
+    checkRecordedSurface(dict, who, fieldFile);
+
+    // The width of the gap where the surfaces do not touch (P <= 0).
+    const bool hasGap = dict.found("gap");
+    const bool hasGapField = dict.found("gapField");
+    if (hasGap || hasGapField)
+    {
+        if (hasGap && hasGapField)
+        {
+            FatalIOErrorInFunction(dict)
+                << who.c_str() << ": give at most one of the entries 'gap'"
+                << " (a uniform gap width [m] of faces apart) and 'gapField'"
+                << " (the name of a volScalarField of gap widths [m])"
+                << exit(FatalIOError);
+        }
+        if (!interface->hasGap())
+        {
+            FatalIOErrorInFunction(dict)
+                << who.c_str() << ": entry '"
+                << (hasGap ? "gap" : "gapField") << "': the contact '"
+                << contactName << "' of " << props.objectPath() << " has no"
+                << " gap sub-dictionary (gas, emissivity), so nothing would"
+                << " cross the gap: add one, or remove this entry"
+                << exit(FatalIOError);
+        }
+        if (hasGap)
+        {
+            gapWidth = dict.get<scalar>("gap");
+            if (!(gapWidth >= 0) || !std::isfinite(gapWidth))
+            {
+                FatalIOErrorInFunction(dict)
+                    << who.c_str() << ": entry 'gap' must be a finite gap"
+                    << " width >= 0 [m], got " << gapWidth
+                    << exit(FatalIOError);
+            }
+        }
+        else
+        {
+            gapFieldName = dict.get<word>("gapField");
+        }
+    }
+}
+
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::thermalContactSettings::checkRecordedSurface
+(
+    const dictionary& dict,
+    const string& who,
+    const fileName& fieldFile
+) const
+{
+    string recorded;
+    if (!dict.readIfPresent("surfaceChecksum", recorded))
+    {
+        return;
+    }
+    if (recorded != surfaceChecksum)
+    {
+        WarningInFunction
+            << who.c_str() << ": the field file "
+            << fieldFile << " records the surface of"
+            << " the run that wrote it as surfaceChecksum " << recorded.c_str()
+            << ", but the surface of contact '" << contactName
+            << "' now read (" << interface->surface().source().c_str()
+            << ") has the checksum " << surfaceChecksum.c_str() << "."
+            << " The surface has changed since the recorded run: h and"
+            << " A_r/A_n will change from that run's." << endl;
+    }
+}
+
+
+void Foam::thermalContactSettings::checkContactUnchanged
+(
+    const Time& runTime,
+    const string& who
+)
+{
+    if
+    (
+        warnedChanged
+     || runTime.timeIndex() == contactCheckedTimeIndex
+    )
+    {
+        return;
+    }
+    // Files are re-read between time steps: one comparison per step.
+    contactCheckedTimeIndex = runTime.timeIndex();
+    const IOdictionary& props =
+        runTime.lookupObject<IOdictionary>("thermalContactProperties");
+    const dictionary* entry = props.findDict(contactName);
+    if (!entry || entryText(*entry) != contactDigest)
+    {
+        WarningInFunction
+            << who.c_str() << ": entry '" << contactName << "' of "
+            << props.objectPath() << " has been "
+            << (entry ? "changed" : "removed") << " during the run. The"
+            << " change is ignored: the contact table stays as it was built"
+            << " at the start (surface, materials, model, pressure range)"
+            << " until the run is restarted." << endl;
+        warnedChanged = true;
+    }
+}
+
+
+
+void Foam::thermalContactSettings::write(Ostream& os) const
+{
+    os.writeEntry("Tnbr", Tnbr);
+    if (mode == conductanceMode::constantH)
+    {
+        os.writeEntry("h", hConstant);
+        return;
+    }
+    os.writeEntry("contact", contactName);
+    // What this run used: a restart compares it (checkRecordedSurface).
+    os.writeEntry("surfaceChecksum", surfaceChecksum);
+}
+
+
+void Foam::thermalContactSettings::writeGap(Ostream& os) const
+{
+    if (!gapFieldName.empty())
+    {
+        os.writeEntry("gapField", gapFieldName);
+    }
+    else if (gapWidth >= 0)
+    {
+        os.writeEntry("gap", gapWidth);
+    }
+}
