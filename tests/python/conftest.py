@@ -17,7 +17,7 @@ SOURCE_DIR = pathlib.Path(os.environ.get("ROUGHCONTACT_SOURCE_DIR", pathlib.Path
 STANDIN = str(SOURCE_DIR / "data" / "standin-2454.csv")
 DEKTAK = str(SOURCE_DIR / "data" / "dektak-1.csv")
 X3P = str(SOURCE_DIR / "data" / "x3p-2.x3p")
-# The seed's steel against a rigid flat (README: "A first result from the core").
+# The seed's steel against a rigid flat (docs/install.md: "A first result from the core").
 STEEL = dict(E=179.52e9, nu=0.32, Sy=0.2e9)
 STEEL_ARGS = ["--E", "179.52e9", "--nu", "0.32", "--Sy", "0.2e9"]
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // multiscaleContact's options turned into the core's objects: the loads, the surfaces, their
 // roughness, the materials, the cap, the grid sizes. Each error is a ParameterError naming the
-// option (the README's exit status 1), raised before anything is solved.
+// option (exit status 1, docs/cli.md), raised before anything is solved.
 #pragma once
 
 #include "Options.hpp"

@@ -55,7 +55,7 @@ struct Options {
 };
 
 /// Every option and flag of multiscaleContact on app, read into o (their help texts are the
-/// README's table of the CLI; --help prints them).
+/// docs/cli.md's table of the CLI; --help prints them).
 void addOptions(CLI::App& app, Options& o);
 
 } // namespace multiscaleContact

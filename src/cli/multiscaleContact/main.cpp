@@ -35,7 +35,7 @@ int main(int argc, char** argv)
             throw CLI::RequiredError("--loads, --load-range or --pressures");
         }
     } catch (const CLI::ParseError& e) {
-        // CLI11 prints the message (or the help); its own codes (104-114) become the README's 1.
+        // CLI11 prints the message (or the help); its own codes (104-114) become 1 (docs/cli.md).
         return app.exit(e) == 0 ? 0 : 1;
     }
     try {

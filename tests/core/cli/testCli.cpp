@@ -89,7 +89,7 @@ int column(const Csv& csv, const std::string& name)
     return 0;
 }
 
-// An error: exit status 1 (the README's), nothing on stdout, a message on stderr containing each
+// An error: exit status 1 (docs/cli.md), nothing on stdout, a message on stderr containing each
 // of `needles`.
 void expectError(const std::string& args, const std::vector<std::string>& needles)
 {

@@ -55,7 +55,7 @@ struct PolonskyKeerOptions {
     CappedMethod cappedMethod = CappedMethod::conjugateGradient;
     /// Elastic solve: precondition the conjugate directions with the half-space's stiffness
     /// (HalfSpaceOperator::applyStiffness, Vollebregt 2014): the same solution in fewer
-    /// iterations of one more FFT pair each (README, benchmarks).
+    /// iterations of one more FFT pair each (docs/benchmarks.md).
     bool precondition = true;
     /// Called every progressEvery seconds while a solve runs (optional).
     SolveProgressCallback progress;

@@ -3,7 +3,7 @@
 // needs, and a factory. Each law turns the nominal pressure P into h_c/k_s [1/m]; the real
 // contact area is the contact model's business (the multi-scale model's in the boundary
 // condition), the conductance the law's. docs/validation/fidelity.md measures every law against
-// the exact (boundary-element) conductance; README.md ("The models") quotes the result.
+// the exact (boundary-element) conductance; docs/models.md quotes the result.
 //
 //   jacksonBhavnaniFerguson  the multi-scale constriction resistances in series, each level's
 //                            spots in flux tubes (ConstrictionConductance.hpp; Jackson,
@@ -75,7 +75,7 @@ std::optional<double> conductanceLawHardness(std::optional<double> microhardness
 
 /// Every law's name, in the order the documentation lists them.
 const std::vector<std::string>& conductanceLawNames();
-/// The law the boundary condition and the CLI use unless told otherwise (README.md says why).
+/// The law the boundary condition and the CLI use unless told otherwise (docs/models.md says why).
 const std::string& defaultConductanceLaw();
 /// True for a name in conductanceLawNames().
 bool isConductanceLaw(const std::string& name);

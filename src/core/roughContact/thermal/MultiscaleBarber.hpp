@@ -47,7 +47,7 @@
 // What it rests on and how right it is: Barber's relation is exact for elastic contact; (B2) is
 // Yang & Persson's approximation; the multi-scale areas are the model's (2-3 times the exact ones
 // on the synthetic surfaces of docs/validation/fidelity.md), so this law is measured there, not
-// trusted: see README "How right each model is". Elastic contact only.
+// trusted: see docs/models.md, "How right each model is". Elastic contact only.
 #pragma once
 
 #include <cstddef>
