@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <string>
 
@@ -103,6 +105,11 @@ TEST(InterfaceRegime, FromTheDefinitions)
     EXPECT_FALSE(e.plasticityIndex.has_value());
     EXPECT_FALSE(e.low.perHardness.has_value());
     EXPECT_NE(e.describe().find("elastic (no hardness)"), std::string::npos) << e.describe();
+    // Two ends: two lines; one pressure (a CLI run at one load): one line, not the same twice.
+    const auto lines = [](const std::string& t) { return std::count(t.begin(), t.end(), '\n'); };
+    EXPECT_EQ(lines(e.describe()), 2) << e.describe();
+    const InterfaceRegime one = interfaceRegime(s, Ep, std::nullopt, "persson", "hertz", false, 1e6, 1e6);
+    EXPECT_EQ(lines(one.describe()), 1) << one.describe();
 }
 
 TEST(InterfaceRegime, TheInterfaceSaysItsRegimeAtTheTablesEnds)

@@ -82,6 +82,9 @@ std::string InterfaceRegime::describe() const
         os << ", elastic (no hardness)";
     }
     for (const RegimeAt* r : {&low, &high}) {
+        if (r == &high && high.pressure == low.pressure) {
+            break; // one pressure (a run at one load): said once
+        }
         os << "\n    at " << r->pressure << " Pa: p/E' = " << r->load << ", p/(E' h') = " << r->loadPerGradient;
         if (r->perHardness) {
             os << ", P/H = " << *r->perHardness;
