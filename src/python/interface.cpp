@@ -42,9 +42,11 @@ std::string argumentOf(const std::string& key)
     if (key == "file") {
         return "path";
     }
+    // camelCase to snake_case after a lower-case letter; a name in capitals (Rq, Ra, D, G) stays.
     std::string out;
-    for (char c : key) {
-        if (c >= 'A' && c <= 'Z') {
+    for (std::size_t i = 0; i < key.size(); ++i) {
+        const char c = key[i];
+        if (c >= 'A' && c <= 'Z' && i > 0 && key[i - 1] >= 'a' && key[i - 1] <= 'z') {
             out += '_';
             out += static_cast<char>(c - 'A' + 'a');
         } else {
@@ -190,6 +192,24 @@ void bindInterface(py::module_& m)
             py::arg("path"), py::arg("units") = py::none(), py::arg("dx") = py::none(), py::arg("dy") = py::none(),
             py::arg("fill_invalid") = false, py::arg("direction") = "x",
             "An areal file (read_areal's options) and the line scans that make its spectrum.")
+        .def_static(
+            "from_roughness",
+            [](std::optional<double> Rq, double slope, std::optional<double> Ra, std::optional<double> cutoff,
+               std::optional<double> shortCutoff) {
+                SpecValues v = arguments("SurfaceSpec.from_roughness");
+                v.set("type", std::string("roughness"));
+                setIf(v, "Rq", Rq);
+                setIf(v, "Ra", Ra);
+                v.set("slope", slope);
+                setIf(v, "cutoff", cutoff);
+                setIf(v, "shortCutoff", shortCutoff);
+                return surfaceOf(v);
+            },
+            py::kw_only(), py::arg("Rq") = py::none(), py::arg("slope"), py::arg("Ra") = py::none(),
+            py::arg("cutoff") = py::none(), py::arg("short_cutoff") = py::none(),
+            "The self-affine surface of rms height Rq [m] (or Ra [m] of Gaussian heights) and rms slope "
+            "`slope` over wavelengths short_cutoff to cutoff [m] (default 2.5e-6 to 0.8e-3, ISO 3274/4288); "
+            "its Hurst exponent is found from slope/Rq (docs/theory.md §1.4).")
         .def("read_spectrum", &SurfaceSpec::spectrum, "The surface's spectrum (reads the file; a Spectrum).")
         .def("roughness", &SurfaceSpec::roughness, "Its sigma [m] and mean absolute slope.");
 

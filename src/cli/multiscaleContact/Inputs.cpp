@@ -440,6 +440,13 @@ std::vector<SurfaceSpec> surfaceSpecsOf(const Options& o)
             v->set(keys[i], o.powerLaw[i], "--power-law");
         }
     }
+    if (!o.roughness.empty()) {
+        SpecValues* v = add("roughness", "--roughness", "");
+        const char* keys[] = {"Rq", "slope", "cutoff", "shortCutoff"};
+        for (std::size_t i = 0; i < o.roughness.size() && i < 4; ++i) {
+            v->set(keys[i], o.roughness[i], "--roughness");
+        }
+    }
     if (!o.fractal.empty()) {
         SpecValues* v = add("fractal", "--fractal", "");
         const char* keys[] = {"D", "G", "fmin", "fmax"};

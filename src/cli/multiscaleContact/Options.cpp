@@ -44,6 +44,13 @@ void addOptions(CLI::App& app, Options& o)
                      "D,G,FMIN,FMAX: Majumdar-Bhushan (Weierstrass-Mandelbrot) spectrum, G in m")
         ->delimiter(',')
         ->expected(4);
+    surface
+        ->add_option("--roughness", o.roughness,
+                     "RQ,SLOPE[,CUTOFF[,SHORTCUTOFF]]: the self-affine surface of rms height RQ [m] and rms "
+                     "slope SLOPE over wavelengths SHORTCUTOFF to CUTOFF [m] (default 2.5e-6 to 0.8e-3: ISO "
+                     "3274/4288), its Hurst exponent found from SLOPE/RQ")
+        ->delimiter(',')
+        ->expected(2, 4);
     surface->require_option(1);
 
     app.add_option("--units", o.units,

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -181,6 +182,24 @@ TEST(InterfaceSpecReader, ScanLengthIsFiniteAndPositive)
     const SurfaceSpec spec = readSurfaceSpec(s);
     EXPECT_EQ(*spec.length, 5e-4);
     EXPECT_EQ(spec.parameters, (std::vector<double>{6e-4, 1.3, 2e3, 2e6}));
+}
+
+TEST(InterfaceSpecReader, RoughnessTakesRqOrRaAndTheSlope)
+{
+    SpecValues s("surface", dashed);
+    s.set("type", std::string("roughness")).set("Ra", 0.4e-6).set("slope", 0.1);
+    SurfaceSpec spec = readSurfaceSpec(s);
+    ASSERT_EQ(spec.parameters.size(), 4u);
+    EXPECT_DOUBLE_EQ(spec.parameters[0], std::sqrt(M_PI / 2.0) * 0.4e-6);
+    EXPECT_EQ(spec.parameters[2], 0.8e-3);  // the cut-offs' defaults
+    EXPECT_EQ(spec.parameters[3], 2.5e-6);
+    s.set("Rq", 0.5e-6);
+    messageOf([&] { readSurfaceSpec(s); }, "--Ra");
+    SpecValues noSlope("surface", dashed);
+    noSlope.set("type", std::string("roughness")).set("Rq", 0.5e-6).set("cutoff", 2.5e-3);
+    messageOf([&] { readSurfaceSpec(noSlope); }, "--slope");
+    noSlope.set("slope", 0.05);
+    EXPECT_EQ(readSurfaceSpec(noSlope).parameters[2], 2.5e-3);
 }
 
 TEST(InterfaceSpecReader, PowerLawAndFractalNameTheirMissingParameter)

@@ -4,6 +4,7 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/io/SpectrumReader.hpp"
 #include "roughContact/models/ModelFactory.hpp"
+#include "roughContact/surface/RoughnessSpectrum.hpp"
 #include "roughContact/surface/SurfaceChecksum.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
@@ -54,6 +55,12 @@ Spectrum SurfaceSpec::spectrum() const
         needParameters("fractal (D, G, fmin, fmax)");
         return Spectrum::fractal(parameters[0], parameters[1], parameters[2], parameters[3],
                                  length.value_or(0.0));
+    case Kind::roughness:
+        needParameters("roughness (Rq, slope, cutoff, shortCutoff)");
+        if (length) {
+            throw ParameterError("length", "has no meaning for a roughness surface, whose scan length is its cutoff");
+        }
+        return roughnessSpectrum(parameters[0], parameters[1], parameters[2], parameters[3]).spectrum;
     }
     throw ParameterError("surface", "unknown kind");
 }

@@ -30,7 +30,7 @@ namespace roughContact {
 
 /// One rough surface as a user describes it.
 struct SurfaceSpec {
-    enum class Kind { profile, spectrum, powerLaw, fractal, areal };
+    enum class Kind { profile, spectrum, powerLaw, fractal, areal, roughness };
     Kind kind = Kind::profile;
     std::string file;                  ///< profile, spectrum or areal (X3P or matrix) file
     ProfileReadOptions profileOptions; ///< units, spacing of one-column profiles
@@ -40,7 +40,8 @@ struct SurfaceSpec {
     ScanDirection direction = ScanDirection::x;
     std::size_t stride = 1;            ///< use every stride-th profile sample
     std::optional<double> length;      ///< scan length [m] of a spectrum or power law
-    /// powerLaw: b_m [m], m, fmin, fmax [1/m]; fractal: D, G [m], fmin, fmax [1/m].
+    /// powerLaw: b_m [m], m, fmin, fmax [1/m]; fractal: D, G [m], fmin, fmax [1/m]; roughness:
+    /// Rq [m], the rms slope Rdq, the cut-offs lambda_c, lambda_s [m] (RoughnessSpectrum.hpp).
     std::vector<double> parameters;
 
     /// The surface's spectrum (reads the file; InputError/ParameterError on bad input).

@@ -5,6 +5,7 @@
 #include "roughContact/io/Numbers.hpp"
 #include "roughContact/io/Units.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
+#include "roughContact/surface/RoughnessSpectrum.hpp"
 #include "roughContact/thermal/Gas.hpp"
 
 #include <algorithm>
@@ -95,13 +96,14 @@ std::string required(const SpecSource& source, const std::string& key, const std
 
 const std::vector<std::string>& surfaceTypeNames()
 {
-    static const std::vector<std::string> names{"profile", "spectrum", "powerLaw", "fractal", "areal"};
+    static const std::vector<std::string> names{"profile", "spectrum", "powerLaw", "fractal", "areal", "roughness"};
     return names;
 }
 
 SurfaceSpec::Kind parseSurfaceKind(const std::string& text, const std::string& what)
 {
-    static const Kind kinds[] = {Kind::profile, Kind::spectrum, Kind::powerLaw, Kind::fractal, Kind::areal};
+    static const Kind kinds[] = {Kind::profile, Kind::spectrum, Kind::powerLaw, Kind::fractal, Kind::areal,
+                                 Kind::roughness};
     const std::vector<std::string>& names = surfaceTypeNames();
     for (std::size_t i = 0; i < names.size(); ++i) {
         if (text == names[i]) {
@@ -118,7 +120,10 @@ const std::vector<std::string>& surfaceEntries(SurfaceSpec::Kind kind)
     static const std::vector<std::string> powerLaw{"type", "bm", "m", "fmin", "fmax", "length"};
     static const std::vector<std::string> fractal{"type", "D", "G", "fmin", "fmax", "length"};
     static const std::vector<std::string> areal{"type", "file", "units", "dx", "dy", "fillInvalid", "direction"};
+    static const std::vector<std::string> roughness{"type", "Rq", "Ra", "slope", "cutoff", "shortCutoff"};
     switch (kind) {
+    case Kind::roughness:
+        return roughness;
     case Kind::profile:
         return profile;
     case Kind::spectrum:
@@ -221,6 +226,20 @@ SurfaceSpec readSurfaceSpec(const SpecSource& source)
             s.direction = named(source, "direction", [&] { return parseScanDirection(source.word("direction")); });
         }
         break;
+    case Kind::roughness: {
+        // Rq, or Ra of Gaussian heights; the rms slope; the band (RoughnessSpectrum.hpp).
+        if (source.has("Rq") == source.has("Ra")) {
+            throw ParameterError(source.name(source.has("Rq") ? "Ra" : "Rq"),
+                                 "give one of Rq (the rms height [m]) and Ra (the mean absolute height [m], "
+                                 "of Gaussian heights: Rq = sqrt(pi/2) Ra)");
+        }
+        const double Rq = source.has("Rq") ? source.number("Rq")
+                                           : named(source, "Ra", [&] { return rqFromRa(source.number("Ra")); });
+        const double slope = source.number(required(source, "slope", "the rms slope Rdq of the profile"));
+        s.parameters = {Rq, slope, source.has("cutoff") ? source.number("cutoff") : defaultLongCutoff,
+                        source.has("shortCutoff") ? source.number("shortCutoff") : defaultShortCutoff};
+        break;
+    }
     case Kind::powerLaw:
     case Kind::fractal: {
         const bool power = s.kind == Kind::powerLaw;
