@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Options.hpp"
 
+#include "roughContact/Error.hpp"
+#include "roughContact/io/Numbers.hpp"
+#include "roughContact/io/Units.hpp"
 #include "roughContact/models/ModelFactory.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
 
@@ -10,6 +13,42 @@
 using namespace roughContact;
 
 namespace multiscaleContact {
+
+namespace {
+
+// An option that takes a number with a unit suffix (roughContact::parseQuantity: 1MPa, 200GPa,
+// 0.8um): CLI11 reads the SI number it stands for. Comma-separated items are converted one by
+// one (a plain number, an empty item stay as written, for the option's own checks; `none` stays
+// where a solid may not yield). A bad unit is CLI11's error naming the option.
+CLI::Option* withUnits(CLI::Option* option, roughContact::Quantity quantity, bool allowNone = false)
+{
+    const std::string name = option->get_name();
+    return option->transform([name, quantity, allowNone](std::string text) {
+        std::string out;
+        std::size_t start = 0;
+        while (true) {
+            const std::size_t comma = text.find(',', start);
+            const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+            double plain = 0.0;
+            if (!item.empty() && !(allowNone && item == "none") && !roughContact::parseNumber(item, plain)) {
+                try {
+                    out += roughContact::formatNumber(roughContact::parseQuantity(item, quantity, name), 17);
+                } catch (const roughContact::ParameterError& e) {
+                    throw CLI::ValidationError(e.message()); // CLI11 names the option
+                }
+            } else {
+                out += item;
+            }
+            if (comma == std::string::npos) {
+                return out;
+            }
+            out += ',';
+            start = comma + 1;
+        }
+    });
+}
+
+} // namespace
 
 void addOptions(CLI::App& app, Options& o)
 {
@@ -64,9 +103,10 @@ void addOptions(CLI::App& app, Options& o)
     app.add_flag("--fill-invalid", o.fillInvalid,
                  "fill the invalid points of an --areal X3P file with the mean of their valid neighbours "
                  "(default: they are an error)");
-    app.add_option("--length", o.length,
-                   "scan length L [m] for --spectrum/--power-law/--fractal "
-                   "(default 1/lowest frequency); A_n = L^2");
+    withUnits(app.add_option("--length", o.length,
+                             "scan length L [m] (or with a unit: 0.5mm) for --spectrum/--power-law/--fractal "
+                             "(default 1/lowest frequency); A_n = L^2"),
+              roughContact::Quantity::length);
     app.add_option("--stride", o.stride,
                    "use every K-th profile sample (sampling interval K dx; seed Fig. 8)")
         ->check(CLI::Range(std::size_t(1), std::size_t(1000000000)));
@@ -95,33 +135,40 @@ void addOptions(CLI::App& app, Options& o)
                    "boundaryElement: what is removed from the heights before the solve: none, mean or plane "
                    "(default: mean for a periodic solve, which has no trend to remove; plane for a "
                    "non-periodic map, whose fixture tilts it)");
-    app.add_option("--hardness", o.hardness, "boundaryElement: perfectly plastic cap p <= H [Pa]");
+    withUnits(app.add_option("--hardness", o.hardness, "boundaryElement: perfectly plastic cap p <= H [Pa]"),
+              roughContact::Quantity::pressure);
     app.add_option("--pressure-map", o.pressureMap,
                    "boundaryElement: write the contact pressure [Pa] at the highest load to this file, as a "
                    "text matrix (rows along x, one per line)");
     app.add_flag("--hardness-from-yield", o.hardnessFromYield,
                  "boundaryElement: the cap H = 2.84 S_y (--Sy of the yielding material)");
 
-    auto* E = app.add_option("--E", o.E, "Young's modulus [Pa]; E1,E2 for two solids")
+    auto* E = withUnits(app.add_option("--E", o.E, "Young's modulus [Pa] (or with a unit: 200GPa); E1,E2 for two "
+                                                   "solids"),
+                        roughContact::Quantity::pressure)
                   ->delimiter(',')
                   ->expected(1, 2);
     app.add_option("--nu", o.nu, "Poisson's ratio; nu1,nu2 with two moduli")->delimiter(',')->expected(1, 2);
-    auto* Ep = app.add_option("--Eprime", o.Eprime, "reduced modulus E' [Pa] instead of --E/--nu");
+    auto* Ep = withUnits(app.add_option("--Eprime", o.Eprime, "reduced modulus E' [Pa] instead of --E/--nu"),
+                         roughContact::Quantity::pressure);
     E->excludes(Ep);
-    app.add_option("--Sy", o.Sy,
-                   "yield strength [Pa] (jacksonGreen, truncation, greenwoodWilliamsonJG, "
-                   "majumdarBhushan); Sy1,Sy2 with two moduli, none for a solid that does not yield "
-                   "(Sy1,none)")
+    withUnits(app.add_option("--Sy", o.Sy,
+                             "yield strength [Pa] (or with a unit: 400MPa; jacksonGreen, truncation, "
+                             "greenwoodWilliamsonJG, majumdarBhushan); Sy1,Sy2 with two moduli, none for a solid "
+                             "that does not yield (Sy1,none)"),
+              roughContact::Quantity::pressure, true)
         ->delimiter(',')
         ->expected(1, 2);
 
     auto* loads = app.add_option("--loads", o.loads, "loads F/(A_n E'), comma separated: 0, or 1e-30 to 1e4");
     auto* range = app.add_option("--load-range", o.loadRange, "MIN:MAX:N, N loads log spaced");
     loads->excludes(range);
-    auto* pressures = app.add_option("--pressures", o.pressures,
-                                     "nominal pressures F/A_n [Pa], comma separated, instead of --loads: each is "
-                                     "the load P/E' (E' from --E/--nu or --Eprime); the output gains a first "
-                                     "column nominal_pressure [Pa]");
+    auto* pressures = withUnits(app.add_option("--pressures", o.pressures,
+                                               "nominal pressures F/A_n [Pa] (or with a unit: 1MPa), comma "
+                                               "separated, instead of --loads: each is the load P/E' (E' from "
+                                               "--E/--nu or --Eprime); the output gains a first column "
+                                               "nominal_pressure [Pa]"),
+                                roughContact::Quantity::pressure);
     pressures->excludes(loads);
     pressures->excludes(range);
 

@@ -744,7 +744,8 @@ TEST(Cli, PressuresErrors)
     expectError(surface + " --Eprime 2e11 --pressures 1e6 --loads 1e-5", {"--loads", "--pressures"});
     expectError(surface + " --Eprime 2e11 --pressures 1e6 --load-range 1e-5:1e-4:3", {"--pressures"});
     expectError(surface + " --Eprime 2e11 --pressures=-1", {"--pressures", ">= 0 Pa"});
-    expectError(surface + " --Eprime 2e11 --pressures 1e6,oops", {"--pressures", "'oops' is not a finite number"});
+    // (a word is read as a number with a unit, which it is not: the units' message)
+    expectError(surface + " --Eprime 2e11 --pressures 1e6,oops", {"--pressures", "'oops' is not a number with an optional unit"});
     expectError(surface + " --Eprime 2e11 --pressures 1e6,", {"--pressures", "empty item"});
     expectError(surface + " --Eprime 2e11 --pressures 1e20", {"--pressures", "1e+20 Pa", "E' = 2e+11 Pa"});
     expectError(surface + " --Eprime 2e11", {"--loads, --load-range or --pressures"});
@@ -898,4 +899,22 @@ TEST(Cli, TableIsTheLibrarysBoundaryElementCache)
                 "--nu 0.3 --table '" + file + "'",
                 {"--table", "two solids"});
     expectError(args + " --loads 1e-4", {"--loads", "--table"});
+}
+
+// Unit suffixes (roughContact::parseQuantity): --E 200GPa, --Sy 400MPa, --pressures 1MPa and
+// --length 0.5mm give the bytes the SI numbers give; a unit of another quantity or an unknown
+// one is an error naming the option.
+TEST(Cli, UnitSuffixesAreTheSINumbers)
+{
+    const std::string p = "--profile '" + standin + "' --model jacksonGreen --nu 0.3,0.3 --conductance";
+    const CommandResult si = run(p + " --E 200e9,70e9 --Sy 4e8,none --pressures 1e6,2.5e5");
+    const CommandResult units = run(p + " --E 200GPa,70GPa --Sy 400MPa,none --pressures 1MPa,250kPa");
+    ASSERT_EQ(si.status, 0) << si.err;
+    EXPECT_EQ(units.status, 0) << units.err;
+    EXPECT_EQ(units.out, si.out);
+    const std::string w = "--power-law 6e-4,1.3,2e3,2e6 --model hertz --E 200e9 --nu 0.3 --loads 1e-4";
+    EXPECT_EQ(run(w + " --length 0.5mm").out, run(w + " --length 5e-4").out);
+    expectError(p + " --E 200GPa,70GPa --pressures 1um", {"--pressures", "is not a pressure"});
+    expectError(p + " --E 200Gpa,70GPa --pressures 1e6", {"--E", "unknown unit 'Gpa'"});
+    expectError(p + " --E 200GPa,70GPa --Sy 400MPa,soft --pressures 1e6", {"--Sy", "soft"});
 }

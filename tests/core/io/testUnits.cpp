@@ -83,3 +83,37 @@ TEST(Units, anInvalidEnumValueThrowsRatherThanReturningGarbage)
     EXPECT_THROW(metresPer(bad), ParameterError);
     EXPECT_THROW(toString(bad), ParameterError);
 }
+
+// Numbers with a unit suffix (parseQuantity): SI without one; each unit's factor; a space
+// allowed; the unit of another quantity, an unknown one (case matters) or no number refused,
+// naming the entry.
+TEST(Units, quantitiesWithASuffixAreSI)
+{
+    using roughContact::Quantity;
+    using roughContact::parseQuantity;
+    EXPECT_EQ(parseQuantity("1e6", Quantity::pressure, "p"), 1e6);
+    EXPECT_EQ(parseQuantity("1MPa", Quantity::pressure, "p"), 1e6);
+    EXPECT_EQ(parseQuantity("1 MPa", Quantity::pressure, "p"), 1e6);
+    EXPECT_EQ(parseQuantity("200GPa", Quantity::pressure, "p"), 200e9);
+    EXPECT_EQ(parseQuantity("400kPa", Quantity::pressure, "p"), 400e3);
+    EXPECT_EQ(parseQuantity("0.4e9Pa", Quantity::pressure, "p"), 0.4e9);
+    EXPECT_EQ(parseQuantity("0.8um", Quantity::length, "L"), 0.8 * 1e-6);
+    EXPECT_EQ(parseQuantity("2.5 \xC2\xB5m", Quantity::length, "L"), 2.5 * 1e-6);
+    EXPECT_EQ(parseQuantity("2.5\xCE\xBCm", Quantity::length, "L"), 2.5 * 1e-6);
+    EXPECT_EQ(parseQuantity("1mm", Quantity::length, "L"), 1e-3);
+    EXPECT_EQ(parseQuantity("5e-4m", Quantity::length, "L"), 5e-4);
+    EXPECT_EQ(parseQuantity("20nm", Quantity::length, "L"), 20 * 1e-9);
+    for (const char* bad : {"1um", "1mPa", "1Gpa", "MPa", "", "1e6 MPa x", "abcPa"}) {
+        try {
+            parseQuantity(bad, Quantity::pressure, "--pressures");
+            ADD_FAILURE() << "accepted '" << bad << "'";
+        } catch (const roughContact::ParameterError& e) {
+            EXPECT_EQ(e.parameter(), "--pressures") << e.what();
+        }
+    }
+    try {
+        parseQuantity("1um", Quantity::pressure, "--E");
+    } catch (const roughContact::ParameterError& e) {
+        EXPECT_NE(std::string(e.what()).find("is not a pressure"), std::string::npos) << e.what();
+    }
+}
