@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Reading an areal surface from a file of either format.
 #include "roughContact/io/ArealReader.hpp"
+#include "roughContact/io/NpyReader.hpp"
 
 #include "roughContact/Error.hpp"
 #include "roughContact/io/MatrixReader.hpp"
@@ -44,14 +45,14 @@ ArealSurface readAreal(const std::string& path, const ArealReadOptions& options)
         return readX3p(path, x3p);
     }
     if (options.fillInvalid) {
-        throw ParameterError("fillInvalid", "is for X3P files (invalid points); a text matrix has none: a "
-                                            "NaN in it is an error");
+        throw ParameterError("fillInvalid", "is for X3P files (invalid points); a text matrix or a .npy array "
+                                            "has none: a NaN in it is an error");
     }
     MatrixReadOptions matrix;
     matrix.units = options.units.value_or(LengthUnit::m);
     matrix.dx = options.dx;
     matrix.dy = options.dy;
-    return readMatrix(path, matrix);
+    return isNpyPath(path) ? readNpy(path, matrix) : readMatrix(path, matrix);
 }
 
 } // namespace roughContact

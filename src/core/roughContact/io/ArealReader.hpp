@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Reading an areal surface (height map) from a file of either format: an X3P file or a text
-// matrix (io/X3pReader, io/MatrixReader).
+// matrix or a NumPy .npy array (io/X3pReader, io/MatrixReader, io/NpyReader).
 #pragma once
 
 #include "roughContact/io/Units.hpp"
@@ -28,7 +28,8 @@ struct ArealReadOptions {
 /// True when path names an X3P file (it ends in ".x3p", any case).
 bool isX3pPath(const std::string& path);
 
-/// readX3p for an X3P file (isX3pPath), readMatrix otherwise. Throws ParameterError naming the
+/// readX3p for an X3P file (isX3pPath), readNpy for a NumPy .npy array (isNpyPath), readMatrix
+/// otherwise (a text matrix; dx, dy and units apply to .npy as to it). Throws ParameterError naming the
 /// option ("dx", "dy", "units", "fillInvalid") given for the wrong format.
 ArealSurface readAreal(const std::string& path, const ArealReadOptions& options);
 
