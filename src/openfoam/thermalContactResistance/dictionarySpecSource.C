@@ -9,6 +9,7 @@
 #include "scalarList.H"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/io/Numbers.hpp"
 
 #include <cmath>
 
@@ -125,7 +126,8 @@ std::uint64_t dictionarySpecSource::whole(const std::string& key) const
         }
         throw roughContact::ParameterError
         (
-            name(key), "expects a whole number >= 0, got " + std::to_string(d)
+            name(key), "expects a whole number >= 0, got "
+          + roughContact::formatNumber(d, 17)
         );
     }
     // Not a number at all: OpenFOAM's own error, naming the entry
