@@ -24,6 +24,10 @@ constexpr double maximumLength = 1e3;
 /// Heights and spectral amplitudes [m], in magnitude (a profile's heights before its mean and
 /// tilt are removed included).
 constexpr double maximumHeight = 1e3;
+/// An rms slope Rdq (RoughnessSpectrum.hpp): measured surfaces have 0.001 to a few; the bounds
+/// keep (Rdq/Rq)^2 finite for every accepted Rq (at most (1e3/1e-15)^2 = 1e36).
+constexpr double minimumSlope = 1e-9;
+constexpr double maximumSlope = 1e3;
 /// rms roughness [m] below which a surface is refused: a femtometre is the size of a nucleus,
 /// so a smaller rms is a unit mistake; exactly zero is refused as perfectly smooth (no contact
 /// resistance to model).

@@ -632,7 +632,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
         }
         else
         {
-            settings_.checkContactUnchanged(db().time(), who());
+            settings_.checkContactUnchanged(db().time(), [this] { return who(); });
             in.pressure = myP.cdata();
             in.pressureNbr = nbrP.cdata();
             in.cellTemperatureNbr = nbrT.cdata();

@@ -231,7 +231,7 @@ void Foam::thermalContactSettings::checkRecordedSurface
 void Foam::thermalContactSettings::checkContactUnchanged
 (
     const Time& runTime,
-    const string& who
+    const std::function<string()>& who
 )
 {
     if
@@ -250,7 +250,7 @@ void Foam::thermalContactSettings::checkContactUnchanged
     if (!entry || entryText(*entry) != contactDigest)
     {
         WarningInFunction
-            << who.c_str() << ": entry '" << contactName << "' of "
+            << who().c_str() << ": entry '" << contactName << "' of "
             << props.objectPath() << " has been "
             << (entry ? "changed" : "removed") << " during the run. The"
             << " change is ignored: the contact table stays as it was built"

@@ -68,6 +68,9 @@ TEST(RoughnessSpectrum, ARatioNoHurstExponentGivesIsRefusedWithTheRange)
     }
     expectParameterError([] { roughnessSpectrum(1e-9, 10.0); }, "slope"); // far above H -> 0
     expectParameterError([] { roughnessSpectrum(-1e-6, 0.1); }, "Rq");
+    // Out of range before any arithmetic: sqrt(pi/2) Ra and (Rdq/Rq)^2 would overflow.
+    expectParameterError([] { rqFromRa(1.7e308); }, "Ra");
+    expectParameterError([] { roughnessSpectrum(1e-15, 1e300); }, "slope");
     expectParameterError([] { roughnessSpectrum(1e-6, 0.1, 1e-6, 2e-6); }, "shortCutoff");
     expectParameterError([] { roughnessSpectrum(1e-6, 0.1, 1.0, 1e-7); }, "roughness surface"); // 1e7 levels
 }

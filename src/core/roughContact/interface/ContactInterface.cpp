@@ -2,6 +2,7 @@
 #include "roughContact/interface/ContactInterface.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/interface/InterfaceSpecReader.hpp"
 #include "roughContact/io/SpectrumReader.hpp"
 #include "roughContact/models/ModelFactory.hpp"
 #include "roughContact/surface/RoughnessSpectrum.hpp"
@@ -9,6 +10,7 @@
 #include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -16,50 +18,46 @@
 
 namespace roughContact {
 
+void SurfaceSpec::check() const
+{
+    // Which entries go with which kind is surfaceEntries' (InterfaceSpecReader.hpp), once.
+    const std::vector<std::string>& entries = surfaceEntries(kind);
+    const auto takes = [&](const char* key) { return std::find(entries.begin(), entries.end(), key) != entries.end(); };
+    if (stride != 1 && !takes("stride")) {
+        throw ParameterError("stride", "subsamples a profile; this surface is used whole");
+    }
+    if (stride < 1) {
+        throw ParameterError("stride", "must be at least 1 (every stride-th sample), got 0");
+    }
+    if (length && !takes("length")) {
+        throw ParameterError("length", "has no meaning here: a profile's scan length is N dx, an areal map's nx dx "
+                                       "and ny dy, a roughness surface's its cutoff; it is for a spectrum, power "
+                                       "law or fractal");
+    }
+    const bool parametric = kind == Kind::powerLaw || kind == Kind::fractal || kind == Kind::roughness;
+    if (parametric && parameters.size() != 4) {
+        throw ParameterError("parameters", "a " + surfaceTypeNames()[static_cast<std::size_t>(kind)] +
+                                               " surface needs 4 parameters, got " + std::to_string(parameters.size()));
+    }
+}
+
 Spectrum SurfaceSpec::spectrum() const
 {
-    const auto needParameters = [&](const char* what) {
-        if (parameters.size() != 4) {
-            throw ParameterError(what, "needs 4 parameters");
-        }
-    };
+    check();
     switch (kind) {
-    case Kind::profile: {
-        if (stride < 1) {
-            throw ParameterError("stride", "must be at least 1");
-        }
-        if (length) {
-            throw ParameterError("length", "has no meaning for a profile, whose scan length is N dx; it is for a "
-                                           "spectrum, power law or fractal");
-        }
+    case Kind::profile:
         return Spectrum::fromProfile(readProfile(file, profileOptions).subsampled(stride));
-    }
-    case Kind::areal: {
-        if (stride != 1) {
-            throw ParameterError("stride", "subsamples a profile; an areal surface is used whole");
-        }
-        if (length) {
-            throw ParameterError("length",
-                                 "has no meaning for an areal surface, whose scan lengths are nx dx and "
-                                 "ny dy; it is for a spectrum, power law or fractal");
-        }
+    case Kind::areal:
         return lineScanSpectrum(readAreal(file, arealOptions).detrended(), direction);
-    }
     case Kind::spectrum:
         return readSpectrum(file, length);
     case Kind::powerLaw:
-        needParameters("power law (b_m, m, fmin, fmax)");
         return Spectrum::powerLaw(parameters[0], parameters[1], parameters[2], parameters[3],
                                   length.value_or(0.0));
     case Kind::fractal:
-        needParameters("fractal (D, G, fmin, fmax)");
         return Spectrum::fractal(parameters[0], parameters[1], parameters[2], parameters[3],
                                  length.value_or(0.0));
     case Kind::roughness:
-        needParameters("roughness (Rq, slope, cutoff, shortCutoff)");
-        if (length) {
-            throw ParameterError("length", "has no meaning for a roughness surface, whose scan length is its cutoff");
-        }
         return roughnessSpectrum(parameters[0], parameters[1], parameters[2], parameters[3]).spectrum;
     }
     throw ParameterError("surface", "unknown kind");
@@ -67,9 +65,10 @@ Spectrum SurfaceSpec::spectrum() const
 
 SurfaceRoughness SurfaceSpec::roughness() const
 {
+    check();
     switch (kind) {
     case Kind::profile:
-        return profileRoughness(readProfile(file, profileOptions).subsampled(std::max<std::size_t>(stride, 1)));
+        return profileRoughness(readProfile(file, profileOptions).subsampled(stride));
     case Kind::areal:
         return arealRoughness(readAreal(file, arealOptions), direction);
     default:

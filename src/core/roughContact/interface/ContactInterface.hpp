@@ -44,7 +44,13 @@ struct SurfaceSpec {
     /// Rq [m], the rms slope Rdq, the cut-offs lambda_c, lambda_s [m] (RoughnessSpectrum.hpp).
     std::vector<double> parameters;
 
-    /// The surface's spectrum (reads the file; InputError/ParameterError on bad input).
+    /// The rules of the description's values, one place for the C++ API and the reader
+    /// (InterfaceSpecReader.hpp): stride >= 1 and only on a profile, length only where the kind
+    /// takes one (surfaceEntries), four parameters for powerLaw, fractal and roughness.
+    /// ParameterError naming the entry ("stride", "length", "parameters").
+    void check() const;
+    /// The surface's spectrum (check(), then reads the file; InputError/ParameterError on bad
+    /// input).
     Spectrum spectrum() const;
     /// Its rms height and mean absolute slope (Roughness.hpp): a profile's and an areal map's
     /// (along `direction`) from their heights, a spectrum's from its moments.

@@ -198,11 +198,7 @@ SurfaceSpec readSurfaceSpec(const SpecSource& source)
             s.profileOptions.spacing = source.number("spacing");
         }
         if (source.has("stride")) {
-            const std::uint64_t stride = source.whole("stride");
-            if (stride < 1) {
-                throw ParameterError(source.name("stride"), "must be at least 1 (every stride-th sample), got 0");
-            }
-            s.stride = static_cast<std::size_t>(stride);
+            s.stride = static_cast<std::size_t>(source.whole("stride"));
         }
         break;
     case Kind::spectrum:
@@ -253,6 +249,12 @@ SurfaceSpec readSurfaceSpec(const SpecSource& source)
     }
     if (source.has("length")) {
         s.length = scanLength(source);
+    }
+    // The values' rules are the struct's (SurfaceSpec::check), named as this source names them.
+    try {
+        s.check();
+    } catch (const ParameterError& e) {
+        throw ParameterError(source.has(e.parameter()) ? source.name(e.parameter()) : e.parameter(), e.message());
     }
     return s;
 }

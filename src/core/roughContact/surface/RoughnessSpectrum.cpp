@@ -31,13 +31,15 @@ double slopeRatioSquared(const std::vector<double>& f, double m)
 
 double rqFromRa(double Ra)
 {
-    return std::sqrt(pi / 2.0) * requirePositive("Ra", Ra);
+    // In range first: sqrt(pi/2) Ra of an Ra near the largest double would overflow (a trap in
+    // OpenFOAM).
+    return std::sqrt(pi / 2.0) * limits::requireInRange("Ra", Ra, limits::minimumRoughness, limits::maximumHeight, "m");
 }
 
 RoughnessSpectrum roughnessSpectrum(double Rq, double rmsSlope, double longCutoff, double shortCutoff)
 {
     limits::requireInRange("Rq", Rq, limits::minimumRoughness, limits::maximumHeight, "m");
-    requirePositive("slope", rmsSlope);
+    limits::requireInRange("slope", rmsSlope, limits::minimumSlope, limits::maximumSlope, "");
     const double L = limits::requireLength("cutoff", longCutoff);
     limits::requireLength("shortCutoff", shortCutoff);
     if (!(shortCutoff < L)) {
