@@ -43,7 +43,7 @@ def test_reduced_modulus(steel):
 def test_area_equals_the_cli(cli, spectrum, steel, name):
     r = cli("--profile", STANDIN, "--model", name, *STEEL_ARGS, "--loads", ",".join(map(repr, LOADS)))
     assert r.status == 0, r.err
-    area = r.columns()["area"]
+    area = r.columns()["area_fraction"]
     model = rc.Model(name, spectrum, rc.Material(**STEEL))
     assert model.name == name
     Ep = steel.reduced_modulus
@@ -60,7 +60,7 @@ def test_pressures_equal_the_cli_pressures_option(cli, spectrum, steel):
     c = r.columns()
     np.testing.assert_array_equal(c["nominal_pressure"], P)
     model = rc.Model("jacksonGreen", spectrum, steel)
-    np.testing.assert_allclose(model.area_fraction(P), c["area"], rtol=1e-9)
+    np.testing.assert_allclose(model.area_fraction(P), c["area_fraction"], rtol=1e-9)
     law = rc.ConductanceLaw("jacksonBhavnaniFerguson", model=model)
     np.testing.assert_allclose(law.conductance_per_conductivity(P), c["h_per_k"], rtol=1e-9)
 
@@ -132,12 +132,12 @@ def test_boundary_element_equals_the_cli(cli, spectrum):
     for key in ("pressure", "load", "area_fraction", "mean_separation", "conductance_per_conductivity"):
         assert curve[key].shape == (2,) and curve[key].dtype == np.float64
     np.testing.assert_allclose(curve["load"], [1e-5, 1e-4], rtol=1e-15)
-    np.testing.assert_allclose(curve["area_fraction"], c["area"], rtol=1e-9)
+    np.testing.assert_allclose(curve["area_fraction"], c["area_fraction"], rtol=1e-9)
     np.testing.assert_allclose(curve["mean_separation"], c["separation"], rtol=1e-9)
     np.testing.assert_allclose(curve["conductance_per_conductivity"], c["h_per_k"], rtol=1e-9)
     assert math.isinf(bem.patch_conductance_per_conductivity)
     # area_fraction solves each pressure from scratch: the same contact set up to the tolerance.
-    np.testing.assert_allclose(bem.area_fraction([2e6, 2e7]), c["area"], rtol=1e-6)
+    np.testing.assert_allclose(bem.area_fraction([2e6, 2e7]), c["area_fraction"], rtol=1e-6)
 
 
 def test_boundary_element_detrend(cli, spectrum):

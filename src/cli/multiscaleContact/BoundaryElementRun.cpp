@@ -55,6 +55,7 @@ int runBoundaryElement(const Options& o)
     if (o.levels) {
         throw ParameterError("--levels", "the per-level trace exists for the multi-scale models only");
     }
+    const std::optional<GapInputs> gapInputs = gapOf(o); // its errors before minutes of solving
     const auto [surface, periodic] = arealSurfaceOf(o);
     const ContactMaterials materials = materialsOf(o);
     BoundaryElementOptions bo;
@@ -109,8 +110,35 @@ int runBoundaryElement(const Options& o)
     std::ostringstream out;
     out.precision(10);
     const std::optional<double> ks = harmonicConductivityOf(o, true);
-    out << (pressures.empty() ? "" : "nominal_pressure,") << "load,area,pressure,separation,h_per_k,"
-        << (ks ? "h," : "") << "iterations,residual\n";
+    const double Ep = materials.reducedModulus();
+    std::optional<InterfaceGap> gap;
+    if (gapInputs) {
+        // The gap's Y is the model's mean separation (the separation column), as the condition's
+        // boundary-element table gives it: the solved point's at each load (another solve only
+        // for a pressure not solved, the first touch of a run without a positive load).
+        double firstTouch = 0.0;
+        for (double l : loads) {
+            if (l > 0.0 && (firstTouch == 0.0 || l * Ep < firstTouch)) {
+                firstTouch = l * Ep;
+            }
+        }
+        if (firstTouch == 0.0) {
+            firstTouch = 1e-9 * Ep;
+        }
+        const auto separation = [&](double P) {
+            for (std::size_t i = 0; i < loads.size(); ++i) {
+                if (loads[i] * Ep == P) {
+                    return points[i].meanSeparation;
+                }
+            }
+            return model.solve(P / Ep).meanSeparation;
+        };
+        gap.emplace(interfaceGapOf(o, *gapInputs, materials, separation, firstTouch));
+    }
+    out << (pressures.empty() ? "" : "nominal_pressure,")
+        << "nominal_pressure_per_Eprime,area_fraction,contact_pressure_per_Eprime,separation,h_per_k,"
+        << (ks ? "h," : "") << (gap ? "gap_separation,h_gas,h_radiation," : "") << (gap && ks ? "h_total," : "")
+        << "iterations,residual\n";
     for (std::size_t i = 0; i < points.size(); ++i) {
         const BoundaryElementPoint& p = points[i];
         if (!pressures.empty()) {
@@ -123,6 +151,13 @@ int runBoundaryElement(const Options& o)
         out << ',' << p.meanSeparation << ',' << p.conductancePerConductivity << ',';
         if (ks) {
             out << *ks * p.conductancePerConductivity << ',';
+        }
+        if (gap) {
+            std::ostringstream cells; // ",Y,h_g,h_r[,h_total]"
+            cells.precision(out.precision());
+            writeGapCells(cells, *gap, *gapInputs, loads[i] * Ep, p.areaFraction >= 1.0, ks,
+                          p.conductancePerConductivity);
+            out << cells.str().substr(1) << ',';
         }
         out << p.iterations << ',' << p.residual << '\n';
     }

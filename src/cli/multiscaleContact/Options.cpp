@@ -6,6 +6,7 @@
 #include "roughContact/io/Units.hpp"
 #include "roughContact/models/ModelFactory.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
+#include "roughContact/thermal/Gas.hpp"
 
 #include <string>
 #include <vector>
@@ -199,6 +200,30 @@ void addOptions(CLI::App& app, Options& o)
     app.add_option("--k1", o.k1, "conductivity [W/(m K)] of solid 1: with --k2, add the column h = k_s h_per_k "
                                  "[W/(m^2 K)], k_s = 2 k1 k2/(k1 + k2)");
     app.add_option("--k2", o.k2, "conductivity [W/(m K)] of solid 2 (with --k1)");
+    std::string gases;
+    for (const std::string& n : gasNames()) {
+        gases += (gases.empty() ? "" : ", ") + n;
+    }
+    app.add_option("--gas", o.gas,
+                   "the gas in the gap beside the contact, by name: " + gases + " (the boundary condition's gap "
+                   "entry gas; a gas given by its properties is for the dictionary or Python's GapSpec). Adds the "
+                   "columns gap_separation, h_gas, h_radiation (and h_total with --k1/--k2); needs --temperature");
+    withUnits(app.add_option("--gas-pressure", o.gasPressure,
+                             "the gas pressure P_g [Pa] (or with a unit: 10kPa) of --gas (default 101325, 1 atm)"),
+              roughContact::Quantity::pressure);
+    app.add_option("--accommodation", o.accommodation,
+                   "A1,A2: the thermal accommodation coefficients of the two surfaces for --gas, each in (0, 1] "
+                   "(default: the gas's)");
+    app.add_option("--emissivity", o.emissivity,
+                   "E1,E2: the emissivities of the two surfaces, each in (0, 1]: radiation across the gap (grey "
+                   "parallel plates), the column h_radiation; with or without --gas");
+    app.add_option("--temperature", o.temperature,
+                   "T[,T2]: the interface temperature [K] the gap conductance is taken at (T2: the second face's, "
+                   "the gas at their mean; default T); required with --gas or --emissivity");
+    withUnits(app.add_option("--gap-width", o.gapWidth,
+                             "the gap's width [m] (or with a unit: 20um) at load 0, where the surfaces do not touch "
+                             "(the condition's gap/gapField); required there with --gas"),
+              roughContact::Quantity::length);
     app.add_option("--table", o.table,
                    "with --model boundaryElement and two solids (--E E1,E2 --nu nu1,nu2, the condition's side1 "
                    "and side2): the boundary-element table the boundary condition builds for these inputs "

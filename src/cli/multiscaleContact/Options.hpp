@@ -53,6 +53,13 @@ struct Options {
     std::string table;  // --table FILE: the boundary-element table of the interface, cached in FILE
     std::optional<double> k1; // --k1, --k2 [W/(m K)]: add the column h [W/(m^2 K)]
     std::optional<double> k2;
+    // The gap beside the contact (the condition's gap sub-dictionary: InterfaceSpecReader's gapEntries)
+    std::string gas;                     // --gas NAME: air, helium, argon, nitrogen
+    std::optional<double> gasPressure;   // --gas-pressure P [Pa]
+    std::string accommodation;           // --accommodation A1,A2
+    std::string emissivity;              // --emissivity E1,E2
+    std::string temperature;             // --temperature T[,T2] [K]: the two faces' temperatures
+    std::optional<double> gapWidth;      // --gap-width W [m]: the separation at load 0
 };
 
 /// Every option and flag of multiscaleContact on app, read into o (their help texts are the

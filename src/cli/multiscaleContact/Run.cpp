@@ -37,6 +37,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <optional>
@@ -50,6 +51,19 @@ namespace multiscaleContact {
 
 int run(const Options& o)
 {
+    if (o.check || !o.table.empty()) {
+        for (const auto& [given, what] : {std::pair<bool, const char*>{!o.gas.empty(), "--gas"},
+                                          {o.gasPressure.has_value(), "--gas-pressure"},
+                                          {!o.accommodation.empty(), "--accommodation"},
+                                          {!o.emissivity.empty(), "--emissivity"},
+                                          {!o.temperature.empty(), "--temperature"},
+                                          {o.gapWidth.has_value(), "--gap-width"}}) {
+            if (given) {
+                throw ParameterError(what, std::string("adds the gap's columns to the load curve; ") +
+                                               (o.check ? "--check" : "--table") + " has none");
+            }
+        }
+    }
     if (o.check) {
         return runCheck(o);
     }
@@ -60,17 +74,21 @@ int run(const Options& o)
         return runBoundaryElement(o);
     }
     const bool cmy = o.conductanceLaw == "cooperMikicYovanovich" || o.conductanceLaw == "all";
+    const std::optional<GapInputs> gapInputs = gapOf(o);
+    // --hardness is also the gap's microhardness H_c (its separation correlation).
+    const bool hardnessUsed = cmy || gapInputs.has_value();
     for (const auto& [given, what] : {std::pair<bool, const char*>{!o.synthesize.empty(), "--synthesize"},
                                       {!o.resample.empty(), "--resample"},
                                       {o.periodic, "--periodic"},
                                       {o.detrend.has_value(), "--detrend"},
-                                      {o.hardness.has_value() && !cmy, "--hardness"},
-                                      {o.hardnessFromYield && !cmy, "--hardness-from-yield"},
+                                      {o.hardness.has_value() && !hardnessUsed, "--hardness"},
+                                      {o.hardnessFromYield && !hardnessUsed, "--hardness-from-yield"},
                                       {!o.pressureMap.empty(), "--pressure-map"}}) {
         if (given) {
             throw ParameterError(what, std::string("is for --model boundaryElement") +
                                            (std::string(what).rfind("--hardness", 0) == 0
-                                                ? " and --conductance-law cooperMikicYovanovich"
+                                                ? ", --conductance-law cooperMikicYovanovich and the gap (--gas, "
+                                                  "--emissivity)"
                                                 : ""));
         }
     }
@@ -109,9 +127,14 @@ int run(const Options& o)
         if (ms == nullptr) {
             throw ParameterError("--levels", "the per-level trace exists for the multi-scale models only");
         }
+        if (gapInputs) {
+            throw ParameterError("--levels", "prints the per-level trace; the gap's columns are the load curve's "
+                                             "(leave out --levels)");
+        }
         const double An = spectrum.nominalArea();
         out << (pressures.empty() ? "" : "nominal_pressure,")
-            << "load,level,frequency,amplitude,eta,radius,asperities,asperity_force,area,complete\n";
+            << "nominal_pressure_per_Eprime,level,frequency,amplitude,eta,radius,asperities,asperity_force,area_fraction,"
+               "complete\n";
         for (std::size_t i = 0; i < loads.size(); ++i) {
             const double load = loads[i];
             for (const LevelState& s : ms->trace(load)) {
@@ -128,7 +151,9 @@ int run(const Options& o)
     }
     const auto* ms = dynamic_cast<const MultiscaleModel*>(model.get());
     const auto* persson = dynamic_cast<const PerssonModel*>(model.get());
-    const bool conductance = o.conductance || !o.conductanceLaw.empty();
+    // A gap implies the conductance columns: its separation is the law's where it has one, and
+    // h_total adds its terms to h_c.
+    const bool conductance = o.conductance || !o.conductanceLaw.empty() || gapInputs.has_value();
     const bool allLaws = o.conductanceLaw == "all";
     // persson's own conductance (Barber's relation with its mean separation) unless a law is named.
     const std::string lawName = o.conductanceLaw.empty() || allLaws
@@ -213,13 +238,38 @@ int run(const Options& o)
         }
     }
     const std::optional<double> ks = harmonicConductivityOf(o, conductance);
-    out << (pressures.empty() ? "" : "nominal_pressure,") << "load,area,pressure" << (conductance ? ",separation,h_per_k" : "")
-        << (ks ? ",h" : "");
+    const double Ep = materials.reducedModulus();
+    // The gap (InterfaceGap, as ContactInterface builds it): Y the separation column's (persson's,
+    // or the law's where it defines one), else the gap's correlation.
+    std::optional<InterfaceGap> gap;
+    if (gapInputs) {
+        std::function<double(double)> separation;
+        if (persson != nullptr) {
+            separation = [persson, Ep](double P) { return persson->evaluate(P / Ep).meanSeparation; };
+        }
+        double firstTouch = 0.0; // the lightest touching load's P (never used: --gap-width at load 0)
+        for (double l : loads) {
+            if (l > 0.0 && (firstTouch == 0.0 || l * Ep < firstTouch)) {
+                firstTouch = l * Ep;
+            }
+        }
+        if (firstTouch == 0.0) {
+            firstTouch = 1e-9 * Ep;
+        }
+        // (ConductanceLaw::meanSeparation: NaN for a law without one, ContactTable's test.)
+        if (persson == nullptr && law && !std::isnan(law->meanSeparation(firstTouch))) {
+            const ConductanceLaw* l = law.get();
+            separation = [l](double P) { return l->meanSeparation(P); };
+        }
+        gap.emplace(interfaceGapOf(o, *gapInputs, materials, std::move(separation), firstTouch));
+    }
+    out << (pressures.empty() ? "" : "nominal_pressure,") << "nominal_pressure_per_Eprime,area_fraction,contact_pressure_per_Eprime"
+        << (conductance ? ",separation,h_per_k" : "") << (ks ? ",h" : "")
+        << (gap ? ",gap_separation,h_gas,h_radiation" : "") << (gap && ks ? ",h_total" : "");
     for (const auto& [name, l] : every) {
         out << ",h_per_k_" << name;
     }
     out << '\n';
-    const double Ep = materials.reducedModulus();
     for (std::size_t i = 0; i < loads.size(); ++i) {
         const double load = loads[i];
         if (!pressures.empty()) {
@@ -237,6 +287,9 @@ int run(const Options& o)
             out << ',' << p.meanSeparation << ',' << hk;
             if (ks) {
                 out << ',' << *ks * hk;
+            }
+            if (gap) {
+                writeGapCells(out, *gap, *gapInputs, load * Ep, p.areaFraction >= 1.0, ks, hk);
             }
         } else {
             const double a = model->areaFraction(load);
@@ -263,6 +316,10 @@ int run(const Options& o)
                     if (law) {
                         out << *ks * law->perConductivity(load * Ep);
                     }
+                }
+                if (gap) {
+                    writeGapCells(out, *gap, *gapInputs, load * Ep, a >= 1.0, ks,
+                                  law ? law->perConductivity(load * Ep) : std::numeric_limits<double>::quiet_NaN());
                 }
             }
         }

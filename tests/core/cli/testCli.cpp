@@ -23,6 +23,8 @@
 #include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 #include "roughContact/thermal/FittedElastoPlastic.hpp"
+#include "roughContact/thermal/GapConductance.hpp"
+#include "roughContact/thermal/Gas.hpp"
 
 #include <gtest/gtest.h>
 
@@ -136,9 +138,9 @@ TEST(Cli, LoadCurveIsTheLibrarysForEveryModel)
             run("--profile '" + standin + "' --model " + name + steel + " --load-range 1e-6:1e-2:9");
         ASSERT_EQ(r.status, 0) << r.err;
         const Csv csv = parseCsv(r.out);
-        const int li = column(csv, "load");
-        const int ai = column(csv, "area");
-        const int pi = column(csv, "pressure");
+        const int li = column(csv, "nominal_pressure_per_Eprime");
+        const int ai = column(csv, "area_fraction");
+        const int pi = column(csv, "contact_pressure_per_Eprime");
         ASSERT_EQ(csv.rows.size(), 9U);
         const auto model = makeContactModel(name, s, mat);
         double previousArea = 0.0;
@@ -168,14 +170,14 @@ TEST(Cli, LevelTraceSumsToTheArea)
     const Csv c = parseCsv(curve.out);
     const Csv t = parseCsv(trace.out);
     ASSERT_GT(t.rows.size(), 100U);
-    const int ai = column(t, "area");
+    const int ai = column(t, "area_fraction");
     double previous = 1.0;
     for (const auto& row : t.rows) {
         const double a = std::stod(row.at(ai));
         EXPECT_LE(a, previous * (1 + 1e-9));
         previous = a;
     }
-    EXPECT_NEAR(previous, std::stod(c.rows.at(0).at(column(c, "area"))), 1e-9 * previous);
+    EXPECT_NEAR(previous, std::stod(c.rows.at(0).at(column(c, "area_fraction"))), 1e-9 * previous);
 }
 
 TEST(Cli, ConductanceColumnIsTheLibrarys)
@@ -305,14 +307,15 @@ TEST(Cli, EveryConductanceLawSideBySide)
                                  " --loads 1e-4 --conductance-law all");
     ASSERT_EQ(gw.status, 0) << gw.err;
     EXPECT_EQ(gw.out.substr(0, gw.out.find('\n')),
-              "load,area,pressure,separation,h_per_k,h_per_k_persson,h_per_k_mikic,h_per_k_fittedElastoPlastic");
+              "nominal_pressure_per_Eprime,area_fraction,contact_pressure_per_Eprime,separation,h_per_k,"
+              "h_per_k_persson,h_per_k_mikic,h_per_k_fittedElastoPlastic");
     EXPECT_NE(gw.err.find("no column for jacksonBhavnaniFerguson"), std::string::npos) << gw.err;
     EXPECT_NE(gw.err.find("no column for cooperMikicYovanovich"), std::string::npos) << gw.err;
 }
 
 TEST(Cli, PerssonFillsEveryConductanceColumn)
 {
-    // --model persson --conductance: load,area,pressure,separation,h_per_k all filled, each the
+    // --model persson --conductance: nominal_pressure_per_Eprime,area_fraction,contact_pressure_per_Eprime,separation,h_per_k all filled, each the
     // library's PerssonModel::evaluate to the 10 digits printed (relative 1e-9).
     const CommandResult r = run("--profile '" + standin + "' --model persson" + steel +
                                 " --loads 1e-6,1e-4,1e-3,1e-2 --conductance");
@@ -323,10 +326,10 @@ TEST(Cli, PerssonFillsEveryConductanceColumn)
     const PerssonModel m(s, mat.reducedModulus());
     ASSERT_EQ(csv.rows.size(), 4U);
     for (const auto& row : csv.rows) {
-        const double load = std::stod(row.at(column(csv, "load")));
+        const double load = std::stod(row.at(column(csv, "nominal_pressure_per_Eprime")));
         const PerssonPoint p = m.evaluate(load);
-        EXPECT_NEAR(std::stod(row.at(column(csv, "area"))), p.areaFraction, 1e-9 * p.areaFraction);
-        EXPECT_NEAR(std::stod(row.at(column(csv, "pressure"))), load / p.areaFraction,
+        EXPECT_NEAR(std::stod(row.at(column(csv, "area_fraction"))), p.areaFraction, 1e-9 * p.areaFraction);
+        EXPECT_NEAR(std::stod(row.at(column(csv, "contact_pressure_per_Eprime"))), load / p.areaFraction,
                     1e-9 * load / p.areaFraction);
         EXPECT_NEAR(std::stod(row.at(column(csv, "separation"))), p.meanSeparation, 1e-9 * p.meanSeparation);
         EXPECT_NEAR(std::stod(row.at(column(csv, "h_per_k"))), p.conductancePerConductivity,
@@ -335,7 +338,7 @@ TEST(Cli, PerssonFillsEveryConductanceColumn)
     // Without --conductance: the usual three columns.
     const CommandResult plain = run("--profile '" + standin + "' --model persson" + steel + " --loads 1e-4");
     ASSERT_EQ(plain.status, 0) << plain.err;
-    EXPECT_EQ(plain.out.substr(0, plain.out.find('\n')), "load,area,pressure");
+    EXPECT_EQ(plain.out.substr(0, plain.out.find('\n')), "nominal_pressure_per_Eprime,area_fraction,contact_pressure_per_Eprime");
 }
 
 TEST(Cli, SurfaceDescriptions)
@@ -527,7 +530,7 @@ TEST(Cli, BoundaryElementIsTheLibrarys)
         const BoundaryElementPoint p = m.solve(std::stod(row.at(0)));
         // Cold solves here, warm starts in the CLI's curve: the same solution to the solver's
         // tolerance (1e-8), printed to 10 digits; the contact set may differ by a cell.
-        EXPECT_NEAR(std::stod(row.at(column(csv, "area"))), p.areaFraction, 2.0 / (64 * 64));
+        EXPECT_NEAR(std::stod(row.at(column(csv, "area_fraction"))), p.areaFraction, 2.0 / (64 * 64));
         const double h = std::stod(row.at(column(csv, "h_per_k")));
         EXPECT_NEAR(h, p.conductancePerConductivity, 1e-3 * p.conductancePerConductivity);
         EXPECT_NEAR(std::stod(row.at(column(csv, "separation"))), p.meanSeparation, 1e-3 * p.meanSeparation);
@@ -665,7 +668,7 @@ TEST(Cli, ResampleIsTheLibrarysResampledSurface)
     const double h = std::stod(csv.rows[0].at(column(csv, "h_per_k")));
     // To the solver's tolerance, printed to 10 digits (the same solve as the library's).
     EXPECT_NEAR(h, resampled.conductancePerConductivity, 1e-6 * h);
-    EXPECT_NEAR(std::stod(csv.rows[0].at(column(csv, "area"))), resampled.areaFraction, 1e-9);
+    EXPECT_NEAR(std::stod(csv.rows[0].at(column(csv, "area_fraction"))), resampled.areaFraction, 1e-9);
     // Not the surface as synthesized (another grid and fewer levels: another answer).
     EXPECT_GT(std::abs(h / asIs.conductancePerConductivity - 1.0), 1e-3);
     expectError(p + " --synthesize 32 --resample 63" + bem + " --loads 1e-3", {"--resample", "even", "got 63"});
@@ -734,7 +737,7 @@ TEST(Cli, PressuresAreTheLoadsAtPOverEprime)
     // The per-level trace carries the column as well.
     const CommandResult t = run("--profile '" + standin + "' --model hertz --Eprime 2e11 --pressures 2e6 --levels");
     ASSERT_EQ(t.status, 0) << t.err;
-    EXPECT_EQ(t.out.rfind("nominal_pressure,load,level,", 0), 0U) << t.out.substr(0, 80);
+    EXPECT_EQ(t.out.rfind("nominal_pressure,nominal_pressure_per_Eprime,level,", 0), 0U) << t.out.substr(0, 80);
 }
 
 TEST(Cli, PressuresErrors)
@@ -840,7 +843,7 @@ TEST(Cli, YieldStrengthNoneSaysASolidDoesNotYield)
     ASSERT_EQ(csv.rows.size(), 3U);
     const double loads[] = {1e-5, 1e-4, 1e-3};
     for (std::size_t i = 0; i < 3; ++i) {
-        const double area = std::stod(csv.rows[i][column(csv, "area")]);
+        const double area = std::stod(csv.rows[i][column(csv, "area_fraction")]);
         EXPECT_NEAR(area, model->areaFraction(loads[i]), 1e-9 * area) << loads[i];
     }
     // The yielding solid is the first: S_y 0.4 GPa of E 200 GPa, not the second's modulus (a
@@ -917,4 +920,137 @@ TEST(Cli, UnitSuffixesAreTheSINumbers)
     expectError(p + " --E 200GPa,70GPa --pressures 1um", {"--pressures", "is not a pressure"});
     expectError(p + " --E 200Gpa,70GPa --pressures 1e6", {"--E", "unknown unit 'Gpa'"});
     expectError(p + " --E 200GPa,70GPa --Sy 400MPa,soft --pressures 1e6", {"--Sy", "soft"});
+}
+
+TEST(Cli, ColumnNamesSayWhatTheyAre)
+{
+    // Issue 22: the load curve's columns are named for what they are (F/(A_n E'), A_r/A_n,
+    // F/(A_r E')), in every kind of run; --table keeps the condition's cache format.
+    const std::string p = "--profile '" + standin + "' --model jacksonGreen" + steel;
+    const auto header = [](const CommandResult& r) { return r.out.substr(0, r.out.find('\n')); };
+    const CommandResult curve = run(p + " --pressures 1e6 --conductance --k1 50 --k2 50");
+    ASSERT_EQ(curve.status, 0) << curve.err;
+    EXPECT_EQ(header(curve), "nominal_pressure,nominal_pressure_per_Eprime,area_fraction,contact_pressure_per_Eprime,"
+                             "separation,h_per_k,h");
+    const CommandResult trace = run(p + " --loads 1e-5 --levels");
+    ASSERT_EQ(trace.status, 0) << trace.err;
+    EXPECT_EQ(header(trace), "nominal_pressure_per_Eprime,level,frequency,amplitude,eta,radius,asperities,"
+                             "asperity_force,area_fraction,complete");
+    const CommandResult bem =
+        run("--profile '" + standin + "' --synthesize 16 --model boundaryElement --Eprime 2e11 --loads 1e-4");
+    ASSERT_EQ(bem.status, 0) << bem.err;
+    EXPECT_EQ(header(bem), "nominal_pressure_per_Eprime,area_fraction,contact_pressure_per_Eprime,separation,h_per_k,"
+                           "iterations,residual");
+    const CommandResult gap = run(p + " --loads 1e-5 --gas air --temperature 300 --k1 50 --k2 50");
+    ASSERT_EQ(gap.status, 0) << gap.err;
+    EXPECT_EQ(header(gap), "nominal_pressure_per_Eprime,area_fraction,contact_pressure_per_Eprime,separation,h_per_k,h,"
+                           "gap_separation,h_gas,h_radiation,h_total");
+    const CommandResult check = run("--profile '" + standin + "' --model jacksonGreen --E 200e9,200e9 --nu 0.3,0.3 "
+                                    "--Sy 0.4e9,0.4e9 --check --synthesize 16 --pressures 1e5");
+    ASSERT_EQ(check.status, 0) << check.err;
+    EXPECT_NE(check.out.find("\nnominal_pressure,nominal_pressure_per_Eprime,area_exact,"), std::string::npos)
+        << check.out;
+}
+
+TEST(Cli, GapColumnsAreTheCoresConductances)
+{
+    // The gap options are the condition's gap entries; h_gas and h_radiation are the core's
+    // GasGap::conductance and radiativeConductance at the separation ContactInterface would use:
+    // the correlation of sigma and P/H_c (jacksonGreen and its default law define none), the
+    // --gap-width at load 0; h_total = k_s h_per_k + h_gas + h_radiation. The cells hold 10
+    // significant digits: each is the core's value written so (formatNumber(v, 10)).
+    const std::vector<double> P = {0.0, 1e5, 1e6, 1e7};
+    const std::string args = "--profile '" + standin + "' --model jacksonGreen" + steel +
+                             " --pressures 0,1e5,1e6,1e7 --gas air --gas-pressure 50kPa --accommodation 0.8,0.9"
+                             " --emissivity 0.3,0.6 --temperature 320,360 --gap-width 10um --k1 50 --k2 20";
+    const CommandResult r = run(args);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Csv csv = parseCsv(r.out);
+    ASSERT_EQ(csv.rows.size(), P.size());
+    GasGapSpec g;
+    g.gas = gasByName("air");
+    g.pressure = 5e4;
+    g.accommodation1 = 0.8;
+    g.accommodation2 = 0.9;
+    const GasGap gas(g);
+    SurfaceSpec s;
+    s.kind = SurfaceSpec::Kind::profile;
+    s.file = standin;
+    const double sigma = equivalentRoughness({s}).sigma;
+    const double Hc = 2.84 * 0.2e9;
+    const double hr = radiativeConductance(320.0, 360.0, 0.3, 0.6);
+    const double ks = harmonicMeanConductivity(50.0, 20.0);
+    for (std::size_t i = 0; i < P.size(); ++i) {
+        SCOPED_TRACE(P[i]);
+        const std::vector<std::string>& row = csv.rows[i];
+        const double Y = P[i] > 0.0 ? gapSeparationCorrelation(P[i], sigma, Hc) : 10e-6;
+        const double hg = gas.conductance(Y, 340.0);
+        EXPECT_EQ(row.at(column(csv, "gap_separation")), formatNumber(Y, 10));
+        EXPECT_EQ(row.at(column(csv, "h_gas")), formatNumber(hg, 10));
+        EXPECT_EQ(row.at(column(csv, "h_radiation")), formatNumber(hr, 10));
+        const double hc = ks * std::stod(row.at(column(csv, "h_per_k")));
+        const double total = std::stod(row.at(column(csv, "h_total")));
+        EXPECT_NEAR(total, hc + hg + hr, 1e-9 * total);
+        EXPECT_NEAR(std::stod(row.at(column(csv, "h"))), hc, 1e-9 * hc + 1e-300);
+    }
+    // The rest of the row is the run's without a gap.
+    const CommandResult plain = run("--profile '" + standin + "' --model jacksonGreen" + steel +
+                                    " --pressures 0,1e5,1e6,1e7 --conductance --k1 50 --k2 20");
+    ASSERT_EQ(plain.status, 0) << plain.err;
+    const Csv c0 = parseCsv(plain.out);
+    for (std::size_t i = 0; i < P.size(); ++i) {
+        EXPECT_EQ(std::vector<std::string>(csv.rows[i].begin(), csv.rows[i].begin() + c0.header.size()), c0.rows[i]);
+    }
+    // Where the law defines a mean separation (multiscaleBarber), the gap takes it: gap_separation
+    // is the separation column, h_gas the core's there.
+    const CommandResult b = run("--profile '" + standin + "' --model jacksonGreen" + steel +
+                                " --pressures 1e6 --conductance-law multiscaleBarber --gas helium --temperature 300");
+    ASSERT_EQ(b.status, 0) << b.err;
+    const Csv cb = parseCsv(b.out);
+    const std::string Yb = cb.rows.at(0).at(column(cb, "separation"));
+    ASSERT_FALSE(Yb.empty());
+    EXPECT_EQ(cb.rows[0].at(column(cb, "gap_separation")), Yb);
+    const Spectrum spectrum = Spectrum::fromProfile(readProfile(standin));
+    const ContactMaterials materials = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
+    const auto model = makeContactModel("jacksonGreen", spectrum, materials);
+    ConductanceLawInputs in; // as the CLI's load curve fills them
+    in.multiscale = dynamic_cast<const MultiscaleModel*>(model.get());
+    in.spectrum = &spectrum;
+    in.Eprime = materials.reducedModulus();
+    in.hardness = conductanceLawHardness(std::nullopt, materials);
+    const auto law = makeConductanceLaw("multiscaleBarber", in);
+    GasGapSpec he;
+    he.gas = gasByName("helium");
+    EXPECT_EQ(cb.rows[0].at(column(cb, "h_gas")),
+              formatNumber(GasGap(he).conductance(law->meanSeparation(1e6), 300.0), 10));
+    EXPECT_EQ(cb.rows[0].at(column(cb, "h_radiation")), "0");
+}
+
+TEST(Cli, GapErrors)
+{
+    const std::string p = "--profile '" + standin + "' --model jacksonGreen" + steel + " --pressures 1e6";
+    // The temperature is required with a gap, and named.
+    expectError(p + " --gas air", {"--temperature", "give --temperature T [K]"});
+    expectError(p + " --emissivity 0.3,0.3", {"--temperature"});
+    // An unknown gas is named, with the gases known.
+    expectError(p + " --gas xenon --temperature 300", {"--gas", "xenon", "air helium argon nitrogen"});
+    // The reader's rules, named by the options.
+    expectError(p + " --gas air --accommodation 0.5 --temperature 300", {"--accommodation", "two values"});
+    expectError(p + " --gas air --accommodation 0,1 --temperature 300", {"accommodation"});
+    expectError(p + " --emissivity 0.3,1.5 --temperature 300", {"emissivity e2", "(0, 1]"});
+    expectError(p + " --emissivity 0.3,0.3 --gas-pressure 1e5 --temperature 300", {"--gas-pressure", "is for a gas"});
+    expectError(p + " --gas air --gas-pressure 1um --temperature 300", {"--gas-pressure", "is not a pressure"});
+    expectError(p + " --gas air --temperature 0.001", {"--temperature"});
+    // Gap-only options without a gap.
+    expectError(p + " --temperature 300", {"--temperature", "is for the gap"});
+    expectError(p + " --gap-width 1e-6", {"--gap-width", "is for the gap"});
+    // --check and --table have no gap columns.
+    expectError(p + " --check --gas air --temperature 300", {"--gas", "--check"});
+    // At load 0 a gas gap needs its width.
+    expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --loads 0 --gas air --temperature 300",
+                {"--gap-width"});
+    // The correlation needs H_c: without --Sy (hertz is elastic), --hardness gives it.
+    const std::string hertz = "--profile '" + standin + "' --model hertz --E 179.52e9 --nu 0.32 --pressures 1e6";
+    expectError(hertz + " --gas air --temperature 300", {"--gas", "microhardness", "--hardness"});
+    EXPECT_EQ(run(hertz + " --gas air --temperature 300 --hardness 1GPa").status, 0);
 }

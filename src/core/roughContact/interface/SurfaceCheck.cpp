@@ -134,7 +134,7 @@ std::string SurfaceCheck::report() const
 std::string SurfaceCheck::csv() const
 {
     std::ostringstream os;
-    os << "nominal_pressure,load,area_exact,h_per_k_exact,h_per_k_exact_min,h_per_k_exact_max";
+    os << "nominal_pressure,nominal_pressure_per_Eprime,area_exact,h_per_k_exact,h_per_k_exact_min,h_per_k_exact_max";
     for (const CheckedLaw& l : laws) {
         if (l.unavailable.empty()) {
             os << ",ratio_" << l.name;

@@ -96,8 +96,8 @@ struct SurfaceCheck {
     /// A table for a log or a terminal: the exact h_c/k_s per pressure with the seeds' spread,
     /// each law's ratio, the closest law and the chosen law's verdict.
     std::string report() const;
-    /// The numbers as CSV: pressure, load, exact area and h_c/k_s (with the spread), one
-    /// ratio_NAME column per law that could be built.
+    /// The numbers as CSV: nominal_pressure [Pa], nominal_pressure_per_Eprime (F/(A_n E')), the
+    /// exact area and h_c/k_s (with the spread), one ratio_NAME column per law that could be built.
     std::string csv() const;
 };
 
