@@ -9,8 +9,7 @@
 #include "fvPatchFieldMapper.H"
 #include "volFields.H"
 #include "mappedPatchBase.H"
-
-#include "roughContact/thermal/InterfaceCoupling.hpp"
+#include "foamCompat.H"
 
 #include <algorithm>
 #include <cmath>
@@ -20,10 +19,7 @@
 // An error found at run time (not while reading the dictionary): FatalIOError
 // naming the file and lines the condition was read from.
 #define RuntimeIOError                                                         \
-    ::Foam::FatalIOError                                                       \
-    (                                                                          \
-        FUNCTION_NAME, __FILE__, __LINE__, settings_.dictName, settings_.dictStart, settings_.dictEnd     \
-    )
+    FatalIOErrorAt(settings_.dictName, settings_.dictStart, settings_.dictEnd)
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -221,17 +217,9 @@ thermalContactResistanceFvPatchScalarField
 #endif
     settings_(),
     pressure_(),
-    areaFraction_(p.size(), Zero),
-    conductance_(p.size(), Zero),
-    contactPressure_(p.size(), Zero),
-    contactState_(p.size(), Zero),
-    gapConductance_(p.size(), Zero),
-    totalConductance_(p.size(), Zero),
+    coupling_(p.size()),
     evaluated_(false),
-    checkedNeighbour_(false),
-    warnedNoContact_(false),
-    warnedBeyondTable_(false),
-    warnedInput_(0)
+    checkedNeighbour_(false)
 {
     settings_.dictName = iF.objectPath();
     this->refValue() = 0.0;
@@ -252,17 +240,9 @@ thermalContactResistanceFvPatchScalarField
     temperatureCoupledBase(patch(), checkedKappaMethod(p, iF, dict)),
     settings_(),
     pressure_(),
-    areaFraction_(p.size(), Zero),
-    conductance_(p.size(), Zero),
-    contactPressure_(p.size(), Zero),
-    contactState_(p.size(), Zero),
-    gapConductance_(p.size(), Zero),
-    totalConductance_(p.size(), Zero),
+    coupling_(p.size()),
     evaluated_(false),
-    checkedNeighbour_(false),
-    warnedNoContact_(false),
-    warnedBeyondTable_(false),
-    warnedInput_(0)
+    checkedNeighbour_(false)
 {
     checkPatch(dict);
     settings_ = thermalContactSettings
@@ -309,18 +289,22 @@ thermalContactResistanceFvPatchScalarField
     temperatureCoupledBase(patch(), ptf),
     settings_(ptf.settings_),
     pressure_(),
-    areaFraction_(ptf.areaFraction_, mapper),
-    conductance_(ptf.conductance_, mapper),
-    contactPressure_(ptf.contactPressure_, mapper),
-    contactState_(ptf.contactState_, mapper),
-    gapConductance_(ptf.gapConductance_, mapper),
-    totalConductance_(ptf.totalConductance_, mapper),
+    coupling_(ptf.coupling_),
     evaluated_(ptf.evaluated_),
-    checkedNeighbour_(false),
-    warnedNoContact_(ptf.warnedNoContact_),
-    warnedBeyondTable_(ptf.warnedBeyondTable_),
-    warnedInput_(ptf.warnedInput_)
+    checkedNeighbour_(false)
 {
+    // The output fields follow their faces; the core's results and cache
+    // are rebuilt at the next evaluation
+    coupling_.areaFraction = scalarField(ptf.coupling_.areaFraction, mapper);
+    coupling_.conductance = scalarField(ptf.coupling_.conductance, mapper);
+    coupling_.contactPressure =
+        scalarField(ptf.coupling_.contactPressure, mapper);
+    coupling_.contactState = scalarField(ptf.coupling_.contactState, mapper);
+    coupling_.gapConductance =
+        scalarField(ptf.coupling_.gapConductance, mapper);
+    coupling_.totalConductance =
+        scalarField(ptf.coupling_.totalConductance, mapper);
+    coupling_.clearCache();
     if (ptf.pressure_.valid())
     {
         // Map the values on the old patch (a nonuniform list must follow its
@@ -348,18 +332,14 @@ thermalContactResistanceFvPatchScalarField
       ? ptf.pressure_().clone(patch().patch()).ptr()
       : nullptr
     ),
-    areaFraction_(ptf.areaFraction_),
-    conductance_(ptf.conductance_),
-    contactPressure_(ptf.contactPressure_),
-    contactState_(ptf.contactState_),
-    gapConductance_(ptf.gapConductance_),
-    totalConductance_(ptf.totalConductance_),
+    coupling_(ptf.coupling_),
     evaluated_(ptf.evaluated_),
-    checkedNeighbour_(ptf.checkedNeighbour_),
-    warnedNoContact_(ptf.warnedNoContact_),
-    warnedBeyondTable_(ptf.warnedBeyondTable_),
-    warnedInput_(ptf.warnedInput_)
-{}
+    checkedNeighbour_(ptf.checkedNeighbour_)
+{
+    // The core's results and cache start empty (rebuilt at the next
+    // evaluation), as before they were shared
+    coupling_.clearCache();
+}
 
 
 Foam::thermalContactResistanceFvPatchScalarField::
@@ -378,18 +358,14 @@ thermalContactResistanceFvPatchScalarField
       ? ptf.pressure_().clone(patch().patch()).ptr()
       : nullptr
     ),
-    areaFraction_(ptf.areaFraction_),
-    conductance_(ptf.conductance_),
-    contactPressure_(ptf.contactPressure_),
-    contactState_(ptf.contactState_),
-    gapConductance_(ptf.gapConductance_),
-    totalConductance_(ptf.totalConductance_),
+    coupling_(ptf.coupling_),
     evaluated_(ptf.evaluated_),
-    checkedNeighbour_(ptf.checkedNeighbour_),
-    warnedNoContact_(ptf.warnedNoContact_),
-    warnedBeyondTable_(ptf.warnedBeyondTable_),
-    warnedInput_(ptf.warnedInput_)
-{}
+    checkedNeighbour_(ptf.checkedNeighbour_)
+{
+    // The core's results and cache start empty (rebuilt at the next
+    // evaluation), as before they were shared
+    coupling_.clearCache();
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -460,14 +436,13 @@ void Foam::thermalContactResistanceFvPatchScalarField::autoMap
     {
         pressure_->autoMap(m);
     }
-    areaFraction_.autoMap(m);
-    conductance_.autoMap(m);
-    contactPressure_.autoMap(m);
-    contactState_.autoMap(m);
-    gapConductance_.autoMap(m);
-    totalConductance_.autoMap(m);
-    coupling_ = {};
-    couplingCache_ = {};
+    coupling_.areaFraction.autoMap(m);
+    coupling_.conductance.autoMap(m);
+    coupling_.contactPressure.autoMap(m);
+    coupling_.contactState.autoMap(m);
+    coupling_.gapConductance.autoMap(m);
+    coupling_.totalConductance.autoMap(m);
+    coupling_.clearCache();
     nbrDeltaCoeffs_.clear();
     haveNbrDeltaCoeffs_ = false;
 }
@@ -489,14 +464,13 @@ void Foam::thermalContactResistanceFvPatchScalarField::rmap
     {
         pressure_->rmap(tiptf.pressure_(), addr);
     }
-    areaFraction_.rmap(tiptf.areaFraction_, addr);
-    conductance_.rmap(tiptf.conductance_, addr);
-    contactPressure_.rmap(tiptf.contactPressure_, addr);
-    contactState_.rmap(tiptf.contactState_, addr);
-    gapConductance_.rmap(tiptf.gapConductance_, addr);
-    totalConductance_.rmap(tiptf.totalConductance_, addr);
-    coupling_ = {};
-    couplingCache_ = {};
+    coupling_.areaFraction.rmap(tiptf.coupling_.areaFraction, addr);
+    coupling_.conductance.rmap(tiptf.coupling_.conductance, addr);
+    coupling_.contactPressure.rmap(tiptf.coupling_.contactPressure, addr);
+    coupling_.contactState.rmap(tiptf.coupling_.contactState, addr);
+    coupling_.gapConductance.rmap(tiptf.coupling_.gapConductance, addr);
+    coupling_.totalConductance.rmap(tiptf.coupling_.totalConductance, addr);
+    coupling_.clearCache();
     nbrDeltaCoeffs_.clear();
     haveNbrDeltaCoeffs_ = false;
 }
@@ -531,81 +505,43 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
     }
 
     checkKappaField();
+    nbrField.checkKappaField();
     const scalarField myKappa(kappa(*this));
-    const scalarField& myDeltaCoeffs = patch().deltaCoeffs();
-
-    // The per-face physics is the core's (roughContact::couple and
-    // coupleConstant, interface/FaceCoupling.hpp): this gathers both sides'
-    // arrays, calls it once and hands its results to the mixed condition.
-    roughContact::CouplingInputs in;
-    in.n = size();
-    in.kappa = myKappa.cdata();
-    in.deltaCoeffs = myDeltaCoeffs.cdata();
 
     // What this side needs of the neighbour, in one exchange: its cell
     // temperature (contact) or face temperature (h), kappa and pressure per
-    // face; with a gap also its face temperature and gap width (a
-    // symmTensor's six components carry the five); and (once, while the mesh
-    // does not change) its deltaCoeffs.
-    const bool withGap = settings_.mode == thermalContactSettings::conductanceMode::contact && settings_.interface->hasGap();
-    const label nNbr = nbrPatch.size();
-    scalarField nbrT(size());
-    scalarField nbrKappa(size());
-    scalarField nbrP(size());
-    scalarField nbrTface;
-    scalarField nbrGapWidth;
-    nbrField.checkKappaField();
-    {
-        const scalarField T
+    // face; with a gap also its face temperature and gap width. Then (once,
+    // while the mesh does not change) its deltaCoeffs.
+    const bool withGap = settings_.withGap();
+    const scalarField nbrT
+    (
+        settings_.mode == thermalContactSettings::conductanceMode::constantH
+      ? scalarField(nbrField)
+      : nbrField.patchInternalField()()
+    );
+    const scalarField nbrK(nbrField.kappa(nbrField));
+    const scalarField nbrP(nbrField.interfacePressure());
+    const scalarField nbrW
+    (
+        withGap && nbrField.hasGapWidth()
+      ? nbrField.interfaceGapWidth()()
+      : scalarField()
+    );
+    const thermalContactCoupling::neighbourValues nbr =
+        thermalContactCoupling::exchange
         (
-            settings_.mode == thermalContactSettings::conductanceMode::constantH
-          ? scalarField(nbrField)
-          : nbrField.patchInternalField()()
+            {
+                nbrT, nbrK, nbrP,
+                withGap ? &static_cast<const scalarField&>(nbrField) : nullptr,
+                withGap && nbrField.hasGapWidth() ? &nbrW : nullptr
+            },
+            size(),
+            [&mpp](auto f)
+            {
+                mpp.distribute(f);
+                return f;
+            }
         );
-        const scalarField K(nbrField.kappa(nbrField));
-        const scalarField P(nbrField.interfacePressure());
-        if (!withGap)
-        {
-            vectorField nbrData(nNbr);
-            for (label i = 0; i < nNbr; ++i)
-            {
-                nbrData[i] = vector(T[i], K[i], P[i]);
-            }
-            mpp.distribute(nbrData);
-            forAll(nbrData, i)
-            {
-                nbrT[i] = nbrData[i].x();
-                nbrKappa[i] = nbrData[i].y();
-                nbrP[i] = nbrData[i].z();
-            }
-        }
-        else
-        {
-            const bool widths = nbrField.hasGapWidth();
-            const scalarField W
-            (
-                widths ? nbrField.interfaceGapWidth()() : scalarField(nNbr, Zero)
-            );
-            const scalarField& Tf = nbrField;
-            symmTensorField nbrData(nNbr);
-            for (label i = 0; i < nNbr; ++i)
-            {
-                nbrData[i] = symmTensor(T[i], K[i], P[i], Tf[i], W[i], 0);
-            }
-            mpp.distribute(nbrData);
-            nbrTface.setSize(size());
-            nbrGapWidth.setSize(size());
-            forAll(nbrData, i)
-            {
-                const symmTensor& d = nbrData[i];
-                nbrT[i] = d.xx();
-                nbrKappa[i] = d.xy();
-                nbrP[i] = d.xz();
-                nbrTface[i] = d.yy();
-                nbrGapWidth[i] = d.yz();
-            }
-        }
-    }
     // distribute() is collective: decide on what every processor knows
     // alike (not on this processor's, possibly empty, face count).
     if (!haveNbrDeltaCoeffs_ || nbrMesh.changing())
@@ -614,149 +550,27 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
         mpp.distribute(nbrDeltaCoeffs_);
         haveNbrDeltaCoeffs_ = true;
     }
-    in.kappaNbr = nbrKappa.cdata();
-    in.deltaCoeffsNbr = nbrDeltaCoeffs_.cdata();
 
     const scalarField myP(interfacePressure());
-    scalarField myGapWidth;
-    if (withGap && hasGapWidth())
-    {
-        myGapWidth = interfaceGapWidth();
-    }
-    try
-    {
-        if (settings_.mode == thermalContactSettings::conductanceMode::constantH)
-        {
-            in.faceTemperatureNbr = nbrT.cdata();
-            roughContact::coupleConstant(settings_.hConstant, in, coupling_);
-        }
-        else
-        {
-            settings_.checkContactUnchanged(db().time(), [this] { return who(); });
-            in.pressure = myP.cdata();
-            in.pressureNbr = nbrP.cdata();
-            in.cellTemperatureNbr = nbrT.cdata();
-            if (withGap)
-            {
-                // The gap's terms need both face temperatures and the widths
-                // both sides give (exchanged with the rest above).
-                in.faceTemperature = this->cdata();
-                in.faceTemperatureNbr = nbrTface.cdata();
-                if (hasGapWidth())
-                {
-                    in.gapWidth = myGapWidth.cdata();
-                    in.gapWidthNbr = nbrGapWidth.cdata();
-                }
-            }
-            roughContact::couple(*settings_.interface, in, couplingCache_, coupling_);
-        }
-    }
-    catch (const roughContact::FaceError& e)
-    {
-        const label facei = label(e.face());
-        RuntimeIOError
-            << who().c_str() << ": face " << facei << " at "
-            << patch().Cf()[facei] << ": pressure " << myP[facei]
-            << " Pa on this side and " << nbrP[facei] << " Pa on the"
-            << " neighbour's, kappa " << myKappa[facei] << " and "
-            << nbrKappa[facei] << " W/m/K, deltaCoeffs "
-            << myDeltaCoeffs[facei] << " and " << nbrDeltaCoeffs_[facei]
-            << " 1/m: " << e.what() << exit(FatalIOError);
-    }
-    catch (const std::exception& e)
-    {
-        RuntimeIOError
-            << who().c_str() << ": the interface coupling of the faces"
-            << (settings_.contactName.empty() ? "" : " (contact '" + settings_.contactName + "')")
-            << " failed: " << e.what() << exit(FatalIOError);
-    }
+    const scalarField myW
+    (
+        withGap && hasGapWidth() ? interfaceGapWidth()() : scalarField()
+    );
+    coupling_.couple
+    (
+        settings_, db().time(), [this] { return who(); },
+        myKappa, patch().deltaCoeffs(), *this, patch().Cf(), myP,
+        withGap && hasGapWidth() ? &myW : nullptr,
+        nbr, nbrDeltaCoeffs_
+    );
 
-    const roughContact::CouplingOutputs& out = coupling_;
+    const roughContact::CouplingOutputs& out = coupling_.outputs;
     std::copy(out.refValue.begin(), out.refValue.end(), this->refValue().begin());
     std::copy
     (
         out.valueFraction.begin(), out.valueFraction.end(),
         this->valueFraction().begin()
     );
-    const bool apart = out.apart > 0;
-    const bool beyondTable = out.beyondTable > 0;
-
-    // The output fields, at every evaluation: function objects may sample
-    // them at any time step (a history of contactConductance, say).
-    forAll(conductance_, facei)
-    {
-        const scalar kDelta = myKappa[facei]*myDeltaCoeffs[facei];
-        const scalar kDeltaNbr = nbrKappa[facei]*nbrDeltaCoeffs_[facei];
-        conductance_[facei] = roughContact::shownConductance
-        (
-            out.contactConductance[facei], kDelta, kDeltaNbr
-        );
-        totalConductance_[facei] = roughContact::shownConductance
-        (
-            out.conductance[facei], kDelta, kDeltaNbr
-        );
-        areaFraction_[facei] = out.areaFraction[facei];
-        contactPressure_[facei] = out.pressure[facei];
-        contactState_[facei] = roughContact::contactStateCode(out.state[facei]);
-        gapConductance_[facei] =
-            out.gapConductance[facei] + out.radiativeConductance[facei];
-    }
-
-    if (settings_.mode == thermalContactSettings::conductanceMode::contact)
-    {
-        if (returnReduce(apart, orOp<bool>()) && !warnedNoContact_)
-        {
-            Info<< "thermalContactResistance: " << who().c_str()
-                << ": zero or negative pressure on some faces: the surfaces"
-                << " do not touch there ("
-                << (settings_.interface->hasGap()
-                    ? "only the gap's conductance remains)"
-                    : "h = 0, no heat crosses)") << endl;
-            warnedNoContact_ = true;
-        }
-        if (returnReduce(beyondTable, orOp<bool>()) && !warnedBeyondTable_)
-        {
-            WarningInFunction
-                << who().c_str() << ": pressures above "
-                << settings_.interface->tableEnd()
-                << " Pa, the end of the table of contact '" << settings_.contactName
-                << "' (its maxPressure), and below complete contact ("
-                << settings_.interface->completeContactPressure()
-                << " Pa): h is held at the table's last value"
-                << " there. Raise maxPressure." << endl;
-            warnedBeyondTable_ = true;
-        }
-        // Input that is probably a mistake: the core counts it, says it in
-        // words; here the sums over processors and one warning of each kind.
-        roughContact::CouplingDiagnostics d;
-        d.add(out);
-        scalar belowTable(d.belowTable);
-        scalar mismatch(d.pressureMismatch);
-        scalar firstTouch(d.apartAtFirstTouch);
-        reduce(belowTable, sumOp<scalar>());
-        reduce(d.belowTablePressureSum, sumOp<scalar>());
-        reduce(mismatch, sumOp<scalar>());
-        reduce(d.largestPressureMismatch, maxOp<scalar>());
-        reduce(firstTouch, sumOp<scalar>());
-        d.belowTable = std::size_t(belowTable);
-        d.pressureMismatch = std::size_t(mismatch);
-        d.apartAtFirstTouch = std::size_t(firstTouch);
-        const std::string messages[3] =
-        {
-            d.belowTableMessage(*settings_.interface),
-            d.pressureMismatchMessage(),
-            d.apartAtFirstTouchMessage(*settings_.interface)
-        };
-        for (label k = 0; k < 3; ++k)
-        {
-            if (!messages[k].empty() && !(warnedInput_ & (1 << k)))
-            {
-                WarningInFunction
-                    << who().c_str() << ": " << messages[k].c_str() << endl;
-                warnedInput_ |= (1 << k);
-            }
-        }
-    }
     this->refGrad() = 0.0;
 
     mixedFvPatchScalarField::updateCoeffs();

@@ -5,6 +5,7 @@
 // turbulentTemperatureCoupledBaffleMixedFvPatchScalarField and temperatureCoupledBase.
 #include "contactInterfaceFromDict.H"
 #include "dictionarySpecSource.H"
+#include "foamCompat.H"
 
 #include "error.H"
 #include "IOstreams.H"
@@ -219,12 +220,12 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
     // wrong kind. Both are thrown, not exiting, so that they are reported
     // below with the patch and field that asked for the entry.
     const dictionarySpecSource source(dict, "", casePath);
-    const bool throwing = FatalIOError.throwExceptions();
+    const bool throwing = foamCompat::throwFatalIOErrors();
     try
     {
         const roughContact::InterfaceSpec spec =
             roughContact::readInterfaceSpec(source);
-        FatalIOError.throwExceptions(throwing);
+        foamCompat::restoreFatalIOErrors(throwing);
 
         Info<< "thermalContactResistance: building the contact table for '"
             << name << "' (" << who.c_str() << ")" << endl;
@@ -300,10 +301,9 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
     }
     catch (const IOerror& e)
     {
-        FatalIOError.throwExceptions(throwing);
-        FatalIOError
+        foamCompat::restoreFatalIOErrors(throwing);
+        FatalIOErrorAt
         (
-            FUNCTION_NAME, __FILE__, __LINE__,
             e.ioFileName(), e.ioStartLineNumber(), e.ioEndLineNumber()
         )
             << who.c_str() << ": contact entry '" << name << "' in "
@@ -315,7 +315,7 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
         // The core names an entry of the contact by its key (model,
         // conductance, synthesize, ...): here as the dictionary has it, with
         // its line.
-        FatalIOError.throwExceptions(throwing);
+        foamCompat::restoreFatalIOErrors(throwing);
         const std::string message =
             source.has(e.parameter())
           ? source.name(e.parameter()) + ": " + e.message()
@@ -327,7 +327,7 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
     }
     catch (const std::exception& e)
     {
-        FatalIOError.throwExceptions(throwing);
+        foamCompat::restoreFatalIOErrors(throwing);
         FatalIOErrorInFunction(dict)
             << who.c_str() << ": contact entry '" << name << "' in "
             << dictFile << ": " << e.what()

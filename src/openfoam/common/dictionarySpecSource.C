@@ -2,6 +2,7 @@
 // Part of roughContact, licensed GPL-3.0-or-later (LICENSE). Builds on OpenFOAM (Copyright
 // OpenCFD Ltd. and The OpenFOAM Foundation; GPL-3.0-or-later).
 #include "dictionarySpecSource.H"
+#include "foamCompat.H"
 
 #include "IOstreams.H"
 #include "ITstream.H"
@@ -79,13 +80,13 @@ bool dictionarySpecSource::isWord(const std::string& key) const
 
 std::string dictionarySpecSource::word(const std::string& key) const
 {
-    return dict_.get<Foam::word>(key);
+    return foamCompat::get<Foam::word>(dict_, key);
 }
 
 
 std::string dictionarySpecSource::path(const std::string& key) const
 {
-    fileName f = dict_.get<fileName>(key);
+    fileName f = foamCompat::get<fileName>(dict_, key);
     f.expand();
     if (!f.isAbsolute())
     {
@@ -97,7 +98,7 @@ std::string dictionarySpecSource::path(const std::string& key) const
 
 double dictionarySpecSource::number(const std::string& key) const
 {
-    return dict_.get<scalar>(key);
+    return foamCompat::get<scalar>(dict_, key);
 }
 
 
@@ -131,13 +132,13 @@ std::uint64_t dictionarySpecSource::whole(const std::string& key) const
         );
     }
     // Not a number at all: OpenFOAM's own error, naming the entry
-    return std::uint64_t(dict_.get<label>(key));
+    return std::uint64_t(foamCompat::get<label>(dict_, key));
 }
 
 
 bool dictionarySpecSource::flag(const std::string& key) const
 {
-    return dict_.get<bool>(key);
+    return foamCompat::get<bool>(dict_, key);
 }
 
 
@@ -188,7 +189,7 @@ std::string dictionarySpecSource::name(const std::string& key) const
     {
         out += " of " + context_;
     }
-    const entry* e = dict_.findEntry(key);
+    const entry* e = foamCompat::findEntry(dict_, key);
     if (e && e->startLineNumber() > 0)
     {
         out += " (line " + std::to_string(e->startLineNumber()) + ")";

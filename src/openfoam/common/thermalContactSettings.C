@@ -5,7 +5,7 @@
 #include "contactInterfaceFromDict.H"
 
 #include "IOdictionary.H"
-#include "StringStream.H"
+#include "foamCompat.H"
 #include "Time.H"
 
 #include <cmath>
@@ -44,7 +44,7 @@ Foam::thermalContactSettings::thermalContactSettings
     const fileName& fieldFile
 )
 :
-    Tnbr(dict.get<word>("Tnbr")),
+    Tnbr(foamCompat::get<word>(dict, "Tnbr")),
     dictName(dict.name()),
     dictStart(dict.startLineNumber()),
     dictEnd(dict.endLineNumber())
@@ -61,7 +61,7 @@ Foam::thermalContactSettings::thermalContactSettings
     mode = hasH ? conductanceMode::constantH : conductanceMode::contact;
     if (hasH)
     {
-        hConstant = dict.get<scalar>("h");
+        hConstant = foamCompat::get<scalar>(dict, "h");
         if (!(hConstant > 0) || !std::isfinite(hConstant))
         {
             FatalIOErrorInFunction(dict)
@@ -81,7 +81,7 @@ Foam::thermalContactSettings::thermalContactSettings
         return;
     }
 
-    contactName = dict.get<word>("contact");
+    contactName = foamCompat::get<word>(dict, "contact");
     const bool hasP = dict.found("pressure");
     const bool hasPField = dict.found("pressureField");
     if (hasP == hasPField)
@@ -98,7 +98,7 @@ Foam::thermalContactSettings::thermalContactSettings
     }
     else
     {
-        pressureFieldName = dict.get<word>("pressureField");
+        pressureFieldName = foamCompat::get<word>(dict, "pressureField");
     }
 
     // One place both sides read: constant/thermalContactProperties.
@@ -115,7 +115,7 @@ Foam::thermalContactSettings::thermalContactSettings
             IOobject::MUST_READ_IF_MODIFIED,
             IOobject::NO_WRITE
         );
-        if (!io.typeHeaderOk<IOdictionary>(true))
+        if (!foamCompat::dictionaryHeaderOk(io))
         {
             FatalIOErrorInFunction(dict)
                 << who.c_str() << ": entry 'contact " << contactName
@@ -134,7 +134,7 @@ Foam::thermalContactSettings::thermalContactSettings
             << who.c_str() << ": entry 'contact " << contactName
             << "': there is no dictionary '" << contactName << "' in "
             << props.objectPath() << " (it has: "
-            << flatOutput(props.toc()) << ")" << exit(FatalIOError);
+            << foamCompat::listed(props.toc()) << ")" << exit(FatalIOError);
     }
     interface = contactInterfaceFromDict
     (
@@ -181,7 +181,7 @@ Foam::thermalContactSettings::thermalContactSettings
         }
         if (hasGap)
         {
-            gapWidth = dict.get<scalar>("gap");
+            gapWidth = foamCompat::get<scalar>(dict, "gap");
             if (!(gapWidth >= 0) || !std::isfinite(gapWidth))
             {
                 FatalIOErrorInFunction(dict)
@@ -192,7 +192,7 @@ Foam::thermalContactSettings::thermalContactSettings
         }
         else
         {
-            gapFieldName = dict.get<word>("gapField");
+            gapFieldName = foamCompat::get<word>(dict, "gapField");
         }
     }
 }
@@ -246,7 +246,7 @@ void Foam::thermalContactSettings::checkContactUnchanged
     contactCheckedTimeIndex = runTime.timeIndex();
     const IOdictionary& props =
         runTime.lookupObject<IOdictionary>("thermalContactProperties");
-    const dictionary* entry = props.findDict(contactName);
+    const dictionary* entry = foamCompat::findDict(props, contactName);
     if (!entry || entryText(*entry) != contactDigest)
     {
         WarningInFunction
@@ -264,15 +264,15 @@ void Foam::thermalContactSettings::checkContactUnchanged
 
 void Foam::thermalContactSettings::write(Ostream& os) const
 {
-    os.writeEntry("Tnbr", Tnbr);
+    foamCompat::writeEntry(os, "Tnbr", Tnbr);
     if (mode == conductanceMode::constantH)
     {
-        os.writeEntry("h", hConstant);
+        foamCompat::writeEntry(os, "h", hConstant);
         return;
     }
-    os.writeEntry("contact", contactName);
+    foamCompat::writeEntry(os, "contact", contactName);
     // What this run used: a restart compares it (checkRecordedSurface).
-    os.writeEntry("surfaceChecksum", surfaceChecksum);
+    foamCompat::writeEntry(os, "surfaceChecksum", surfaceChecksum);
 }
 
 
@@ -280,10 +280,10 @@ void Foam::thermalContactSettings::writeGap(Ostream& os) const
 {
     if (!gapFieldName.empty())
     {
-        os.writeEntry("gapField", gapFieldName);
+        foamCompat::writeEntry(os, "gapField", gapFieldName);
     }
     else if (gapWidth >= 0)
     {
-        os.writeEntry("gap", gapWidth);
+        foamCompat::writeEntry(os, "gap", gapWidth);
     }
 }

@@ -1,0 +1,189 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Part of roughContact, licensed GPL-3.0-or-later (LICENSE). Builds on OpenFOAM (Copyright
+// OpenCFD Ltd. and The OpenFOAM Foundation; GPL-3.0-or-later).
+#include "thermalContactCoupling.H"
+#include "foamCompat.H"
+
+#include "Pstream.H"
+#include "Time.H"
+
+#include "roughContact/thermal/InterfaceCoupling.hpp"
+
+#include <exception>
+#include <string>
+
+// An error found at run time (not while reading the dictionary): FatalIOError
+// naming the file and lines the condition was read from.
+#define RuntimeIOError                                                         \
+    FatalIOErrorAt(settings.dictName, settings.dictStart, settings.dictEnd)
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::thermalContactCoupling::thermalContactCoupling(const label n)
+:
+    areaFraction(n, Zero),
+    conductance(n, Zero),
+    contactPressure(n, Zero),
+    contactState(n, Zero),
+    gapConductance(n, Zero),
+    totalConductance(n, Zero)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::thermalContactCoupling::couple
+(
+    thermalContactSettings& settings,
+    const Time& runTime,
+    const std::function<string()>& who,
+    const scalarField& kappa,
+    const scalarField& deltaCoeffs,
+    const scalarField& faceTemperature,
+    const vectorField& faceCentres,
+    const scalarField& pressure,
+    const scalarField* gapWidth,
+    const neighbourValues& nbr,
+    const scalarField& nbrDeltaCoeffs
+)
+{
+    using mode = thermalContactSettings::conductanceMode;
+    roughContact::CouplingInputs in;
+    in.n = kappa.size();
+    in.kappa = kappa.cdata();
+    in.deltaCoeffs = deltaCoeffs.cdata();
+    in.kappaNbr = nbr.kappa.cdata();
+    in.deltaCoeffsNbr = nbrDeltaCoeffs.cdata();
+    try
+    {
+        if (settings.mode == mode::constantH)
+        {
+            in.faceTemperatureNbr = nbr.T.cdata();
+            roughContact::coupleConstant(settings.hConstant, in, outputs);
+        }
+        else
+        {
+            settings.checkContactUnchanged(runTime, who);
+            in.pressure = pressure.cdata();
+            in.pressureNbr = nbr.pressure.cdata();
+            in.cellTemperatureNbr = nbr.T.cdata();
+            if (settings.withGap())
+            {
+                // The gap's terms need both face temperatures and the widths
+                // both sides give.
+                in.faceTemperature = faceTemperature.cdata();
+                in.faceTemperatureNbr = nbr.faceTemperature.cdata();
+                if (gapWidth)
+                {
+                    in.gapWidth = gapWidth->cdata();
+                    in.gapWidthNbr = nbr.gapWidth.cdata();
+                }
+            }
+            roughContact::couple(*settings.interface, in, cache, outputs);
+        }
+    }
+    catch (const roughContact::FaceError& e)
+    {
+        const label facei = label(e.face());
+        RuntimeIOError
+            << who().c_str() << ": face " << facei << " at "
+            << faceCentres[facei] << ": pressure " << pressure[facei]
+            << " Pa on this side and " << nbr.pressure[facei] << " Pa on the"
+            << " neighbour's, kappa " << kappa[facei] << " and "
+            << nbr.kappa[facei] << " W/m/K, deltaCoeffs "
+            << deltaCoeffs[facei] << " and " << nbrDeltaCoeffs[facei]
+            << " 1/m: " << e.what() << exit(FatalIOError);
+    }
+    catch (const std::exception& e)
+    {
+        RuntimeIOError
+            << who().c_str() << ": the interface coupling of the faces"
+            << (
+                   settings.contactName.empty()
+                 ? std::string()
+                 : " (contact '" + settings.contactName + "')"
+               ).c_str()
+            << " failed: " << e.what() << exit(FatalIOError);
+    }
+
+    // The output fields, at every evaluation: function objects may sample
+    // them at any time step (a history of contactConductance, say).
+    const roughContact::CouplingOutputs& out = outputs;
+    forAll(conductance, facei)
+    {
+        const scalar kDelta = kappa[facei]*deltaCoeffs[facei];
+        const scalar kDeltaNbr = nbr.kappa[facei]*nbrDeltaCoeffs[facei];
+        conductance[facei] = roughContact::shownConductance
+        (
+            out.contactConductance[facei], kDelta, kDeltaNbr
+        );
+        totalConductance[facei] = roughContact::shownConductance
+        (
+            out.conductance[facei], kDelta, kDeltaNbr
+        );
+        areaFraction[facei] = out.areaFraction[facei];
+        contactPressure[facei] = out.pressure[facei];
+        contactState[facei] = roughContact::contactStateCode(out.state[facei]);
+        gapConductance[facei] =
+            out.gapConductance[facei] + out.radiativeConductance[facei];
+    }
+
+    if (settings.mode != mode::contact)
+    {
+        return;
+    }
+    const bool apart = out.apart > 0;
+    const bool beyondTable = out.beyondTable > 0;
+    if (returnReduce(apart, orOp<bool>()) && !warnedNoContact)
+    {
+        Info<< "thermalContactResistance: " << who().c_str()
+            << ": zero or negative pressure on some faces: the surfaces"
+            << " do not touch there ("
+            << (settings.interface->hasGap()
+                ? "only the gap's conductance remains)"
+                : "h = 0, no heat crosses)") << endl;
+        warnedNoContact = true;
+    }
+    if (returnReduce(beyondTable, orOp<bool>()) && !warnedBeyondTable)
+    {
+        WarningInFunction
+            << who().c_str() << ": pressures above "
+            << settings.interface->tableEnd()
+            << " Pa, the end of the table of contact '" << settings.contactName
+            << "' (its maxPressure), and below complete contact ("
+            << settings.interface->completeContactPressure()
+            << " Pa): h is held at the table's last value"
+            << " there. Raise maxPressure." << endl;
+        warnedBeyondTable = true;
+    }
+    // Input that is probably a mistake: the core counts it, says it in
+    // words; here the sums over processors and one warning of each kind.
+    roughContact::CouplingDiagnostics d;
+    d.add(out);
+    scalar belowTable(d.belowTable);
+    scalar mismatch(d.pressureMismatch);
+    scalar firstTouch(d.apartAtFirstTouch);
+    reduce(belowTable, sumOp<scalar>());
+    reduce(d.belowTablePressureSum, sumOp<scalar>());
+    reduce(mismatch, sumOp<scalar>());
+    reduce(d.largestPressureMismatch, maxOp<scalar>());
+    reduce(firstTouch, sumOp<scalar>());
+    d.belowTable = std::size_t(belowTable);
+    d.pressureMismatch = std::size_t(mismatch);
+    d.apartAtFirstTouch = std::size_t(firstTouch);
+    const std::string messages[3] =
+    {
+        d.belowTableMessage(*settings.interface),
+        d.pressureMismatchMessage(),
+        d.apartAtFirstTouchMessage(*settings.interface)
+    };
+    for (label k = 0; k < 3; ++k)
+    {
+        if (!messages[k].empty() && !(warnedInput & (1 << k)))
+        {
+            WarningInFunction
+                << who().c_str() << ": " << messages[k].c_str() << endl;
+            warnedInput |= (1 << k);
+        }
+    }
+}
