@@ -445,7 +445,17 @@ std::vector<SurfaceSpec> surfaceSpecsOf(const Options& o)
         SpecValues* v = add("roughness", "--roughness", "");
         const char* keys[] = {"Rq", "slope", "cutoff", "shortCutoff"};
         for (std::size_t i = 0; i < o.roughness.size() && i < 4; ++i) {
-            v->set(keys[i], o.roughness[i], "--roughness");
+            // RQ, CUTOFF and SHORTCUTOFF are lengths (SI, or with a unit: 0.8um); SLOPE a number
+            const std::string& item = o.roughness[i];
+            double value = 0.0;
+            if (i == 1) {
+                if (!parseNumber(item, value)) {
+                    throw ParameterError("--roughness", "SLOPE (the rms slope, a number) is '" + item + "'");
+                }
+            } else {
+                value = parseQuantity(item, Quantity::length, "--roughness");
+            }
+            v->set(keys[i], value, "--roughness");
         }
     }
     if (!o.fractal.empty()) {

@@ -87,8 +87,9 @@ void addOptions(CLI::App& app, Options& o)
     surface
         ->add_option("--roughness", o.roughness,
                      "RQ,SLOPE[,CUTOFF[,SHORTCUTOFF]]: the self-affine surface of rms height RQ [m] and rms "
-                     "slope SLOPE over wavelengths SHORTCUTOFF to CUTOFF [m] (default 2.5e-6 to 0.8e-3: ISO "
-                     "3274/4288), its Hurst exponent found from SLOPE/RQ")
+                     "slope SLOPE (a number) over wavelengths SHORTCUTOFF to CUTOFF [m] (default 2.5e-6 to "
+                     "0.8e-3: ISO 3274/4288), its Hurst exponent found from SLOPE/RQ; the lengths may carry a "
+                     "unit (0.8um,0.1,0.8mm)")
         ->delimiter(',')
         ->expected(2, 4);
     surface->require_option(1);

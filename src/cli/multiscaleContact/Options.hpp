@@ -17,7 +17,7 @@ struct Options {
     std::vector<std::string> areals;
     std::vector<std::string> spectra;
     std::vector<double> powerLaw; // b_m, m, fmin, fmax
-    std::vector<double> roughness; // Rq, rms slope[, cutoff[, short cutoff]]
+    std::vector<std::string> roughness; // Rq, rms slope[, cutoff[, short cutoff]], as given (lengths may carry a unit)
     std::vector<double> fractal;  // D, G, fmin, fmax
     std::optional<std::string> units;
     std::optional<double> dx;

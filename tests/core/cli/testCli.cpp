@@ -920,6 +920,13 @@ TEST(Cli, UnitSuffixesAreTheSINumbers)
     expectError(p + " --E 200GPa,70GPa --pressures 1um", {"--pressures", "is not a pressure"});
     expectError(p + " --E 200Gpa,70GPa --pressures 1e6", {"--E", "unknown unit 'Gpa'"});
     expectError(p + " --E 200GPa,70GPa --Sy 400MPa,soft --pressures 1e6", {"--Sy", "soft"});
+    // --roughness: RQ and the cut-offs are lengths, SLOPE a plain number
+    const std::string r = " --model hertz --E 200e9 --nu 0.3 --loads 1e-4";
+    const CommandResult rsi = run("--roughness 8e-7,0.1,8e-4,2.5e-6" + r);
+    ASSERT_EQ(rsi.status, 0) << rsi.err;
+    EXPECT_EQ(run("--roughness 0.8um,0.1,0.8mm,2.5um" + r).out, rsi.out);
+    expectError("--roughness 0.8um,0.1um" + r, {"--roughness", "SLOPE", "0.1um"});
+    expectError("--roughness 0.8MPa,0.1" + r, {"--roughness", "is not a length"});
 }
 
 TEST(Cli, ColumnNamesSayWhatTheyAre)
