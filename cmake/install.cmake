@@ -45,8 +45,14 @@ endif()
 # dependencies' own private ones (libzip's -lbz2 -llzma -lzstd), whose static libraries a
 # system need not have (Debian 13 does not install them with libzip-dev). The shared core
 # carries its dependencies itself.
+set(ROUGHCONTACT_PC_LIBS_EXTRA "")
 if(ROUGHCONTACT_LIBRARY_TYPE STREQUAL "STATIC_LIBRARY")
   set(ROUGHCONTACT_PC_REQUIRES "fftw3 libzip pugixml libcrypto")
+  if(ROUGHCONTACT_OPENMP)
+    # FFTW's OpenMP threads (no pkg-config module of its own) and the compiler's OpenMP runtime,
+    # on Libs for the reason above
+    set(ROUGHCONTACT_PC_LIBS_EXTRA " ${FFTW3_OMP_LIBRARY} ${OpenMP_CXX_FLAGS}")
+  endif()
 else()
   set(ROUGHCONTACT_PC_REQUIRES "")
 endif()

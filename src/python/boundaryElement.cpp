@@ -9,6 +9,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "roughContact/parallel/Threads.hpp"
 #include "convert.hpp"
 
 #include "roughContact/Limits.hpp"
@@ -50,7 +51,7 @@ void bindBoundaryElement(py::module_& m)
         .def(py::init([](const ArealSurface& surface, const py::object& materials, bool periodic,
                          std::optional<double> hardness, double tolerance, std::size_t maxIterations,
                          std::optional<std::string> detrend, const py::object& progress, bool verbose,
-                         double progressEvery) {
+                         double progressEvery, const py::object& threads) {
                  BoundaryElementOptions o;
                  o.periodic = periodic;
                  if (detrend) {
@@ -93,6 +94,9 @@ void bindBoundaryElement(py::module_& m)
                          }
                      };
                  }
+                 if (!threads.is_none()) {
+                     setThreads(threads.cast<int>());
+                 }
                  const double Ep = materialsOf(materials).reducedModulus();
                  py::gil_scoped_release release;
                  x.model = std::make_unique<BoundaryElementModel>(surface, Ep, o);
@@ -101,8 +105,11 @@ void bindBoundaryElement(py::module_& m)
              py::arg("surface"), py::arg("materials"), py::arg("periodic") = false, py::arg("hardness") = py::none(),
              py::arg("tolerance") = 1e-8, py::arg("max_iterations") = 20000, py::arg("detrend") = py::none(),
              py::arg("progress") = py::none(), py::arg("verbose") = false, py::arg("progress_every") = 3.0,
+             py::arg("threads") = py::none(),
              "BoundaryElement(surface, materials, periodic=False, hardness=None, tolerance=1e-8, "
-             "max_iterations=20000, detrend=None, progress=None, verbose=False, progress_every=3.0): progress "
+             "max_iterations=20000, detrend=None, progress=None, verbose=False, progress_every=3.0, "
+             "threads=None): threads sets the process's threads of the solves (set_threads; None: as they "
+             "are, by default what the machine has); progress "
              "a callable called every progress_every seconds of a long solve with a dict (stage, iteration, "
              "residual, tolerance, seconds), or "
              "verbose=True for a line on sys.stderr; surface an ArealSurface, detrended here as detrend says "

@@ -20,6 +20,7 @@
 #include "bindings.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/parallel/Threads.hpp"
 
 #include <exception>
 
@@ -51,6 +52,13 @@ PYBIND11_MODULE(roughcontact, m)
 {
     m.doc() = moduleDoc;
     m.attr("__version__") = ROUGHCONTACT_VERSION; // the CMake project's version
+
+    // ---- threads of the boundary-element solves (parallel/Threads.hpp)
+    m.def("set_threads", &setThreads, py::arg("n"),
+          "Threads of the boundary-element solves (FFTW's and the solvers' loops), for the whole "
+          "process: BoundaryElement, check() and ContactInterface's boundaryElement tables made after "
+          "it. Default: what the machine has. The answers are the same for any number, bit for bit.");
+    m.def("threads", &threads, "The threads the boundary-element solves use (set_threads).");
 
     // ---- errors
     inputErrorType = PyErr_NewExceptionWithDoc(

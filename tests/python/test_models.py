@@ -184,3 +184,23 @@ def test_boundary_element_progress(spectrum, capsys):
 
     with pytest.raises(KeyboardInterrupt):
         rc.BoundaryElement(surface, materials, periodic=True, progress=stop, progress_every=0).curve([2e7])
+
+
+def test_threads_change_nothing_in_the_answer(spectrum):
+    """set_threads / threads= (issue 23): the boundary-element answer is the same bit for bit
+    for 1 and 2 threads (a 160 x 160 grid: the loops and FFTs run threaded), and a count below 1
+    is refused with the parameter named."""
+    surface = rc.synthesize_isotropic(spectrum, 160, 3)
+    materials = rc.ContactMaterials.from_reduced_modulus(2e11)
+    before = rc.threads()
+    try:
+        one = rc.BoundaryElement(surface, materials, periodic=True, threads=1).curve([2e7])
+        assert rc.threads() == 1
+        rc.set_threads(2)
+        two = rc.BoundaryElement(surface, materials, periodic=True).curve([2e7])
+        for key in ("area_fraction", "mean_separation", "conductance_per_conductivity", "iterations"):
+            assert one[key].tobytes() == two[key].tobytes(), key
+        with pytest.raises(rc.ParameterError, match="^threads: must be 1 to 4096"):
+            rc.set_threads(0)
+    finally:
+        rc.set_threads(before)

@@ -198,6 +198,11 @@ void addOptions(CLI::App& app, Options& o)
                    "cooperMikicYovanovich: Vickers coefficients C1 [Pa], C2 of H_v = c1 (d_v/1 um)^c2, the "
                    "microhardness from Song & Yovanovich's correlation");
     app.add_flag("--info", o.info, "print the surface's parameters (McCool, fractal fit) to stderr");
+    app.add_option("--threads", o.threads,
+                   "threads of the boundary-element solves (--model boundaryElement, --check, --table): "
+                   "FFTW's and the solver's loops; the answer is the same for any number (default: what "
+                   "the machine has)")
+        ->check(CLI::Range(1, 4096));
     app.add_option("--k1", o.k1, "conductivity [W/(m K)] of solid 1: with --k2, add the column h = k_s h_per_k "
                                  "[W/(m^2 K)], k_s = 2 k1 k2/(k1 + k2)");
     app.add_option("--k2", o.k2, "conductivity [W/(m K)] of solid 2 (with --k1)");

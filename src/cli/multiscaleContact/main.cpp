@@ -11,6 +11,7 @@
 // Check, BoundaryElementRun, Table (what it computes); this file only parses and reports errors.
 #include "Options.hpp"
 #include "Run.hpp"
+#include "roughContact/parallel/Threads.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -45,6 +46,9 @@ int main(int argc, char** argv)
         return app.exit(e) == 0 ? 0 : 1;
     }
     try {
+        if (o.threads > 0) {
+            roughContact::setThreads(o.threads);
+        }
         return run(o);
     } catch (const std::exception& e) {
         std::cerr << "multiscaleContact: error: " << e.what() << '\n';

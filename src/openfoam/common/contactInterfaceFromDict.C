@@ -16,6 +16,7 @@
 #include "roughContact/interface/InterfaceSpecReader.hpp"
 #include "roughContact/interface/SurfaceCheck.hpp"
 #include "roughContact/models/BoundaryElement.hpp"
+#include "roughContact/parallel/Threads.hpp"
 
 #include "roughContact/surface/Spectrum.hpp"
 
@@ -227,6 +228,15 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
             roughContact::readInterfaceSpec(source);
         foamCompat::restoreFatalIOErrors(throwing);
 
+        // The threads of the boundary-element solves (table, check): the
+        // entry's; else 1 in a parallel run, where every core has a rank;
+        // else what the machine has.
+        roughContact::setThreads
+        (
+            spec.threads ? *spec.threads
+          : Pstream::parRun() ? 1
+          : roughContact::hardwareThreads()
+        );
         Info<< "thermalContactResistance: building the contact table for '"
             << name << "' (" << who.c_str() << ")" << endl;
         std::shared_ptr<const roughContact::ContactInterface> iface;

@@ -283,6 +283,18 @@ TEST(InterfaceSpecReader, PointsPerDecadeGoesToTheTableOfTheModelNamed)
     messageOf([&] { readInterfaceSpec(c); }, "--pointsPerDecade");
 }
 
+TEST(InterfaceSpecReader, ThreadsAreAWholeNumberFrom1)
+{
+    SpecValues c = contact();
+    EXPECT_FALSE(readInterfaceSpec(c).threads.has_value());
+    c.set("threads", std::uint64_t(2));
+    EXPECT_EQ(*readInterfaceSpec(c).threads, 2);
+    c.set("threads", std::uint64_t(0));
+    EXPECT_NE(messageOf([&] { readInterfaceSpec(c); }, "--threads").find("1 to 4096"), std::string::npos);
+    c.set("threads", 1.5);
+    messageOf([&] { readInterfaceSpec(c); }, "--threads");
+}
+
 TEST(InterfaceSpecReader, SeedBelongsToSynthesize)
 {
     SpecValues c = contact();

@@ -2,6 +2,7 @@
 #include "roughContact/bem/HalfSpaceOperator.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/parallel/Threads.hpp"
 
 #include <fftw3.h>
 
@@ -29,9 +30,22 @@ double F(double x, double y)
 template <class T> struct FftwFree {
     void operator()(T* p) const { fftw_free(p); }
 };
+
+// FFTW plans its next transforms for `n` threads (its OpenMP threads, set up once; a serial
+// build has one). FFTW's planner is not thread-safe: operators are made on one thread.
+void planFor(int n)
+{
+#if defined(ROUGHCONTACT_OPENMP)
+    static const bool ready = fftw_init_threads() != 0;
+    fftw_plan_with_nthreads(ready ? n : 1);
+#else
+    (void)n;
+#endif
+}
 } // namespace
 
-// FFT buffers and plans of one grid, made once (FFTW_ESTIMATE: deterministic, no timing runs).
+// FFT buffers and plans of one grid, made once (FFTW_ESTIMATE: deterministic, no timing runs),
+// for the threads() of the time they are made.
 struct HalfSpaceOperator::Fft {
     std::size_t mx;
     std::size_t my;
@@ -49,6 +63,7 @@ struct HalfSpaceOperator::Fft {
             throw std::bad_alloc();
         }
         // FFTW's 2-D real transforms: n0 = my rows of n1 = mx (row-major, x fastest).
+        planFor(threads());
         forward = fftw_plan_dft_r2c_2d(static_cast<int>(my), static_cast<int>(mx), real.get(), spectral.get(),
                                        FFTW_ESTIMATE);
         backward = fftw_plan_dft_c2r_2d(static_cast<int>(my), static_cast<int>(mx), spectral.get(),
@@ -164,10 +179,11 @@ void HalfSpaceOperator::convolve(const std::vector<double>& multiplier, const do
         }
         fftw_execute(fft_->forward);
     }
-    for (std::size_t i = 0; i < multiplier.size(); ++i) {
-        c[i][0] *= multiplier[i];
-        c[i][1] *= multiplier[i];
-    }
+    const double* m = multiplier.data();
+    parallel::forEach(multiplier.size(), [c, m](std::size_t i) {
+        c[i][0] *= m[i];
+        c[i][1] *= m[i];
+    });
     if (periodic_ && fftw_alignment_of(out) == aligned) {
         fftw_execute_dft_c2r(fft_->backward, c, out); // c2r overwrites c: scratch
     } else if (periodic_) {

@@ -3,6 +3,7 @@
 
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
+#include "roughContact/parallel/Threads.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -20,6 +21,24 @@ namespace {
 // tolerance (displacements a million times the roughness: complete contact), the elastic solve
 // is converged at 1000 eps max|u| / rms h instead, the best its arithmetic can tell.
 constexpr double displacementRoundOff = 1000.0 * std::numeric_limits<double>::epsilon();
+
+// The loops over the grid run on threads() threads (parallel/Threads.hpp): elementwise ones by
+// forEach, sums by these, in blocks combined in order, so every result is the same for any
+// number of threads.
+using parallel::forEach;
+
+// The sum over i of body(i) (which may also write element i of its arrays).
+template <class Body> double sumOf(std::size_t n, Body&& body)
+{
+    return parallel::reduce(
+        n, 0.0, [&body](std::size_t i, double& a) { a += body(i); }, [](double& a, double b) { a += b; });
+}
+
+// Several sums and flags at once: body(i, acc) adds element i into acc.
+template <class Acc, class Body> Acc sumsOf(std::size_t n, Body&& body)
+{
+    return parallel::reduce(n, Acc{}, body, [](Acc& a, const Acc& b) { a += b; });
+}
 
 // Reports a solve's progress every progressInterval seconds (reads the clock once an iteration:
 // nothing next to the iteration's FFTs).
@@ -120,15 +139,25 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
         Balanced b;
         bool& changed = b.changed;
         for (int pass = 0; pass < 100; ++pass) {
-            double sumActive = 0.0;
-            std::size_t atCap = 0;
-            for (double v : q) {
-                if (v >= H) {
-                    ++atCap;
-                } else {
-                    sumActive += v;
+            struct Loads {
+                double sumActive = 0.0;
+                std::size_t atCap = 0;
+                Loads& operator+=(const Loads& o)
+                {
+                    sumActive += o.sumActive;
+                    atCap += o.atCap;
+                    return *this;
                 }
-            }
+            };
+            const Loads loads = sumsOf<Loads>(n, [&](std::size_t i, Loads& a) {
+                if (q[i] >= H) {
+                    ++a.atCap;
+                } else {
+                    a.sumActive += q[i];
+                }
+            });
+            const double sumActive = loads.sumActive;
+            const std::size_t atCap = loads.atCap;
             const double target = W - double(atCap) * H;
             // (Round-off of W - atCap H counts as 0: a load exactly carried by the cap.)
             const double slack = 1e-12 * W;
@@ -142,9 +171,7 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
                 // beside a contact that is all at the cap): every loaded point gives its share,
                 // those at H leave it.
                 const double k = W / (sumActive + double(atCap) * H);
-                for (double& v : q) {
-                    v *= k;
-                }
+                forEach(n, [&](std::size_t i) { q[i] *= k; });
                 changed = true;
                 continue;
             }
@@ -170,16 +197,24 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
             }
             const double k = target / sumActive;
             b.k = k;
-            bool lifted = false;
-            for (double& v : q) {
-                if (v < H) {
-                    v *= k;
-                    if (v >= H) {
-                        v = H;
-                        lifted = true;
-                    }
+            struct Lifted {
+                bool any = false;
+                Lifted& operator+=(const Lifted& o)
+                {
+                    any = any || o.any;
+                    return *this;
                 }
-            }
+            };
+            const bool lifted = sumsOf<Lifted>(n, [&](std::size_t i, Lifted& a) {
+                                    double& v = q[i];
+                                    if (v < H) {
+                                        v *= k;
+                                        if (v >= H) {
+                                            v = H;
+                                            a.any = true;
+                                        }
+                                    }
+                                }).any;
             if (!lifted) {
                 break;
             }
@@ -239,17 +274,29 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
             op_.apply(p.data(), u.data());
             sinceExact = 0;
         }
-        std::size_t na = 0;
-        double gbar = 0.0;
-        double uMax = 0.0;
-        for (std::size_t i = 0; i < n; ++i) {
-            uMax = std::max(uMax, std::abs(u[i]));
+        struct GapSums {
+            double gbar = 0.0;
+            double uMax = 0.0;
+            std::size_t na = 0;
+            GapSums& operator+=(const GapSums& o)
+            {
+                gbar += o.gbar;
+                uMax = std::max(uMax, o.uMax);
+                na += o.na;
+                return *this;
+            }
+        };
+        const GapSums gs = sumsOf<GapSums>(n, [&](std::size_t i, GapSums& a) {
+            a.uMax = std::max(a.uMax, std::abs(u[i]));
             g[i] = u[i] - h_[i];
             if (active(p[i])) {
-                gbar += g[i];
-                ++na;
+                a.gbar += g[i];
+                ++a.na;
             }
-        }
+        });
+        const std::size_t na = gs.na;
+        double gbar = gs.gbar;
+        const double uMax = gs.uMax;
         if (na == 0) {
             if (!capped) {
                 throw ParameterError("mean pressure", "no point carries load: the solve lost its contact set");
@@ -264,13 +311,10 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
         } else {
             gbar /= double(na);
         }
-        double G = 0.0;
-        for (std::size_t i = 0; i < n; ++i) {
+        double G = sumOf(n, [&](std::size_t i) {
             g[i] -= gbar;
-            if (active(p[i])) {
-                G += g[i] * g[i];
-            }
-        }
+            return active(p[i]) ? g[i] * g[i] : 0.0;
+        });
         const double gapResidual = na == 0 ? 0.0 : std::sqrt(G / double(na)) / hScale_;
         if (capped && na > 1 && gapResidual < 0.5 * bestResidual) {
             bestResidual = gapResidual;
@@ -285,22 +329,14 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
         if (options_.precondition && na > 0) {
             // The preconditioned gap z = P S P g, P the projection onto the fields on the
             // active set with zero sum (the load stays W), S the stiffness (HalfSpaceOperator).
-            for (std::size_t i = 0; i < n; ++i) {
-                z[i] = active(p[i]) ? g[i] : 0.0;
-            }
+            forEach(n, [&](std::size_t i) { z[i] = active(p[i]) ? g[i] : 0.0; });
             op_.applyStiffness(z.data(), z.data());
-            double zbar = 0.0;
-            for (std::size_t i = 0; i < n; ++i) {
-                if (active(p[i])) {
-                    zbar += z[i];
-                }
-            }
+            double zbar = sumOf(n, [&](std::size_t i) { return active(p[i]) ? z[i] : 0.0; });
             zbar /= double(na);
-            G = 0.0;
-            for (std::size_t i = 0; i < n; ++i) {
+            G = sumOf(n, [&](std::size_t i) {
                 z[i] = active(p[i]) ? z[i] - zbar : 0.0;
-                G += z[i] * g[i];
-            }
+                return z[i] * g[i];
+            });
         } else if (options_.precondition) {
             std::fill(z.begin(), z.end(), 0.0);
         }
@@ -312,16 +348,26 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
         // many times over), and at least the stiffness of the longest wavelength. Its mirror at
         // the cap: where the surfaces part at a point carrying H, tau (S g_open) is taken off.
         if (options_.precondition) {
-            bool penetrating = false;
-            bool opening = false;
-            for (std::size_t i = 0; i < n; ++i) {
+            struct Flags {
+                bool penetrating = false;
+                bool opening = false;
+                Flags& operator+=(const Flags& o)
+                {
+                    penetrating = penetrating || o.penetrating;
+                    opening = opening || o.opening;
+                    return *this;
+                }
+            };
+            const Flags f = sumsOf<Flags>(n, [&](std::size_t i, Flags& a) {
                 zOut[i] = p[i] <= 0.0 && g[i] < 0.0 ? g[i] : 0.0;
-                penetrating = penetrating || zOut[i] < 0.0;
+                a.penetrating = a.penetrating || zOut[i] < 0.0;
                 if (capped) {
                     zRel[i] = p[i] >= H && g[i] > 0.0 ? g[i] : 0.0;
-                    opening = opening || zRel[i] > 0.0;
+                    a.opening = a.opening || zRel[i] > 0.0;
                 }
-            }
+            });
+            const bool penetrating = f.penetrating;
+            const bool opening = f.opening;
             if (penetrating) {
                 op_.applyStiffness(zOut.data(), zOut.data());
             }
@@ -333,26 +379,29 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
         // Gold is 0 after an iteration whose gap vanished exactly on the contact set (one
         // point in contact): restart the conjugate direction then instead of dividing by it.
         const double beta = delta > 0.0 && Gold > 0.0 ? delta * G / Gold : 0.0;
-        for (std::size_t i = 0; i < n; ++i) {
-            t[i] = active(p[i]) ? direction[i] + beta * t[i] : 0.0;
-        }
+        forEach(n, [&](std::size_t i) { t[i] = active(p[i]) ? direction[i] + beta * t[i] : 0.0; });
         Gold = G;
         op_.apply(t.data(), r.data());
-        double rbar = 0.0;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (active(p[i])) {
-                rbar += r[i];
-            }
-        }
+        double rbar = sumOf(n, [&](std::size_t i) { return active(p[i]) ? r[i] : 0.0; });
         rbar /= double(std::max<std::size_t>(na, 1));
-        double num = 0.0;
-        double den = 0.0;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (active(p[i])) {
-                num += g[i] * t[i];
-                den += (r[i] - rbar) * t[i];
+        struct Step {
+            double num = 0.0;
+            double den = 0.0;
+            Step& operator+=(const Step& o)
+            {
+                num += o.num;
+                den += o.den;
+                return *this;
             }
-        }
+        };
+        const Step st = sumsOf<Step>(n, [&](std::size_t i, Step& a) {
+            if (active(p[i])) {
+                a.num += g[i] * t[i];
+                a.den += (r[i] - rbar) * t[i];
+            }
+        });
+        const double num = st.num;
+        const double den = st.den;
         const double tau = den > 0.0 ? num / den : 0.0;
         // The overlap correction's factor: tau, or, when the step is empty (one point in
         // contact: the gap vanishes on the contact set, so t = 0 and tau = 0; a warm start
@@ -362,30 +411,41 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
         // The step, the clamps 0 <= p <= H and, where the surface penetrates a point without
         // pressure, some pressure there (Polonsky & Keer's overlap correction); where it parts
         // from a point at H, less.
-        bool clamped = false;
-        bool overlap = false;
-        double sum = 0.0;
-        for (std::size_t i = 0; i < n; ++i) {
+        struct Update {
+            bool clamped = false;
+            bool overlap = false;
+            double sum = 0.0;
+            Update& operator+=(const Update& o)
+            {
+                clamped = clamped || o.clamped;
+                overlap = overlap || o.overlap;
+                sum += o.sum;
+                return *this;
+            }
+        };
+        const bool precondition = options_.precondition;
+        const double smallest = op_.smallestStiffness();
+        const Update up = sumsOf<Update>(n, [&](std::size_t i, Update& a) {
             const double old = p[i];
             if (active(old)) {
                 const double v = old - tau * t[i];
-                clamped = clamped || v < 0.0 || v > H;
+                a.clamped = a.clamped || v < 0.0 || v > H;
                 p[i] = std::min(H, std::max(0.0, v));
             } else if (old <= 0.0 && g[i] < 0.0) {
-                p[i] = options_.precondition
-                           ? tauOverlap * std::max(-zOut[i], -g[i] * op_.smallestStiffness())
-                           : -tauOverlap * g[i];
+                p[i] = precondition ? tauOverlap * std::max(-zOut[i], -g[i] * smallest) : -tauOverlap * g[i];
                 p[i] = std::min(H, p[i]);
-                overlap = true;
+                a.overlap = true;
             } else if (old >= H && g[i] > 0.0) { // (capped only: nothing reaches H = inf)
-                const double give = options_.precondition
-                                        ? tauOverlap * std::max(zRel[i], g[i] * op_.smallestStiffness())
-                                        : tauOverlap * g[i];
+                const double give =
+                    precondition ? tauOverlap * std::max(zRel[i], g[i] * smallest) : tauOverlap * g[i];
                 p[i] = std::max(0.0, H - give);
-                overlap = true;
+                a.overlap = true;
             }
-            sum += p[i];
-        }
+            a.sum += p[i];
+        });
+        bool clamped = up.clamped;
+        const bool overlap = up.overlap;
+        const double sum = up.sum;
         delta = overlap ? 0.0 : 1.0;
         // The load: scale to the sum W (with the cap: the active points, balance()).
         if (capped) {
@@ -400,26 +460,25 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
                 uHCurrent = false;
             }
             if (uCurrent && b.atCap > 0 && !uHCurrent) {
-                for (std::size_t i = 0; i < n; ++i) {
-                    uH[i] = p[i] >= H ? H : 0.0;
-                }
+                forEach(n, [&](std::size_t i) { uH[i] = p[i] >= H ? H : 0.0; });
                 op_.apply(uH.data(), uH.data());
                 uHCurrent = true;
             }
             if (uCurrent) {
-                for (std::size_t i = 0; i < n; ++i) {
+                forEach(n, [&](std::size_t i) {
                     u[i] = b.k * (u[i] - tau * r[i]) + (b.atCap > 0 ? (1.0 - b.k) * uH[i] : 0.0);
-                }
+                });
             }
         } else {
             const double k = sum > 0.0 ? W / sum : 1.0;
             uCurrent = !clamped && !overlap;
-            for (std::size_t i = 0; i < n; ++i) {
+            const bool linear = uCurrent;
+            forEach(n, [&](std::size_t i) {
                 p[i] *= k;
-                if (uCurrent) {
+                if (linear) {
                     u[i] = k * (u[i] - tau * r[i]);
                 }
-            }
+            });
         }
         ++sinceExact;
         // Converged: the separation vanishes on the active set (to the tolerance), no point
@@ -651,11 +710,11 @@ SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<b
             return;
         }
         op.applyStiffness(res.data(), z.data());
-        for (std::size_t i = 0; i < n; ++i) {
+        forEach(n, [&](std::size_t i) {
             if (!contact[i]) {
                 z[i] = 0.0;
             }
-        }
+        });
     };
     precondition();
     double rz = 0.0;
@@ -669,21 +728,16 @@ SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<b
     ProgressClock clock(progress, "conductance", tolerance, progressEvery);
     for (std::size_t it = 1; it <= maxIterations && !out.converged; ++it) {
         op.apply(d.data(), Kd.data());
-        double dKd = 0.0;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (contact[i]) {
-                dKd += d[i] * Kd[i];
-            }
-        }
+        const double dKd = sumOf(n, [&](std::size_t i) { return contact[i] ? d[i] * Kd[i] : 0.0; });
         const double alpha = rz / dKd;
-        double rrNew = 0.0;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (contact[i]) {
-                x[i] += alpha * d[i];
-                res[i] -= alpha * Kd[i];
-                rrNew += res[i] * res[i];
+        const double rrNew = sumOf(n, [&](std::size_t i) {
+            if (!contact[i]) {
+                return 0.0;
             }
-        }
+            x[i] += alpha * d[i];
+            res[i] -= alpha * Kd[i];
+            return res[i] * res[i];
+        });
         out.iterations = it;
         out.residual = std::sqrt(rrNew) / norm;
         if (out.residual <= tolerance) {
@@ -692,15 +746,10 @@ SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<b
         }
         clock.tick(it, out.residual);
         precondition();
-        double rzNew = 0.0;
-        for (std::size_t i = 0; i < n; ++i) {
-            rzNew += res[i] * z[i];
-        }
+        const double rzNew = sumOf(n, [&](std::size_t i) { return res[i] * z[i]; });
         const double beta = rzNew / rz;
         rz = rzNew;
-        for (std::size_t i = 0; i < n; ++i) {
-            d[i] = contact[i] ? z[i] + beta * d[i] : 0.0;
-        }
+        forEach(n, [&](std::size_t i) { d[i] = contact[i] ? z[i] + beta * d[i] : 0.0; });
     }
     double mean = 0.0;
     for (double v : x) {

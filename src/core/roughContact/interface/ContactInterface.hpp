@@ -105,6 +105,11 @@ struct InterfaceSpec {
     /// Front-ends: check the laws on this surface at start-up (checkSurface, SurfaceCheck.hpp)
     /// and warn when the chosen one misses the exact model. ContactInterface does not use it.
     bool check = false;
+    /// Front-ends: the threads of the boundary-element solves of this entry's table and check
+    /// (setThreads, parallel/Threads.hpp); unset: the front-end's default (the condition: 1 in a
+    /// parallel run, where every core has a rank, else what the machine has). ContactInterface
+    /// does not use it.
+    std::optional<int> threads;
 };
 
 /// The equivalent surface of one or two surfaces: the spectrum of one, the combination of two

@@ -163,7 +163,7 @@ const std::vector<std::string>& interfaceEntries()
     static const std::vector<std::string> names{
         "model",     "surface",        "surfaces",  "side1",    "side2",   "conductance",     "microhardness",
         "vickers",   "minPressure",    "maxPressure", "pointsPerDecade", "synthesize", "seed", "periodic",
-        "detrend",   "hardness",       "hardnessFromYield", "gap", "check"};
+        "detrend",   "hardness",       "hardnessFromYield", "gap", "check", "threads"};
     return names;
 }
 
@@ -430,6 +430,14 @@ void readInterfaceSettings(const SpecSource& source, InterfaceSpec& spec)
     }
     if (source.has("check")) {
         spec.check = source.flag("check");
+    }
+    if (source.has("threads")) {
+        const std::uint64_t t = source.whole("threads");
+        if (t < 1 || t > 4096) {
+            throw ParameterError(source.name("threads"), "must be 1 to 4096 (the threads of the boundary-element "
+                                                         "solves), got " + std::to_string(t));
+        }
+        spec.threads = static_cast<int>(t);
     }
 }
 

@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The threads of the boundary-element solves (FFTW's threads and the solvers' own loops), and
+// the loops they run: each loop's answer is the same for any number of threads, bit for bit.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace roughContact {
+
+/// The threads the core uses for its boundary-element work (HalfSpaceOperator's FFTs and the
+/// solvers' loops; operators made after a change use it). Default: what the machine has
+/// (std::thread::hardware_concurrency, at least 1). 1 = serial. A build without OpenMP has 1
+/// only (threadsAvailable() false): setThreads accepts any n >= 1 and uses one.
+void setThreads(int n);
+int threads() noexcept;
+/// The machine's hardware threads (at least 1).
+int hardwareThreads() noexcept;
+/// True when the core was built with OpenMP (more than one thread can run).
+bool threadsAvailable() noexcept;
+
+namespace parallel {
+
+/// Loops shorter than this run serially (a thread team costs more than they do).
+inline constexpr std::size_t minimumParallelSize = 16384;
+/// The block of a reduction: partial results per block, combined in block order, so that a
+/// sum is the same for any number of threads (and for one).
+inline constexpr std::size_t reductionBlock = 4096;
+
+/// body(begin, end, context) over [0, n) in pieces, on threads() threads when n items of
+/// `weight` elements each are at least minimumParallelSize elements (the pieces of one call
+/// are disjoint: body may write its own items).
+void forRange(std::size_t n, std::size_t weight, void (*body)(std::size_t, std::size_t, void*), void* context);
+
+template <class Body>
+void forEach(std::size_t n, Body&& body)
+{
+    forRange(
+        n, 1,
+        [](std::size_t begin, std::size_t end, void* c) {
+            Body& b = *static_cast<Body*>(c);
+            for (std::size_t i = begin; i < end; ++i) {
+                b(i);
+            }
+        },
+        &body);
+}
+
+/// The reduction of body(i, acc) over [0, n): each block of reductionBlock elements from a copy
+/// of `init`, the blocks then combined in order by combine(acc, blockAcc). The same answer for
+/// any number of threads.
+template <class Acc, class Body, class Combine>
+Acc reduce(std::size_t n, const Acc& init, Body&& body, Combine&& combine)
+{
+    const std::size_t blocks = (n + reductionBlock - 1) / reductionBlock;
+    std::vector<Acc> part(blocks, init);
+    struct Context {
+        Body& body;
+        std::vector<Acc>& part;
+        std::size_t n;
+    } context{body, part, n};
+    forRange(
+        blocks, reductionBlock,
+        [](std::size_t begin, std::size_t end, void* c) {
+            Context& x = *static_cast<Context*>(c);
+            for (std::size_t b = begin; b < end; ++b) {
+                const std::size_t last = std::min((b + 1) * reductionBlock, x.n);
+                // A local accumulator (in registers: the arrays body writes cannot alias it)
+                Acc acc = x.part[b];
+                for (std::size_t i = b * reductionBlock; i < last; ++i) {
+                    x.body(i, acc);
+                }
+                x.part[b] = acc;
+            }
+        },
+        &context);
+    Acc out = init;
+    for (const Acc& a : part) {
+        combine(out, a);
+    }
+    return out;
+}
+
+} // namespace parallel
+} // namespace roughContact

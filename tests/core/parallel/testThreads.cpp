@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The threads of the boundary-element solves (parallel/Threads.hpp): every loop, and so every
+// solve, gives the same answer bit for bit for any number of threads.
+#include "roughContact/Error.hpp"
+#include "roughContact/bem/HalfSpaceOperator.hpp"
+#include "roughContact/bem/PolonskyKeer.hpp"
+#include "roughContact/parallel/Threads.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <random>
+#include <vector>
+
+using namespace roughContact;
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+
+// Sets the core's threads for one scope, and puts back what was there.
+class ThreadsFor {
+public:
+    explicit ThreadsFor(int n) : before_(threads()) { setThreads(n); }
+    ~ThreadsFor() { setThreads(before_); }
+    ThreadsFor(const ThreadsFor&) = delete;
+    ThreadsFor& operator=(const ThreadsFor&) = delete;
+
+private:
+    int before_;
+};
+
+// A rough periodic surface of nx x ny cells: 40 waves of random direction and phase, amplitude
+// falling with the wavenumber (heights of rms about `rms`).
+std::vector<double> waves(std::size_t nx, std::size_t ny, unsigned seed, double rms)
+{
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<int> k(-12, 12);
+    std::uniform_real_distribution<double> phase(0.0, 2 * pi);
+    std::vector<double> h(nx * ny, 0.0);
+    for (int w = 0; w < 40; ++w) {
+        const int kx = k(rng);
+        const int ky = k(rng);
+        const double q = std::hypot(kx, ky);
+        if (q < 1.0) {
+            continue;
+        }
+        const double a = rms * std::pow(q, -1.8);
+        const double ph = phase(rng);
+        for (std::size_t iy = 0; iy < ny; ++iy) {
+            for (std::size_t ix = 0; ix < nx; ++ix) {
+                h[iy * nx + ix] += a * std::cos(2 * pi * (kx * double(ix) / double(nx) + ky * double(iy) / double(ny)) + ph);
+            }
+        }
+    }
+    return h;
+}
+
+bool sameBits(const std::vector<double>& a, const std::vector<double>& b)
+{
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+} // namespace
+
+TEST(Threads, AtLeastOneAndChecked)
+{
+    EXPECT_GE(hardwareThreads(), 1);
+    EXPECT_GE(threads(), 1);
+    EXPECT_THROW(setThreads(0), ParameterError);
+    EXPECT_THROW(setThreads(-2), ParameterError);
+    const ThreadsFor two(2);
+    EXPECT_EQ(threads(), threadsAvailable() ? 2 : 1);
+}
+
+TEST(Threads, ForEachVisitsEveryElementOnce)
+{
+    for (int t : {1, 2, 3}) {
+        const ThreadsFor scope(t);
+        for (std::size_t n : {std::size_t(0), std::size_t(5), parallel::minimumParallelSize - 1,
+                              std::size_t(100003)}) {
+            std::vector<int> visits(n, 0);
+            parallel::forEach(n, [&](std::size_t i) { ++visits[i]; });
+            std::size_t wrong = 0;
+            for (int v : visits) {
+                wrong += v != 1;
+            }
+            EXPECT_EQ(wrong, 0u) << "threads " << t << ", n " << n;
+        }
+    }
+}
+
+TEST(Threads, SumsAreTheSameForAnyNumberOfThreads)
+{
+    // 100003 values (not a multiple of the block) over eight decades, so that the order of the
+    // additions shows in the last bits: the sum by blocks is the same double for 1, 2 and 3
+    // threads, and within 1e-13 of the long double sum (values of one sign: the blocked sum's
+    // error is at most n eps of the sum).
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<double> x(100003);
+    long double exact = 0.0L;
+    for (double& v : x) {
+        v = u(rng) * std::pow(10.0, 8.0 * u(rng));
+        exact += v;
+    }
+    std::vector<double> sums;
+    for (int t : {1, 2, 3}) {
+        const ThreadsFor scope(t);
+        sums.push_back(parallel::reduce(
+            x.size(), 0.0, [&](std::size_t i, double& a) { a += x[i]; }, [](double& a, double b) { a += b; }));
+    }
+    EXPECT_EQ(std::memcmp(&sums[0], &sums[1], sizeof(double)), 0);
+    EXPECT_EQ(std::memcmp(&sums[0], &sums[2], sizeof(double)), 0);
+    EXPECT_NEAR(sums[0] / double(exact), 1.0, 1e-13);
+}
+
+TEST(Threads, SolvesAreTheSameForAnyNumberOfThreads)
+{
+    // A periodic elastic solve (160 x 150: the loops and FFTs above minimumParallelSize), a
+    // non-periodic one (96 x 90, padded to 192 x 180) and a capped one, with their spot
+    // conductances: the pressures, separations, iterations and h_c/k_s of 2 and 3 threads are
+    // those of 1, bit for bit (FFTW's threaded plans split the same transforms; the sums are
+    // by blocks in order).
+    struct Case {
+        std::size_t nx, ny;
+        bool periodic;
+        bool capped;
+    };
+    const double Ep = 1e11;
+    for (const Case c : {Case{160, 150, true, false}, Case{96, 90, false, false}, Case{160, 150, true, true}}) {
+        const std::vector<double> h = waves(c.nx, c.ny, 3, 1e-7);
+        std::vector<ContactSolution> solutions;
+        std::vector<double> conductances;
+        for (int t : {1, 2, 3}) {
+            const ThreadsFor scope(t);
+            const HalfSpaceOperator K(c.nx, c.ny, 1e-6, 1e-6, Ep, c.periodic);
+            PolonskyKeerOptions options;
+            if (c.capped) {
+                options.hardness = 3e8;
+            }
+            const PolonskyKeer solver(K, h, options);
+            const ContactSolution s = solver.solve(1e-3 * Ep);
+            ASSERT_TRUE(s.converged) << c.nx << " threads " << t;
+            std::vector<bool> contact(s.pressure.size());
+            for (std::size_t i = 0; i < contact.size(); ++i) {
+                contact[i] = s.pressure[i] > 0.0;
+            }
+            conductances.push_back(spotConductance(K, contact).perConductivity);
+            solutions.push_back(s);
+        }
+        const ContactSolution& one = solutions[0];
+        EXPECT_GT(one.areaFraction, 0.01);
+        EXPECT_LT(one.areaFraction, 0.9);
+        if (c.capped) {
+            EXPECT_GT(one.plasticFraction, 0.0);
+        }
+        for (std::size_t k = 1; k < solutions.size(); ++k) {
+            EXPECT_TRUE(sameBits(solutions[k].pressure, one.pressure)) << c.nx << " periodic " << c.periodic;
+            EXPECT_TRUE(sameBits(solutions[k].gap, one.gap)) << c.nx << " periodic " << c.periodic;
+            EXPECT_EQ(solutions[k].iterations, one.iterations);
+            EXPECT_EQ(std::memcmp(&conductances[k], &conductances[0], sizeof(double)), 0);
+        }
+    }
+}
