@@ -20,6 +20,7 @@
 #include "bindings.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/bem/HalfSpaceOperator.hpp"
 #include "roughContact/parallel/Threads.hpp"
 
 #include <exception>
@@ -59,6 +60,10 @@ PYBIND11_MODULE(roughcontact, m)
           "process: BoundaryElement, check() and ContactInterface's boundaryElement tables made after "
           "it. Default: what the machine has. The answers are the same for any number, bit for bit.");
     m.def("threads", &threads, "The threads the boundary-element solves use (set_threads).");
+    m.def("set_fft_wisdom", &setFftWisdom, py::arg("path"),
+          "Plan the boundary-element FFTs by timing them (FFTW_MEASURE) and keep the plans in the file "
+          "`path` (created when missing): runs sharing it use the same plans and give the same answer bit for "
+          "bit. '' (the default): FFTW_ESTIMATE plans, the same everywhere.");
 
     // ---- errors
     inputErrorType = PyErr_NewExceptionWithDoc(

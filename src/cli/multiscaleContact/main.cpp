@@ -11,6 +11,7 @@
 // Check, BoundaryElementRun, Table (what it computes); this file only parses and reports errors.
 #include "Options.hpp"
 #include "Run.hpp"
+#include "roughContact/bem/HalfSpaceOperator.hpp"
 #include "roughContact/parallel/Threads.hpp"
 
 #include <CLI/CLI.hpp>
@@ -49,6 +50,7 @@ int main(int argc, char** argv)
         if (o.threads > 0) {
             roughContact::setThreads(o.threads);
         }
+        roughContact::setFftWisdom(o.fftWisdom);
         return run(o);
     } catch (const std::exception& e) {
         std::cerr << "multiscaleContact: error: " << e.what() << '\n';

@@ -6,11 +6,15 @@
 #include "roughContact/bem/PolonskyKeer.hpp"
 #include "roughContact/parallel/Threads.hpp"
 
+#include "RunCommand.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
+#include <string>
 #include <random>
 #include <vector>
 
@@ -162,4 +166,39 @@ TEST(Threads, SolvesAreTheSameForAnyNumberOfThreads)
             EXPECT_EQ(std::memcmp(&conductances[k], &conductances[0], sizeof(double)), 0);
         }
     }
+}
+
+TEST(FftWisdom, MeasuredPlansAreKeptAndGiveTheSameAnswerEveryRun)
+{
+    // setFftWisdom (HalfSpaceOperator.hpp): FFTW_MEASURE plans kept in a file. The file is
+    // written when the first operator is planned; two solves planned from it are the same bit
+    // for bit, and agree with the FFTW_ESTIMATE solve to what its tolerance leaves (1e-8 of the
+    // rms height on the contact set: pressures to 1e-6 relative, the area's cells exactly or
+    // within a few). An unwritable file is an error naming it.
+    const roughContactTest::TempDir dir;
+    const std::string file = (dir.path() / "wisdom").string();
+    const std::vector<double> h = waves(128, 128, 5, 1e-7);
+    const auto solve = [&h]() {
+        const HalfSpaceOperator K(128, 128, 1e-6, 1e-6, 1e11, true);
+        return PolonskyKeer(K, h).solve(1e8);
+    };
+    const ThreadsFor one(1);
+    const ContactSolution estimated = solve();
+    setFftWisdom(file);
+    const ContactSolution first = solve();
+    EXPECT_TRUE(std::filesystem::exists(file));
+    const ContactSolution second = solve();
+    setFftWisdom("");
+    EXPECT_TRUE(sameBits(first.pressure, second.pressure));
+    EXPECT_TRUE(sameBits(first.gap, second.gap));
+    EXPECT_NEAR(first.areaFraction, estimated.areaFraction, 4.0 / (128.0 * 128.0));
+    EXPECT_NEAR(first.meanSeparation / estimated.meanSeparation, 1.0, 1e-6);
+    setFftWisdom((dir.path() / "no" / "such" / "folder" / "wisdom").string());
+    try {
+        solve();
+        ADD_FAILURE() << "an unwritable wisdom file was accepted";
+    } catch (const ParameterError& e) {
+        EXPECT_NE(std::string(e.what()).find("no/such/folder/wisdom"), std::string::npos) << e.what();
+    }
+    setFftWisdom("");
 }

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <complex>
 #include <stdexcept>
 
@@ -31,6 +33,44 @@ template <class T> struct FftwFree {
     void operator()(T* p) const { fftw_free(p); }
 };
 
+std::string& wisdomPath()
+{
+    static std::string path;
+    return path;
+}
+
+// The planner flag, with the wisdom file read in once (FFTW keeps what it read; planning with
+// FFTW_MEASURE then finds the stored plans instead of timing again).
+unsigned planningFlag()
+{
+    const std::string& path = wisdomPath();
+    if (path.empty()) {
+        return FFTW_ESTIMATE;
+    }
+    static std::string imported;
+    if (imported != path) {
+        (void)fftw_import_wisdom_from_filename(path.c_str()); // a missing file: nothing known yet
+        imported = path;
+    }
+    return FFTW_MEASURE;
+}
+
+// After planning: the wisdom back to its file, through a temporary one renamed over it (a run
+// stopped while writing leaves the old file whole).
+void saveWisdom()
+{
+    const std::string& path = wisdomPath();
+    if (path.empty()) {
+        return;
+    }
+    const std::string temporary = path + ".partial";
+    if (fftw_export_wisdom_to_filename(temporary.c_str()) == 0 ||
+        std::rename(temporary.c_str(), path.c_str()) != 0) {
+        std::remove(temporary.c_str());
+        throw ParameterError("FFT wisdom file", "'" + path + "' cannot be written");
+    }
+}
+
 // FFTW plans its next transforms for `n` threads (its OpenMP threads, set up once; a serial
 // build has one). FFTW's planner is not thread-safe: operators are made on one thread.
 void planFor(int n)
@@ -44,8 +84,9 @@ void planFor(int n)
 }
 } // namespace
 
-// FFT buffers and plans of one grid, made once (FFTW_ESTIMATE: deterministic, no timing runs),
-// for the threads() of the time they are made.
+// FFT buffers and plans of one grid, made once for the threads() of the time they are made:
+// FFTW_ESTIMATE (deterministic, no timing runs), or with a wisdom file measured plans
+// (setFftWisdom). FFTW_MEASURE overwrites the buffers while it plans: they are filled after.
 struct HalfSpaceOperator::Fft {
     std::size_t mx;
     std::size_t my;
@@ -64,10 +105,18 @@ struct HalfSpaceOperator::Fft {
         }
         // FFTW's 2-D real transforms: n0 = my rows of n1 = mx (row-major, x fastest).
         planFor(threads());
+        const unsigned flag = planningFlag();
         forward = fftw_plan_dft_r2c_2d(static_cast<int>(my), static_cast<int>(mx), real.get(), spectral.get(),
-                                       FFTW_ESTIMATE);
+                                       flag);
         backward = fftw_plan_dft_c2r_2d(static_cast<int>(my), static_cast<int>(mx), spectral.get(),
-                                        real.get(), FFTW_ESTIMATE);
+                                        real.get(), flag);
+        if (!forward || !backward) {
+            throw ParameterError("FFT", "FFTW could not plan a " + std::to_string(mx) + " x " + std::to_string(my) +
+                                            " transform");
+        }
+        if (flag != FFTW_ESTIMATE) {
+            saveWisdom();
+        }
     }
     ~Fft()
     {
@@ -75,6 +124,16 @@ struct HalfSpaceOperator::Fft {
         fftw_destroy_plan(backward);
     }
 };
+
+void setFftWisdom(const std::string& path)
+{
+    wisdomPath() = path;
+}
+
+const std::string& fftWisdom() noexcept
+{
+    return wisdomPath();
+}
 
 double HalfSpaceOperator::loveRectangle(double x, double y, double a, double b, double p, double Eprime)
 {

@@ -320,6 +320,12 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
             bestResidual = gapResidual;
             bestAt = it;
         } else if (capped && it > bestAt + stallLimit) {
+            // The projected gradients start from p alone: the conjugate gradients' arrays go
+            // first, so that the two solvers' arrays are never held at once (at 4096^2 that
+            // was 2.70 GB at the peak instead of 2.06: docs/benchmarks.md).
+            for (std::vector<double>* v : {&u, &g, &t, &r, &z, &zOut, &zRel, &uH}) {
+                std::vector<double>().swap(*v);
+            }
             ContactSolution rest = solveCapped(P, &p, options_.maxIterations - it);
             rest.iterations += it;
             rest.fallback = true;

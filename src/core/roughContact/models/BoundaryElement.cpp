@@ -41,8 +41,13 @@ BoundaryElementModel::BoundaryElementModel(const ArealSurface& surface, double E
         throw ParameterError("surface " + surface_.source(), os.str());
     }
     const std::size_t n = surface_.nx() * surface_.ny();
+    // The operator's FFT buffers and multipliers, and the solves' own arrays of n doubles at
+    // their peak: 11 elastic, 13 with the cap (the projected gradients' fallback frees the
+    // conjugate gradients' arrays first). Measured with /usr/bin/time at 512^2 to 4096^2 on
+    // periodic surfaces: docs/benchmarks.md, "Memory of the exact model".
+    const double arrays = options_.hardness ? 13.0 : 11.0;
     const double bytes =
-        HalfSpaceOperator::bytesFor(surface_.nx(), surface_.ny(), options_.periodic) + 10.0 * 8.0 * double(n);
+        HalfSpaceOperator::bytesFor(surface_.nx(), surface_.ny(), options_.periodic) + arrays * 8.0 * double(n);
     if (bytes > options_.memoryLimit) {
         std::ostringstream os;
         os.precision(3);
