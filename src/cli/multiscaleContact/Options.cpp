@@ -2,6 +2,7 @@
 #include "Options.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 #include "roughContact/io/Numbers.hpp"
 #include "roughContact/io/Units.hpp"
 #include "roughContact/models/ModelFactory.hpp"
@@ -202,7 +203,7 @@ void addOptions(CLI::App& app, Options& o)
                    "threads of the boundary-element solves (--model boundaryElement, --check, --table): "
                    "FFTW's and the solver's loops; the answer is the same for any number (default: what "
                    "the machine has)")
-        ->check(CLI::Range(1, 4096));
+        ->check(CLI::Range(1, roughContact::limits::maximumThreads));
     app.add_option("--fft-wisdom", o.fftWisdom,
                    "boundary-element solves: plan the FFTs by timing them (FFTW_MEASURE: 1.4-1.8 times faster "
                    "transforms at 1024^2-2048^2, a few seconds to plan a new size) and keep the plans in FILE "

@@ -28,6 +28,9 @@ constexpr double maximumHeight = 1e3;
 /// keep (Rdq/Rq)^2 finite for every accepted Rq (at most (1e3/1e-15)^2 = 1e36).
 constexpr double minimumSlope = 1e-9;
 constexpr double maximumSlope = 1e3;
+/// Threads of the boundary-element solves (setThreads, parallel/Threads.hpp; a contact entry's
+/// `threads`, the CLI's --threads): 1 to this.
+constexpr int maximumThreads = 4096;
 /// rms roughness [m] below which a surface is refused: a femtometre is the size of a nucleus,
 /// so a smaller rms is a unit mistake; exactly zero is refused as perfectly smooth (no contact
 /// resistance to model).

@@ -33,32 +33,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::checkNeighbour
     const thermalContactResistanceFvPatchScalarField& nbr
 )
 {
-    using mode = thermalContactSettings::conductanceMode;
-    const thermalContactSettings& a = settings_;
-    const thermalContactSettings& b = nbr.settings_;
-    string problem;
-    if (a.mode != b.mode)
-    {
-        problem = "one side gives 'h', the other 'contact'";
-    }
-    else if (a.mode == mode::constantH && a.hConstant != b.hConstant)
-    {
-        problem =
-            "the two sides give different 'h' (" + Foam::name(a.hConstant)
-          + " and " + Foam::name(b.hConstant) + ")";
-    }
-    else if (a.mode == mode::contact && a.contactName != b.contactName)
-    {
-        problem =
-            "the two sides name different 'contact' entries ('"
-          + a.contactName + "' and '" + b.contactName + "')";
-    }
-    else if (hasGapWidth() != nbr.hasGapWidth())
-    {
-        problem =
-            "one side gives the gap width of faces apart ('gap' or"
-            " 'gapField'), the other does not";
-    }
+    const string problem = settings_.disagreement(nbr.settings_);
     if (!problem.empty())
     {
         RuntimeIOError
@@ -274,18 +249,11 @@ Foam::thermalContactResistanceFvPatchScalarField::interfacePressure() const
     }
     if (!settings_.pressureFieldName.empty())
     {
-        const fvMesh& mesh = patch().boundaryMesh().mesh();
-        if (!mesh.foundObject<volScalarField>(settings_.pressureFieldName))
-        {
-            RuntimeIOError
-                << who().c_str() << ": entry 'pressureField "
-                << settings_.pressureFieldName << "': region " << mesh.name()
-                << " has no volScalarField '" << settings_.pressureFieldName
-                << "'" << exit(FatalIOError);
-        }
-        return
-            mesh.lookupObject<volScalarField>(settings_.pressureFieldName)
-           .boundaryField()[patch().index()];
+        return settings_.patchValues
+        (
+            patch(), settings_.pressureFieldName, "pressureField",
+            [this] { return who(); }
+        );
     }
     return tmp<scalarField>(new scalarField(size(), Zero));
 }
@@ -296,18 +264,11 @@ Foam::thermalContactResistanceFvPatchScalarField::interfaceGapWidth() const
 {
     if (!settings_.gapFieldName.empty())
     {
-        const fvMesh& mesh = patch().boundaryMesh().mesh();
-        if (!mesh.foundObject<volScalarField>(settings_.gapFieldName))
-        {
-            RuntimeIOError
-                << who().c_str() << ": entry 'gapField "
-                << settings_.gapFieldName << "': region " << mesh.name()
-                << " has no volScalarField '" << settings_.gapFieldName
-                << "'" << exit(FatalIOError);
-        }
-        return
-            mesh.lookupObject<volScalarField>(settings_.gapFieldName)
-           .boundaryField()[patch().index()];
+        return settings_.patchValues
+        (
+            patch(), settings_.gapFieldName, "gapField",
+            [this] { return who(); }
+        );
     }
     return tmp<scalarField>
     (

@@ -7,6 +7,7 @@
 #include "IOdictionary.H"
 #include "foamCompat.H"
 #include "Time.H"
+#include "volFields.H"
 
 #include <cmath>
 #include <exception>
@@ -260,6 +261,61 @@ void Foam::thermalContactSettings::checkContactUnchanged
     }
 }
 
+
+
+Foam::tmp<Foam::scalarField> Foam::thermalContactSettings::patchValues
+(
+    const fvPatch& patch,
+    const word& fieldName,
+    const char* entry,
+    const std::function<string()>& who
+) const
+{
+    const fvMesh& mesh = patch.boundaryMesh().mesh();
+    if (!mesh.foundObject<volScalarField>(fieldName))
+    {
+        FatalIOErrorAt(dictName, dictStart, dictEnd)
+            << who().c_str() << ": entry '" << entry << " " << fieldName
+            << "': region " << mesh.name() << " has no volScalarField '"
+            << fieldName << "' (read it, e.g. with the readFields function"
+            << " object, or let a solver or function object create it)"
+            << exit(FatalIOError);
+    }
+    return
+        mesh.lookupObject<volScalarField>(fieldName)
+       .boundaryField()[patch.index()];
+}
+
+
+Foam::string Foam::thermalContactSettings::disagreement
+(
+    const thermalContactSettings& nbr
+) const
+{
+    if (mode != nbr.mode)
+    {
+        return "one side gives 'h', the other 'contact'";
+    }
+    if (mode == conductanceMode::constantH && hConstant != nbr.hConstant)
+    {
+        return
+            "the two sides give different 'h' (" + Foam::name(hConstant)
+          + " and " + Foam::name(nbr.hConstant) + ")";
+    }
+    if (mode == conductanceMode::contact && contactName != nbr.contactName)
+    {
+        return
+            "the two sides name different 'contact' entries ('"
+          + contactName + "' and '" + nbr.contactName + "')";
+    }
+    if (hasGapWidth() != nbr.hasGapWidth())
+    {
+        return
+            "one side gives the gap width of faces apart ('gap' or"
+            " 'gapField'), the other does not";
+    }
+    return string();
+}
 
 
 void Foam::thermalContactSettings::write(Ostream& os) const

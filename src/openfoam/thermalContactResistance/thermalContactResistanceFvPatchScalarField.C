@@ -78,29 +78,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::checkNeighbour
     const thermalContactResistanceFvPatchScalarField& nbr
 )
 {
-    string problem;
-    if (settings_.mode != nbr.settings_.mode)
-    {
-        problem = "one side gives 'h', the other 'contact'";
-    }
-    else if (settings_.mode == thermalContactSettings::conductanceMode::constantH && settings_.hConstant != nbr.settings_.hConstant)
-    {
-        problem =
-            "the two sides give different 'h' (" + Foam::name(settings_.hConstant)
-          + " and " + Foam::name(nbr.settings_.hConstant) + ")";
-    }
-    else if (settings_.mode == thermalContactSettings::conductanceMode::contact && settings_.contactName != nbr.settings_.contactName)
-    {
-        problem =
-            "the two sides name different 'contact' entries ('"
-          + settings_.contactName + "' and '" + nbr.settings_.contactName + "')";
-    }
-    else if (hasGapWidth() != nbr.hasGapWidth())
-    {
-        problem =
-            "one side gives the gap width of faces apart ('gap' or"
-            " 'gapField'), the other does not";
-    }
+    const string problem = settings_.disagreement(nbr.settings_);
     if (!problem.empty())
     {
         RuntimeIOError
@@ -379,20 +357,11 @@ Foam::thermalContactResistanceFvPatchScalarField::interfacePressure() const
     }
     if (!settings_.pressureFieldName.empty())
     {
-        const fvMesh& mesh = patch().boundaryMesh().mesh();
-        if (!mesh.foundObject<volScalarField>(settings_.pressureFieldName))
-        {
-            RuntimeIOError
-                << who().c_str() << ": entry 'pressureField "
-                << settings_.pressureFieldName << "': region " << mesh.name()
-                << " has no volScalarField '" << settings_.pressureFieldName
-                << "' (read it, e.g. with the readFields function object,"
-                << " or let a solver or function object create it)"
-                << exit(FatalIOError);
-        }
-        return
-            mesh.lookupObject<volScalarField>(settings_.pressureFieldName)
-           .boundaryField()[patch().index()];
+        return settings_.patchValues
+        (
+            patch(), settings_.pressureFieldName, "pressureField",
+            [this] { return who(); }
+        );
     }
     return tmp<scalarField>(new scalarField(size(), Zero));
 }
@@ -403,20 +372,11 @@ Foam::thermalContactResistanceFvPatchScalarField::interfaceGapWidth() const
 {
     if (!settings_.gapFieldName.empty())
     {
-        const fvMesh& mesh = patch().boundaryMesh().mesh();
-        if (!mesh.foundObject<volScalarField>(settings_.gapFieldName))
-        {
-            RuntimeIOError
-                << who().c_str() << ": entry 'gapField "
-                << settings_.gapFieldName << "': region " << mesh.name()
-                << " has no volScalarField '" << settings_.gapFieldName
-                << "' (read it, e.g. with the readFields function object,"
-                << " or let a solver or function object create it)"
-                << exit(FatalIOError);
-        }
-        return
-            mesh.lookupObject<volScalarField>(settings_.gapFieldName)
-           .boundaryField()[patch().index()];
+        return settings_.patchValues
+        (
+            patch(), settings_.gapFieldName, "gapField",
+            [this] { return who(); }
+        );
     }
     return tmp<scalarField>(new scalarField(size(), max(settings_.gapWidth, 0.0)));
 }

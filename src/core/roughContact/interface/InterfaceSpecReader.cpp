@@ -2,6 +2,7 @@
 #include "roughContact/interface/InterfaceSpecReader.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 #include "roughContact/io/Numbers.hpp"
 #include "roughContact/io/Units.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
@@ -433,9 +434,10 @@ void readInterfaceSettings(const SpecSource& source, InterfaceSpec& spec)
     }
     if (source.has("threads")) {
         const std::uint64_t t = source.whole("threads");
-        if (t < 1 || t > 4096) {
-            throw ParameterError(source.name("threads"), "must be 1 to 4096 (the threads of the boundary-element "
-                                                         "solves), got " + std::to_string(t));
+        if (t < 1 || t > std::uint64_t(limits::maximumThreads)) {
+            throw ParameterError(source.name("threads"), "must be 1 to " + std::to_string(limits::maximumThreads) +
+                                                             " (the threads of the boundary-element solves), got " +
+                                                             std::to_string(t));
         }
         spec.threads = static_cast<int>(t);
     }

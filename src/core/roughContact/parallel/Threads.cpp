@@ -2,6 +2,7 @@
 #include "roughContact/parallel/Threads.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 
 #include <atomic>
 #include <string>
@@ -38,8 +39,9 @@ bool threadsAvailable() noexcept
 
 void setThreads(int n)
 {
-    if (n < 1 || n > 4096) {
-        throw ParameterError("threads", "must be 1 to 4096, got " + std::to_string(n));
+    if (n < 1 || n > limits::maximumThreads) {
+        throw ParameterError("threads", "must be 1 to " + std::to_string(limits::maximumThreads) + ", got " +
+                                            std::to_string(n));
     }
     chosen() = n;
 }

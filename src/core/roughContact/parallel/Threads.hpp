@@ -28,6 +28,9 @@ inline constexpr std::size_t minimumParallelSize = 16384;
 /// sum is the same for any number of threads (and for one).
 inline constexpr std::size_t reductionBlock = 4096;
 
+/// (Loop bodies are arithmetic and must not throw: an exception leaving an OpenMP region ends
+/// the process.)
+///
 /// body(begin, end, context) over [0, n) in pieces, on threads() threads when n items of
 /// `weight` elements each are at least minimumParallelSize elements (the pieces of one call
 /// are disjoint: body may write its own items).
