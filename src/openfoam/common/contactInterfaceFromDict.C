@@ -10,6 +10,7 @@
 #include "error.H"
 #include "IOstreams.H"
 #include "Pstream.H"
+#include "ops.H"
 #include "Time.H"
 
 #include "roughContact/interface/BoundaryElementTable.hpp"
@@ -32,12 +33,61 @@ namespace Foam
 namespace
 {
 
-// The points of the boundary-element table of `spec`: the master reads them
-// from the case's cache file constant/boundaryElementTable.<name>.csv when its
-// key is this table's, or builds them (logging each load) and writes the file
-// (atomically); then every processor receives them from the master, so that
-// the table is built once and all ranks hold the same numbers. Other ranks
-// never touch the file.
+// The ranks of this run as the core's table build takes them (TableRanks,
+// BoundaryElementTable.hpp): Pstream's broadcast from the master and its sum.
+// Serial: one rank, no exchange.
+roughContact::TableRanks pstreamRanks()
+{
+    roughContact::TableRanks ranks;
+    if (!Pstream::parRun())
+    {
+        return ranks;
+    }
+    ranks.rank = std::size_t(Pstream::myProcNo());
+    ranks.count = std::size_t(Pstream::nProcs());
+    ranks.broadcast = [](std::vector<double>& v)
+    {
+        List<scalar> l(label(v.size()));
+        forAll(l, i)
+        {
+            l[i] = v[i];
+        }
+#if OPENFOAM >= 2212
+        // Pstream::scatter is deprecated from v2412 (since 2024-01); broadcast
+        // (from v2206) sends the master's values to all the same way
+        Pstream::broadcasts(UPstream::worldComm, l);
+#else
+        Pstream::scatter(l);
+#endif
+        v.assign(l.begin(), l.end());
+    };
+    ranks.sum = [](std::vector<double>& v)
+    {
+        List<scalar> l(label(v.size()));
+        forAll(l, i)
+        {
+            l[i] = v[i];
+        }
+#if OPENFOAM >= 2212
+        // listCombineScatter is deprecated from v2212; listCombineReduce is
+        // the gather and the broadcast in one
+        Pstream::listCombineReduce(l, plusEqOp<scalar>());
+#else
+        Pstream::listCombineGather(l, plusEqOp<scalar>());
+        Pstream::listCombineScatter(l);
+#endif
+        v.assign(l.begin(), l.end());
+    };
+    return ranks;
+}
+
+// The points of the boundary-element table of `spec`, the same on every rank:
+// the master reads them from the case's cache file
+// constant/boundaryElementTable.<name>.csv when its key is this table's;
+// otherwise the ranks build them together, each solving its share of the
+// loads (BoundaryElementTable::loadOrBuild; the entry's tableRanks limits how
+// many), and the master writes the file (atomically). Other ranks never touch
+// the file; the master logs its own share's progress.
 roughContact::BoundaryElementTablePoints boundaryElementPoints
 (
     const roughContact::InterfaceSpec& spec,
@@ -47,103 +97,59 @@ roughContact::BoundaryElementTablePoints boundaryElementPoints
 )
 {
     const roughContact::BoundaryElementTable bem(spec);
-    roughContact::BoundaryElementTablePoints points;
-    if (Pstream::master())
-    {
-        // The core reads the file when it holds this table (key and digest),
-        // else builds and writes it; here only the log and the broadcast.
-        const fileName file =
-            casePath/"constant"/("boundaryElementTable." + name + ".csv");
-        // The load being solved, for the progress of a long solve.
-        std::size_t current = 1;
-        points = bem.loadOrBuild
+    const fileName file =
+        casePath/"constant"/("boundaryElementTable." + name + ".csv");
+    // The load being solved and how many this rank solves, for the progress
+    // of a long solve.
+    std::size_t current = 1;
+    std::size_t share = bem.pressures().size();
+    return bem.loadOrBuild
+    (
+        file,
+        [&]
         (
-            file,
-            [&]
-            (
-                std::size_t done, std::size_t total, double P,
-                const roughContact::BoundaryElementPoint& p,
-                double seconds
-            )
+            std::size_t done, std::size_t total, double P,
+            const roughContact::BoundaryElementPoint& p,
+            double seconds
+        )
+        {
+            current = done + 1;
+            share = total;
+            Info<< "    building the boundary-element table for '"
+                << name << "': load " << label(done) << " of "
+                << label(total) << ", P = " << P << " Pa, A_r/A_n = "
+                << p.areaFraction << ", " << seconds << " s" << endl;
+        },
+        [&](const std::string& line, bool warning)
+        {
+            if (warning)
             {
-                current = done + 1;
-                Info<< "    building the boundary-element table for '"
-                    << name << "': load " << label(done) << " of "
-                    << label(total) << ", P = " << P << " Pa, A_r/A_n = "
-                    << p.areaFraction << ", " << seconds << " s" << endl;
-            },
-            [&](const std::string& line, bool warning)
-            {
-                if (warning)
-                {
-                    WarningInFunction
-                        << who.c_str() << ": contact entry '" << name
-                        << "': " << line.c_str() << endl;
-                }
-                else
-                {
-                    Info<< "    " << line.c_str() << " ('" << name << "')"
-                        << endl;
-                }
-            },
-            [&](const roughContact::SolveProgress& s)
-            {
-                const bool patch = s.stage[0] == 'b';
-                Info<< "    building the boundary-element table for '"
-                    << name << "': ";
-                if (!patch)
-                {
-                    Info<< "load " << label(current) << " of "
-                        << label(bem.pressures().size()) << ", ";
-                }
-                Info<< s.stage << " solve: iteration " << label(s.iteration) << ", residual "
-                    << s.residual << " (tolerance " << s.tolerance << "), "
-                    << s.seconds << " s" << endl;
+                WarningInFunction
+                    << who.c_str() << ": contact entry '" << name
+                    << "': " << line.c_str() << endl;
             }
-        );
-    }
-    if (Pstream::parRun())
-    {
-        List<scalar> P(points.pressures.size());
-        List<scalar> A(points.areaFractions.size());
-        List<scalar> H(points.conductancesPerConductivity.size());
-        List<scalar> Y(points.separations.size());
-        forAll(P, i)
+            else
+            {
+                Info<< "    " << line.c_str() << " ('" << name << "')"
+                    << endl;
+            }
+        },
+        [&](const roughContact::SolveProgress& s)
         {
-            P[i] = points.pressures[i];
-            A[i] = points.areaFractions[i];
-            H[i] = points.conductancesPerConductivity[i];
-        }
-        forAll(Y, i)
-        {
-            Y[i] = points.separations[i];
-        }
-        // +inf (no complete contact) as -1: a stream need not carry inf.
-        scalar complete =
-            std::isinf(points.completeContactPressure)
-          ? -1 : points.completeContactPressure;
-        label end = label(points.end);
-#if OPENFOAM >= 2212
-        // Pstream::scatter is deprecated from v2412 (since 2024-01); broadcast
-        // (from v2206) sends the master's values to all the same way
-        Pstream::broadcasts(UPstream::worldComm, P, A, H, Y, complete, end);
-#else
-        Pstream::scatter(P);
-        Pstream::scatter(A);
-        Pstream::scatter(H);
-        Pstream::scatter(Y);
-        Pstream::scatter(complete);
-        Pstream::scatter(end);
-#endif
-        points.pressures.assign(P.begin(), P.end());
-        points.areaFractions.assign(A.begin(), A.end());
-        points.conductancesPerConductivity.assign(H.begin(), H.end());
-        points.separations.assign(Y.begin(), Y.end());
-        points.completeContactPressure =
-            complete < 0 ? std::numeric_limits<double>::infinity() : complete;
-        points.end = roughContact::ContactTable::End(end);
-    }
-    return points;
+            const bool patch = s.stage[0] == 'b';
+            Info<< "    building the boundary-element table for '"
+                << name << "': ";
+            if (!patch)
+            {
+                Info<< "load " << label(current) << " of "
+                    << label(share) << ", ";
+            }
+            Info<< s.stage << " solve: iteration " << label(s.iteration) << ", residual "
+                << s.residual << " (tolerance " << s.tolerance << "), "
+                << s.seconds << " s" << endl;
+        },
+        pstreamRanks()
+    );
 }
 
 } // End anonymous namespace

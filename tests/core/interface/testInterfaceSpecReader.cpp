@@ -295,6 +295,24 @@ TEST(InterfaceSpecReader, ThreadsAreAWholeNumberFrom1)
     messageOf([&] { readInterfaceSpec(c); }, "--threads");
 }
 
+TEST(InterfaceSpecReader, TableRanksAreAWholeNumberFrom1ForTheBoundaryElementModel)
+{
+    SpecValues c = contact();
+    c.set("model", std::string("boundaryElement")).set("synthesize", std::uint64_t(64));
+    EXPECT_FALSE(readInterfaceSpec(c).tableRanks.has_value());
+    c.set("tableRanks", std::uint64_t(3));
+    EXPECT_EQ(*readInterfaceSpec(c).tableRanks, 3u);
+    c.set("tableRanks", std::uint64_t(0));
+    EXPECT_NE(messageOf([&] { readInterfaceSpec(c); }, "--tableRanks").find("1 or more"), std::string::npos);
+    c.set("tableRanks", 1.5);
+    messageOf([&] { readInterfaceSpec(c); }, "--tableRanks");
+    // Another model has no table to share: said, not ignored.
+    SpecValues j = contact();
+    j.set("tableRanks", std::uint64_t(2));
+    EXPECT_NE(messageOf([&] { readInterfaceSpec(j); }, "--tableRanks").find("is for model boundaryElement"),
+              std::string::npos);
+}
+
 TEST(InterfaceSpecReader, SeedBelongsToSynthesize)
 {
     SpecValues c = contact();

@@ -104,6 +104,7 @@ struct HalfSpaceOperator::Fft {
             throw std::bad_alloc();
         }
         // FFTW's 2-D real transforms: n0 = my rows of n1 = mx (row-major, x fastest).
+        const std::lock_guard<std::mutex> lock(fftwPlanner());
         planFor(threads());
         const unsigned flag = planningFlag();
         forward = fftw_plan_dft_r2c_2d(static_cast<int>(my), static_cast<int>(mx), real.get(), spectral.get(),
@@ -120,6 +121,7 @@ struct HalfSpaceOperator::Fft {
     }
     ~Fft()
     {
+        const std::lock_guard<std::mutex> lock(fftwPlanner());
         fftw_destroy_plan(forward);
         fftw_destroy_plan(backward);
     }
@@ -127,6 +129,7 @@ struct HalfSpaceOperator::Fft {
 
 void setFftWisdom(const std::string& path)
 {
+    const std::lock_guard<std::mutex> lock(fftwPlanner());
     wisdomPath() = path;
 }
 
@@ -221,6 +224,7 @@ HalfSpaceOperator::~HalfSpaceOperator() = default;
 
 void HalfSpaceOperator::convolve(const std::vector<double>& multiplier, const double* in, double* out) const
 {
+    ++pairs_;
     fftw_complex* c = fft_->spectral.get();
     double* r = fft_->real.get();
     // Periodic: transform the caller's arrays directly when their alignment matches the

@@ -50,6 +50,9 @@ public:
     /// gives the stiffness of the longest wavelength); non-periodic, the periodic stiffness of
     /// the padded grid, an approximate inverse. Symmetric positive definite.
     void applyStiffness(const double* u, double* p) const;
+    /// The forward/inverse transform pairs done so far (apply and applyStiffness: one each),
+    /// for the solvers' cost analysis (bench/boundaryElement/transformBound).
+    std::size_t transformPairs() const noexcept { return pairs_; }
     /// S's smallest multiplier [Pa/m]: the stiffness of the longest wavelength of the grid
     /// (the mean mode's).
     double smallestStiffness() const noexcept { return smallestStiffness_; }
@@ -74,6 +77,7 @@ private:
     struct Fft;
     void makeStiffness();
     void convolve(const std::vector<double>& multiplier, const double* in, double* out) const;
+    mutable std::size_t pairs_ = 0; // convolve() calls (an operator is used by one solve at a time)
     std::size_t nx_;
     std::size_t ny_;
     double dx_;

@@ -29,6 +29,7 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
+#include <numeric>
 #include <sstream>
 
 namespace roughContact {
@@ -194,6 +195,7 @@ BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
     tolerance_ = defaults.tolerance;
     precondition_ = defaults.precondition;
     pointsPerDecade_ = spec.bemPointsPerDecade;
+    tableRanks_ = spec.tableRanks;
     limits::requireInRange("pointsPerDecade", double(pointsPerDecade_), double(limits::minimumPointsPerDecade),
                            double(limits::maximumPointsPerDecade), "");
     const double minP = spec.minPressure.value_or(1e-6 * Eprime_);
@@ -261,8 +263,27 @@ double BoundaryElementTable::estimatedSeconds() const
     return estimatedCurveSeconds(op, pressures_.size());
 }
 
-BoundaryElementTablePoints BoundaryElementTable::build(const Progress& progress,
-                                                       const SolveProgressCallback& solveProgress) const
+std::vector<std::size_t> shareOfLoads(std::size_t loads, std::size_t rank, std::size_t ranks)
+{
+    if (ranks == 0 || rank >= ranks) {
+        throw ParameterError("boundary-element table", "rank " + std::to_string(rank) + " of " +
+                                                           std::to_string(ranks) + " ranks");
+    }
+    std::vector<std::size_t> mine;
+    for (std::size_t j = 0; j < loads; ++j) { // j = 0: the heaviest load
+        const std::size_t round = j / ranks;
+        const std::size_t place = j % ranks;
+        if ((round % 2 == 0 ? place : ranks - 1 - place) == rank) {
+            mine.push_back(loads - 1 - j);
+        }
+    }
+    std::reverse(mine.begin(), mine.end());
+    return mine;
+}
+
+std::vector<BoundaryElementPoint> BoundaryElementTable::solveLoads(const std::vector<std::size_t>& indices,
+                                                                   const Progress& progress,
+                                                                   const SolveProgressCallback& solveProgress) const
 {
     BoundaryElementOptions bo;
     bo.progress = solveProgress;
@@ -273,20 +294,46 @@ BoundaryElementTablePoints BoundaryElementTable::build(const Progress& progress,
     bo.precondition = precondition_;
     const BoundaryElementModel model(surface_, Eprime_, bo);
     const auto start = std::chrono::steady_clock::now();
-    // Sorted already, so curve() solves them in this order, each warm-started from the one below.
-    const std::vector<BoundaryElementPoint> curve =
-        model.curve(loads_, [&](std::size_t done, std::size_t total, const BoundaryElementPoint& p) {
-            if (progress) {
-                progress(done, total, pressures_[done - 1], p,
-                         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-            }
-        });
+    std::vector<double> loads;
+    for (std::size_t k : indices) {
+        loads.push_back(loads_.at(k));
+    }
+    // Increasing, so curve() solves them in this order, each warm-started from the one below.
+    return model.curve(loads, [&](std::size_t done, std::size_t total, const BoundaryElementPoint& p) {
+        if (progress) {
+            progress(done, total, pressures_[indices[done - 1]], p,
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        }
+    });
+}
+
+BoundaryElementTablePoints BoundaryElementTable::build(const Progress& progress,
+                                                       const SolveProgressCallback& solveProgress) const
+{
+    std::vector<std::size_t> all(loads_.size());
+    std::iota(all.begin(), all.end(), std::size_t(0));
+    const std::vector<BoundaryElementPoint> curve = solveLoads(all, progress, solveProgress);
+    std::vector<double> areas, conductances, separations;
+    for (const BoundaryElementPoint& p : curve) {
+        areas.push_back(p.areaFraction);
+        conductances.push_back(p.conductancePerConductivity);
+        separations.push_back(p.meanSeparation);
+    }
+    return assemble(areas, conductances, separations);
+}
+
+BoundaryElementTablePoints BoundaryElementTable::assemble(const std::vector<double>& areas,
+                                                          const std::vector<double>& conductances,
+                                                          const std::vector<double>& separations) const
+{
     BoundaryElementTablePoints out;
     double area = 0.0;
     double h = 0.0;
     double separation = std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < curve.size(); ++k) {
-        const BoundaryElementPoint& p = curve[k];
+    for (std::size_t k = 0; k < areas.size(); ++k) {
+        struct {
+            double areaFraction, conductancePerConductivity, meanSeparation;
+        } const p{areas[k], conductances[k], separations[k]};
         if (!(p.areaFraction < 1.0) || !std::isfinite(p.conductancePerConductivity)) {
             out.end = ContactTable::End::completeContact;
             out.completeContactPressure = pressures_[k];
@@ -533,16 +580,42 @@ void BoundaryElementTable::writeFile(const std::string& path, const BoundaryElem
     }
 }
 
-BoundaryElementTablePoints BoundaryElementTable::loadOrBuild(const std::string& path, const Progress& progress,
-                                                             const LogCallback& log,
-                                                             const SolveProgressCallback& solveProgress) const
+namespace {
+
+// A table's points as doubles, for a broadcast: their count, the four columns, the
+// complete-contact pressure (-1: none, so that no infinity need travel) and the end. Exact.
+std::vector<double> flatten(const BoundaryElementTablePoints& p)
 {
-    const auto say = [&](const std::string& line, bool warning) {
-        if (log) {
-            log(line, warning);
-        }
-    };
-    // Where the table will be written: checked before minutes of solving.
+    std::vector<double> v{double(p.pressures.size())};
+    for (const std::vector<double>* c :
+         {&p.pressures, &p.areaFractions, &p.conductancesPerConductivity, &p.separations}) {
+        v.insert(v.end(), c->begin(), c->end());
+    }
+    v.push_back(std::isinf(p.completeContactPressure) ? -1.0 : p.completeContactPressure);
+    v.push_back(double(int(p.end)));
+    return v;
+}
+
+BoundaryElementTablePoints unflatten(const std::vector<double>& v, std::size_t at)
+{
+    BoundaryElementTablePoints p;
+    const auto n = static_cast<std::size_t>(v.at(at));
+    if (v.size() != at + 1 + 4 * n + 2) {
+        throw ParameterError("boundary-element table", "the points received from rank 0 are incomplete");
+    }
+    std::size_t i = at + 1;
+    for (std::vector<double>* c : {&p.pressures, &p.areaFractions, &p.conductancesPerConductivity, &p.separations}) {
+        c->assign(v.begin() + std::ptrdiff_t(i), v.begin() + std::ptrdiff_t(i + n));
+        i += n;
+    }
+    p.completeContactPressure = v[i] < 0.0 ? std::numeric_limits<double>::infinity() : v[i];
+    p.end = ContactTable::End(int(v[i + 1]));
+    return p;
+}
+
+// Where the table will be written: checked before minutes of solving.
+void requireWritable(const std::string& path)
+{
     struct stat st {};
     if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
         throw ParameterError("boundary-element table",
@@ -555,28 +628,165 @@ BoundaryElementTablePoints BoundaryElementTable::loadOrBuild(const std::string& 
         throw ParameterError("boundary-element table", "cannot write into the directory '" + directory +
                                                            "' of '" + path + "' (missing, or not writable)");
     }
-    const BoundaryElementTableRead r = read(path);
-    if (r.status == BoundaryElementTableRead::Status::ok) {
-        say("reusing " + path + " (key " + key_ + "): " + std::to_string(r.points->pressures.size()) + " points",
-            false);
-        return *r.points;
+}
+
+// What rank 0 decides before a build, broadcast as the first value.
+constexpr double failed = 0.0;
+constexpr double reuse = 1.0;
+constexpr double rebuild = 2.0;
+
+} // namespace
+
+double BoundaryElementTable::bytesPerRank() const
+{
+    return boundaryElementBytes(surface_.nx(), surface_.ny(), periodic_, hardness_.has_value());
+}
+
+std::size_t BoundaryElementTable::sharingRanks(std::size_t ranks) const
+{
+    std::size_t n = std::max<std::size_t>(1, ranks);
+    if (tableRanks_) {
+        return std::min(n, *tableRanks_);
     }
-    if (r.status != BoundaryElementTableRead::Status::missing) {
-        say("the boundary-element table " + path + " is " +
-                (r.status == BoundaryElementTableRead::Status::foreign ? "foreign" : "corrupt") + ": " + r.reason +
-                "; it is rebuilt and replaced",
-            true);
+    n = std::min(n, loads_.size());
+    const long pages = ::sysconf(_SC_PHYS_PAGES);
+    const long pageSize = ::sysconf(_SC_PAGE_SIZE);
+    if (pages > 0 && pageSize > 0) {
+        const double fit = std::floor(0.5 * double(pages) * double(pageSize) / bytesPerRank());
+        n = std::min(n, static_cast<std::size_t>(std::max(1.0, std::min(fit, double(n)))));
     }
-    {
+    return n;
+}
+
+BoundaryElementTablePoints BoundaryElementTable::loadOrBuild(const std::string& path, const Progress& progress,
+                                                             const LogCallback& log,
+                                                             const SolveProgressCallback& solveProgress,
+                                                             const TableRanks& ranks) const
+{
+    const bool shared = ranks.count > 1;
+    if (ranks.count == 0 || ranks.rank >= ranks.count || (shared && (!ranks.broadcast || !ranks.sum))) {
+        throw ParameterError("boundary-element table", "rank " + std::to_string(ranks.rank) + " of " +
+                                                           std::to_string(ranks.count) +
+                                                           (shared ? " ranks without their broadcast and sum" : ""));
+    }
+    const bool first = ranks.rank == 0;
+    const auto say = [&](const std::string& line, bool warning) {
+        if (log && first) {
+            log(line, warning);
+        }
+    };
+    const auto exchange = [&](std::vector<double>& v, bool sum) {
+        if (shared) {
+            (sum ? ranks.sum : ranks.broadcast)(v);
+        }
+    };
+
+    // Rank 0 checks where the table goes and reads it: [decision, sharing ranks, points...].
+    std::vector<double> decision{failed, 1.0};
+    std::exception_ptr failure;
+    if (first) {
+        try {
+            requireWritable(path);
+            const BoundaryElementTableRead r = read(path);
+            if (r.status == BoundaryElementTableRead::Status::ok) {
+                say("reusing " + path + " (key " + key_ + "): " + std::to_string(r.points->pressures.size()) +
+                        " points",
+                    false);
+                decision = {reuse, 1.0};
+                const std::vector<double> points = flatten(*r.points);
+                decision.insert(decision.end(), points.begin(), points.end());
+            } else {
+                if (r.status != BoundaryElementTableRead::Status::missing) {
+                    say("the boundary-element table " + path + " is " +
+                            (r.status == BoundaryElementTableRead::Status::foreign ? "foreign" : "corrupt") + ": " +
+                            r.reason + "; it is rebuilt and replaced",
+                        true);
+                }
+                decision = {rebuild, double(sharingRanks(ranks.count))};
+            }
+        } catch (...) {
+            failure = std::current_exception();
+            decision = {failed, 1.0};
+        }
+    }
+    exchange(decision, false);
+    if (decision.at(0) == failed) {
+        if (failure) {
+            std::rethrow_exception(failure);
+        }
+        throw ParameterError("boundary-element table", "not read or built: rank 0 stopped (its error says why)");
+    }
+    if (decision[0] == reuse) {
+        return unflatten(decision, 2);
+    }
+
+    const auto sharing = static_cast<std::size_t>(decision.at(1));
+    const std::size_t n = loads_.size();
+    const std::vector<std::size_t> mine =
+        ranks.rank < sharing ? shareOfLoads(n, ranks.rank, sharing) : std::vector<std::size_t>{};
+    if (first) {
         std::ostringstream os;
         os.precision(2);
-        os << "building the boundary-element table: " << pressures_.size() << " loads, about " << estimatedSeconds()
-           << " s; " << inputs_;
+        os << "building the boundary-element table: " << n << " loads, about " << estimatedSeconds() / double(sharing)
+           << " s";
+        if (sharing > 1) {
+            os << " (shared by " << sharing << " ranks, this one solving " << mine.size() << " loads and holding about "
+               << bytesPerRank() / 1048576.0 << " MiB)";
+        }
+        os << "; " << inputs_;
         say(os.str(), false);
     }
     const auto start = std::chrono::steady_clock::now();
-    const BoundaryElementTablePoints points = build(progress, solveProgress);
-    writeFile(path, points);
+    // Every load's A_r/A_n, h_c/k_s and separation, from the rank that solved it (0 elsewhere:
+    // x + 0 = x, so the sum is exact), and the number of ranks whose solves failed.
+    std::vector<double> values(3 * n + 1, 0.0);
+    try {
+        if (!mine.empty()) {
+            const std::vector<BoundaryElementPoint> curve = solveLoads(mine, progress, solveProgress);
+            for (std::size_t i = 0; i < mine.size(); ++i) {
+                values[mine[i]] = curve[i].areaFraction;
+                values[n + mine[i]] = curve[i].conductancePerConductivity;
+                values[2 * n + mine[i]] = curve[i].meanSeparation;
+            }
+        }
+    } catch (...) {
+        if (!shared) {
+            throw;
+        }
+        failure = std::current_exception();
+        values.assign(3 * n + 1, 0.0);
+        values[3 * n] = 1.0;
+    }
+    exchange(values, true);
+    if (values[3 * n] > 0.0) {
+        if (failure) {
+            std::rethrow_exception(failure);
+        }
+        throw ParameterError("boundary-element table", "not built: the solves failed on " +
+                                                           std::to_string(std::lround(values[3 * n])) +
+                                                           " rank(s) (their errors say why)");
+    }
+    const auto column = [&](std::size_t c) {
+        return std::vector<double>(values.begin() + std::ptrdiff_t(c * n), values.begin() + std::ptrdiff_t((c + 1) * n));
+    };
+    // The same values on every rank, so the same table (or the same error).
+    const BoundaryElementTablePoints points = assemble(column(0), column(1), column(2));
+    std::vector<double> written{1.0};
+    if (first) {
+        try {
+            writeFile(path, points);
+        } catch (...) {
+            failure = std::current_exception();
+            written[0] = 0.0;
+        }
+    }
+    exchange(written, false);
+    if (written.at(0) == 0.0) {
+        if (failure) {
+            std::rethrow_exception(failure);
+        }
+        throw ParameterError("boundary-element table", "rank 0 could not write " + path + " (its error says why)");
+    }
     std::ostringstream os;
     os.precision(3);
     os << "built the boundary-element table in "

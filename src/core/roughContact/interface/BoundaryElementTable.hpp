@@ -67,6 +67,28 @@ struct BoundaryElementTableRead {
     std::optional<BoundaryElementTablePoints> points; ///< set when ok
 };
 
+/// The ranks (processes) of a job that build one table together (loadOrBuild), as a
+/// front-end gives them: this rank's number and their count, and the two collective operations
+/// the build needs. The core has no MPI; the condition gives OpenFOAM's Pstream (every rank of a
+/// decomposed run calls loadOrBuild with the same table and in the same order). The default is
+/// one rank alone (no exchange).
+struct TableRanks {
+    std::size_t rank = 0;  ///< 0 .. count - 1; rank 0 reads and writes the file and logs
+    std::size_t count = 1;
+    /// Rank 0's values to every rank: the others' vectors become rank 0's (any size).
+    std::function<void(std::vector<double>&)> broadcast;
+    /// The element-wise sum over all ranks, to every rank (every rank gives the same size).
+    std::function<void(std::vector<double>&)> sum;
+};
+
+/// Which of a table's `loads` loads (in increasing order; indices into it) rank `rank` of
+/// `ranks` solves when they share the build: dealt from the heaviest load down, one to each rank
+/// in turn and back again (ranks 0, 1, ..., R-1, R-1, ..., 0, 0, 1, ...), so that each rank's
+/// share has about the same cost when the cost grows with the load (the top decade's loads take
+/// 3-10 times the iterations of the lowest); returned in increasing order. Each rank solves its
+/// share as one warm-started curve. Empty when rank >= loads. ParameterError when rank >= ranks.
+std::vector<std::size_t> shareOfLoads(std::size_t loads, std::size_t rank, std::size_t ranks);
+
 /// The solved surface of one or two areal maps (surfaces of kind areal): their composite
 /// (compositeSurface), as read; the solve detrends it. ParameterError for another kind or count.
 ArealSurface arealComposite(const std::vector<SurfaceSpec>& surfaces);
@@ -141,10 +163,37 @@ public:
     /// in a writable directory): ParameterError naming it otherwise, so that minutes of solving
     /// are not lost at the end. log (optional) receives: reusing, why a file is not used, the
     /// build's start and end.
+    ///
+    /// ranks (optional): the ranks of a job, every one of which calls loadOrBuild alike. Rank 0
+    /// alone checks, reads and writes path and logs; every rank returns the same points. A build
+    /// is shared by sharingRanks(ranks.count) of them (shareOfLoads: each solves its share as a
+    /// curve, progress reports its own loads), the values summed to all, and every rank makes the
+    /// table of them as build() does. The warm starts differ from one curve's, so the table
+    /// agrees with build()'s to the solves' tolerance, not bit for bit; the same number of
+    /// sharing ranks gives the same table. When rank 0 cannot read or write the file, or a rank's
+    /// solve fails, every rank throws (ParameterError; the failing rank its own error), none waits.
     BoundaryElementTablePoints loadOrBuild(const std::string& path, const Progress& progress = {},
-                                           const LogCallback& log = {}, const SolveProgressCallback& solveProgress = {}) const;
+                                           const LogCallback& log = {}, const SolveProgressCallback& solveProgress = {},
+                                           const TableRanks& ranks = {}) const;
+
+    /// How many of `ranks` ranks share a build: the spec's tableRanks when given (at most
+    /// `ranks`), else all, but no more than the loads and than the ranks whose solves
+    /// (boundaryElementBytes each) fit together in half of this machine's memory (as if they
+    /// all ran on it: a decomposed run's ranks often share a node). At least 1.
+    std::size_t sharingRanks(std::size_t ranks) const;
+    /// About the peak memory of one rank's solves [bytes] (boundaryElementBytes).
+    double bytesPerRank() const;
 
 private:
+    /// The solves of the loads of `indices` (increasing), as one warm-started curve; progress
+    /// counts these loads.
+    std::vector<BoundaryElementPoint> solveLoads(const std::vector<std::size_t>& indices, const Progress& progress,
+                                                 const SolveProgressCallback& solveProgress) const;
+    /// The table of every load's A_r/A_n, h_c/k_s and mean separation (as solved, load order):
+    /// what build() says of it.
+    BoundaryElementTablePoints assemble(const std::vector<double>& areas, const std::vector<double>& conductances,
+                                        const std::vector<double>& separations) const;
+
     bool periodic_; // before surface_: both are set from the spec in this order
     ArealSurface surface_;
     Detrend detrend_ = Detrend::plane;
@@ -153,6 +202,7 @@ private:
     double tolerance_ = 0.0;
     bool precondition_ = true;
     std::size_t pointsPerDecade_ = 0;
+    std::optional<std::size_t> tableRanks_; // the spec's; not in the key (any share gives the table)
     std::vector<double> loads_;
     std::vector<double> pressures_;
     std::string key_;

@@ -110,6 +110,10 @@ struct InterfaceSpec {
     /// parallel run, where every core has a rank, else what the machine has). ContactInterface
     /// does not use it.
     std::optional<int> threads;
+    /// Front-ends with ranks (the condition in a decomposed run): how many ranks share the build
+    /// of this entry's boundary-element table (BoundaryElementTable::sharingRanks); unset: all,
+    /// as many as the loads and the memory allow. ContactInterface does not use it.
+    std::optional<std::size_t> tableRanks;
 };
 
 /// The equivalent surface of one or two surfaces: the spectrum of one, the combination of two

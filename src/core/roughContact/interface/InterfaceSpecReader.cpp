@@ -164,7 +164,8 @@ const std::vector<std::string>& interfaceEntries()
     static const std::vector<std::string> names{
         "model",     "surface",        "surfaces",  "side1",    "side2",   "conductance",     "microhardness",
         "vickers",   "minPressure",    "maxPressure", "pointsPerDecade", "synthesize", "seed", "periodic",
-        "detrend",   "hardness",       "hardnessFromYield", "gap", "check", "threads"};
+        "detrend",   "hardness",       "hardnessFromYield", "gap", "check", "threads",
+        "tableRanks"};
     return names;
 }
 
@@ -440,6 +441,19 @@ void readInterfaceSettings(const SpecSource& source, InterfaceSpec& spec)
                                                              std::to_string(t));
         }
         spec.threads = static_cast<int>(t);
+    }
+    if (source.has("tableRanks")) {
+        if (spec.model != "boundaryElement") {
+            throw ParameterError(source.name("tableRanks"), "is for model boundaryElement (the ranks that build its "
+                                                            "table), not model " + spec.model);
+        }
+        const std::uint64_t r = source.whole("tableRanks");
+        if (r < 1) {
+            throw ParameterError(source.name("tableRanks"),
+                                 "must be 1 or more (the ranks of a decomposed run that share the "
+                                 "boundary-element table's build), got 0");
+        }
+        spec.tableRanks = static_cast<std::size_t>(r);
     }
 }
 

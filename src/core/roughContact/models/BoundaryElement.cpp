@@ -40,14 +40,8 @@ BoundaryElementModel::BoundaryElementModel(const ArealSurface& surface, double E
            << " m (a femtometre): not a physical roughness (a constant map?); check the units";
         throw ParameterError("surface " + surface_.source(), os.str());
     }
-    const std::size_t n = surface_.nx() * surface_.ny();
-    // The operator's FFT buffers and multipliers, and the solves' own arrays of n doubles at
-    // their peak: 11 elastic, 13 with the cap (the projected gradients' fallback frees the
-    // conjugate gradients' arrays first). Measured with /usr/bin/time at 512^2 to 4096^2 on
-    // periodic surfaces: docs/benchmarks.md, "Memory of the exact model".
-    const double arrays = options_.hardness ? 13.0 : 11.0;
     const double bytes =
-        HalfSpaceOperator::bytesFor(surface_.nx(), surface_.ny(), options_.periodic) + arrays * 8.0 * double(n);
+        boundaryElementBytes(surface_.nx(), surface_.ny(), options_.periodic, options_.hardness.has_value());
     if (bytes > options_.memoryLimit) {
         std::ostringstream os;
         os.precision(3);
@@ -77,7 +71,7 @@ BoundaryElementModel::BoundaryElementModel(const ArealSurface& surface, double E
                 options_.progress(p);
             };
         }
-        const SpotConductance patch = spotConductance(*op_, std::vector<bool>(n, true), conductanceTolerance,
+        const SpotConductance patch = spotConductance(*op_, std::vector<bool>(surface_.nx() * surface_.ny(), true), conductanceTolerance,
                                                       options_.maxIterations, nullptr, nullptr,
                                                       options_.precondition, patchProgress, options_.progressEvery);
         if (!patch.converged || !(patch.perConductivity > 0.0)) {
@@ -197,6 +191,16 @@ std::vector<BoundaryElementPoint> BoundaryElementModel::curve(
         }
     }
     return out;
+}
+
+double boundaryElementBytes(std::size_t nx, std::size_t ny, bool periodic, bool capped)
+{
+    // The operator's FFT buffers and multipliers, and the solves' own arrays of n doubles at
+    // their peak: 11 elastic, 13 with the cap (the projected gradients' fallback frees the
+    // conjugate gradients' arrays first). Measured with /usr/bin/time at 512^2 to 4096^2 on
+    // periodic surfaces: docs/benchmarks.md, "Memory of the exact model".
+    const double arrays = capped ? 13.0 : 11.0;
+    return HalfSpaceOperator::bytesFor(nx, ny, periodic) + arrays * 8.0 * double(nx) * double(ny);
 }
 
 // What estimatedCurveSeconds() counts a curve's solves as, in displacement evaluations (K or S,

@@ -114,6 +114,11 @@ private:
     double patchConductance_ = 0.0;
 };
 
+/// About the peak memory [bytes] of the solves on an nx x ny map (periodic, or padded to twice
+/// each way), elastic or capped: what the size check before a solve compares with
+/// BoundaryElementOptions::memoryLimit (within 4 % of the peaks measured at 512^2 to 4096^2).
+double boundaryElementBytes(std::size_t nx, std::size_t ny, bool periodic, bool capped);
+
 /// About how long a curve of `loads` loads takes [s] on op's grid, before it starts (with the
 /// bonded patch of a non-periodic map): one displacement evaluation (an FFT pair) timed here,
 /// times the evaluations such a curve takes (BoundaryElement.cpp: measured). A guide for a log

@@ -22,6 +22,12 @@ std::atomic<int>& chosen()
 }
 } // namespace
 
+std::mutex& fftwPlanner()
+{
+    static std::mutex m;
+    return m;
+}
+
 int hardwareThreads() noexcept
 {
     const unsigned n = std::thread::hardware_concurrency();

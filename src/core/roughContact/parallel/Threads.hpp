@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <mutex>
 #include <vector>
 
 namespace roughContact {
@@ -19,6 +20,18 @@ int threads() noexcept;
 int hardwareThreads() noexcept;
 /// True when the core was built with OpenMP (more than one thread can run).
 bool threadsAvailable() noexcept;
+
+/// FFTW's planner (making and destroying plans, its wisdom and thread settings) is not
+/// thread-safe: every use of it in the core holds this lock, so that the core's objects (grids,
+/// synthesized surfaces, solves) may be made on several threads at once.
+std::mutex& fftwPlanner();
+/// f() with fftwPlanner() held; its result.
+template <class F>
+auto underFftwPlanner(F&& f)
+{
+    const std::lock_guard<std::mutex> lock(fftwPlanner());
+    return f();
+}
 
 namespace parallel {
 

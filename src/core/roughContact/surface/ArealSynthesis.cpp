@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/surface/ArealSynthesis.hpp"
+#include "roughContact/parallel/Threads.hpp"
 
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
@@ -250,10 +251,10 @@ ArealSurface synthesizeIsotropic(const Spectrum& lineScan, std::size_t n, std::u
         }
     }
     std::vector<double> z(n * n);
-    fftw_plan plan = fftw_plan_dft_c2r_2d(static_cast<int>(n), static_cast<int>(n),
-                                          reinterpret_cast<fftw_complex*>(A.data()), z.data(), FFTW_ESTIMATE);
+    fftw_plan plan = underFftwPlanner([&] { return fftw_plan_dft_c2r_2d(static_cast<int>(n), static_cast<int>(n),
+                                          reinterpret_cast<fftw_complex*>(A.data()), z.data(), FFTW_ESTIMATE); });
     fftw_execute(plan);
-    fftw_destroy_plan(plan);
+    underFftwPlanner([&] { fftw_destroy_plan(plan); });
     const double dx = lineScan.length() / static_cast<double>(n);
     if (source.empty()) {
         source = "isotropic synthesis of " +

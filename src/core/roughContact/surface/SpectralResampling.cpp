@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/surface/SpectralResampling.hpp"
+#include "roughContact/parallel/Threads.hpp"
 
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
@@ -44,10 +45,10 @@ ArealSurface resampledPeriodic(const ArealSurface& periodic, std::size_t n, std:
     std::vector<std::complex<double>> a(m * mc);
     {
         std::vector<double> z = periodic.heights();
-        fftw_plan plan = fftw_plan_dft_r2c_2d(static_cast<int>(m), static_cast<int>(m), z.data(),
-                                              reinterpret_cast<fftw_complex*>(a.data()), FFTW_ESTIMATE);
+        fftw_plan plan = underFftwPlanner([&] { return fftw_plan_dft_r2c_2d(static_cast<int>(m), static_cast<int>(m), z.data(),
+                                              reinterpret_cast<fftw_complex*>(a.data()), FFTW_ESTIMATE); });
         fftw_execute(plan);
-        fftw_destroy_plan(plan);
+        underFftwPlanner([&] { fftw_destroy_plan(plan); });
     }
     const double scale = 1.0 / (static_cast<double>(m) * static_cast<double>(m));
     const long half = static_cast<long>(m / 2);
@@ -97,10 +98,10 @@ ArealSurface resampledPeriodic(const ArealSurface& periodic, std::size_t n, std:
         }
     }
     std::vector<double> z(n * n);
-    fftw_plan plan = fftw_plan_dft_c2r_2d(static_cast<int>(n), static_cast<int>(n),
-                                          reinterpret_cast<fftw_complex*>(b.data()), z.data(), FFTW_ESTIMATE);
+    fftw_plan plan = underFftwPlanner([&] { return fftw_plan_dft_c2r_2d(static_cast<int>(n), static_cast<int>(n),
+                                          reinterpret_cast<fftw_complex*>(b.data()), z.data(), FFTW_ESTIMATE); });
     fftw_execute(plan);
-    fftw_destroy_plan(plan);
+    underFftwPlanner([&] { fftw_destroy_plan(plan); });
     const double dx = periodic.lengthX() / static_cast<double>(n);
     std::ostringstream source;
     source << what << ", resampled to " << n << " x " << n;

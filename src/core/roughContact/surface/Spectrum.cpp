@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/surface/Spectrum.hpp"
+#include "roughContact/parallel/Threads.hpp"
 
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
@@ -89,9 +90,9 @@ Spectrum Spectrum::fromProfile(const Profile& profile)
         throw std::bad_alloc();
     }
     // FFTW_ESTIMATE does not overwrite the input and plans in microseconds.
-    fftw_plan plan = fftw_plan_dft_r2c_1d(static_cast<int>(n), in.data(), out.get(), FFTW_ESTIMATE);
+    fftw_plan plan = underFftwPlanner([&] { return fftw_plan_dft_r2c_1d(static_cast<int>(n), in.data(), out.get(), FFTW_ESTIMATE); });
     fftw_execute(plan);
-    fftw_destroy_plan(plan);
+    underFftwPlanner([&] { fftw_destroy_plan(plan); });
 
     const double L = p.length();
     const double nd = static_cast<double>(n);

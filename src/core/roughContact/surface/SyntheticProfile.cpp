@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/surface/SyntheticProfile.hpp"
+#include "roughContact/parallel/Threads.hpp"
 
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
@@ -65,10 +66,10 @@ Profile generateSyntheticProfile(const SyntheticProfileSpec& spec)
         Z[k] = sd * g;
     }
     std::vector<double> z(n);
-    fftw_plan plan = fftw_plan_dft_c2r_1d(static_cast<int>(n), reinterpret_cast<fftw_complex*>(Z.data()),
-                                          z.data(), FFTW_ESTIMATE);
+    fftw_plan plan = underFftwPlanner([&] { return fftw_plan_dft_c2r_1d(static_cast<int>(n), reinterpret_cast<fftw_complex*>(Z.data()),
+                                          z.data(), FFTW_ESTIMATE); });
     fftw_execute(plan);
-    fftw_destroy_plan(plan);
+    underFftwPlanner([&] { fftw_destroy_plan(plan); });
     // Remove mean and tilt first (as every reader of the profile will), then scale, so the
     // profile that the models see has exactly the requested rms.
     std::vector<double> h = Profile(std::move(z), spec.spacing).detrended().heights();
