@@ -13,6 +13,7 @@
 #include "convert.hpp"
 
 #include "roughContact/interface/SurfaceCheck.hpp"
+#include "roughContact/parallel/Threads.hpp"
 #include "roughContact/thermal/MeasuredAccuracy.hpp"
 
 #include <cstddef>
@@ -112,7 +113,8 @@ void bindCheck(py::module_& m)
            std::optional<std::pair<double, double>> vickers, std::optional<double> minPressure,
            std::optional<double> maxPressure, std::optional<bool> periodic, std::optional<double> hardness,
            bool hardnessFromYield, std::optional<std::string> detrend, const std::vector<double>& pressures,
-           std::size_t grid, const std::vector<std::uint64_t>& seeds, std::size_t count, const py::object& progress) {
+           std::size_t grid, const std::vector<std::uint64_t>& seeds, std::size_t count, const py::object& progress,
+           const py::object& threads) {
             const InterfaceSpec spec = interfaceSpec(surfaces, side1, side2, model, conductance, microhardness, vickers,
                                                      minPressure, maxPressure, 40, std::nullopt, 1, periodic, hardness,
                                                      hardnessFromYield, 6, std::nullopt, detrend);
@@ -132,6 +134,9 @@ void bindCheck(py::module_& m)
                     const py::object ignored = py::handle(target)(line);
                 };
             }
+            if (!threads.is_none()) {
+                setThreads(threads.cast<int>());
+            }
             py::gil_scoped_release release;
             return checkSurface(spec, o);
         },
@@ -141,13 +146,15 @@ void bindCheck(py::module_& m)
         py::arg("hardness") = py::none(), py::arg("hardness_from_yield") = false, py::arg("detrend") = py::none(),
         py::arg("pressures") = std::vector<double>{}, py::arg("grid") = 512,
         py::arg("seeds") = std::vector<std::uint64_t>{1, 2, 3}, py::arg("count") = 4, py::arg("progress") = py::none(),
+        py::arg("threads") = py::none(),
         "check(*, surfaces, side1, side2, model='jacksonGreen', conductance='', ..., pressures=[], grid=512, "
-        "seeds=[1, 2, 3], count=4, progress=None): the exact model (boundaryElement) on the user's own surface "
+        "seeds=[1, 2, 3], count=4, progress=None, threads=None): the exact model (boundaryElement) on the user's own surface "
         "(an areal map as it is; a 1-D description as `seeds` surfaces of grid x grid synthesized from its "
         "spectrum, cut at grid/8 levels) at `pressures` [Pa] (at most 5) or `count` pressures across "
         "[min_pressure, max_pressure], within p/(E' h') 1e-4 to 1e-1; capped at H where hardness, "
         "hardness_from_yield or S_y say, elastic otherwise; every law's ratio to it. The interface's keyword "
-        "arguments are ContactInterface's. progress: a callable given a line after each solve. About 0.5 s "
+        "arguments are ContactInterface's. progress: a callable given a line after each solve. threads: the "
+        "process's threads of the solves (set_threads; None: as they are). About 0.5 s "
         "a pressure and seed at 512^2.");
 }
 

@@ -21,6 +21,7 @@
 #include "roughContact/material/Materials.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/thermal/ContactTable.hpp"
+#include "roughContact/parallel/Threads.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -223,7 +224,7 @@ void bindInterface(py::module_& m)
                          std::size_t pointsPerDecade, std::optional<std::size_t> synthesize, std::uint64_t seed,
                          std::optional<bool> periodic, std::optional<double> hardness, bool hardnessFromYield,
                          std::size_t bemPointsPerDecade, std::optional<GapSpec> gap, std::optional<std::string> detrend,
-                         std::optional<std::string> tableFile) {
+                         std::optional<std::string> tableFile, const py::object& threads) {
                  const InterfaceSpec s =
                      interfaceSpec(surfaces, side1, side2, model, conductance, microhardness, vickers, minPressure,
                                    maxPressure, pointsPerDecade, synthesize, seed, periodic, hardness,
@@ -231,6 +232,9 @@ void bindInterface(py::module_& m)
                  if (tableFile && s.model != "boundaryElement") {
                      throw ParameterError("table_file", "is the cache of model 'boundaryElement', not of '" +
                                                             s.model + "'");
+                 }
+                 if (!threads.is_none()) {
+                     setThreads(threads.cast<int>());
                  }
                  py::gil_scoped_release release;
                  if (tableFile) {
@@ -248,6 +252,7 @@ void bindInterface(py::module_& m)
              py::arg("periodic") = py::none(), py::arg("hardness") = py::none(),
              py::arg("hardness_from_yield") = false, py::arg("bem_points_per_decade") = 6,
              py::arg("gap") = py::none(), py::arg("detrend") = py::none(), py::arg("table_file") = py::none(),
+             py::arg("threads") = py::none(),
              "ContactInterface(*, surfaces, side1, side2, model='jacksonGreen', conductance='', ...): "
              "surfaces a list of one or two SurfaceSpec; side1, side2 the Materials of the two solids; model a "
              "multi-scale model or 'boundaryElement'; conductance a law name ('' the default); microhardness "
@@ -257,7 +262,8 @@ void bindInterface(py::module_& m)
              "'mean' when periodic, 'plane' otherwise), hardness [Pa], hardness_from_yield, "
              "bem_points_per_decade, table_file (the boundary-element table's cache file, as the condition's "
              "constant/boundaryElementTable.NAME.csv: read when it holds this table, else built and written); "
-             "gap a GapSpec (gas and/or radiation beside the contact) or None. Building the table takes a fraction of a second for the multi-scale "
+             "gap a GapSpec (gas and/or radiation beside the contact) or None; threads the process's threads of the "
+             "boundary-element solves (set_threads; None: as they are). Building the table takes a fraction of a second for the multi-scale "
              "models, far longer for boundaryElement.")
         .def(
             "area_fraction",

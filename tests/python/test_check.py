@@ -55,6 +55,26 @@ def test_check_refuses_what_it_cannot_check():
         rc.check(count=6, **spec)
 
 
+def test_threads_keyword_sets_the_solves_threads():
+    """threads= on check() and ContactInterface() (issue 23, item 2) sets the process's threads,
+    as set_threads does; the answer does not change with it (Threads.hpp)."""
+    spec = dict(surfaces=[rc.SurfaceSpec.profile(STANDIN)], side1=STEEL_M, side2=STEEL_M)
+    before = rc.threads()
+    try:
+        rc.set_threads(2)
+        two = rc.check(grid=32, seeds=[1], count=2, **spec)
+        one = rc.check(grid=32, seeds=[1], count=2, threads=1, **spec)
+        assert rc.threads() == 1
+        np.testing.assert_array_equal(one.exact, two.exact)
+        rc.ContactInterface(model="boundaryElement", synthesize=16, min_pressure=1e7, max_pressure=1e8,
+                            threads=2, **spec)
+        assert rc.threads() == 2
+        with pytest.raises(rc.ParameterError, match="^threads: must be 1 to 4096"):
+            rc.check(grid=32, seeds=[1], count=2, threads=0, **spec)
+    finally:
+        rc.set_threads(before)
+
+
 def test_the_regime_and_the_measured_band():
     ci = rc.ContactInterface(surfaces=[rc.SurfaceSpec.profile(STANDIN)], side1=STEEL_M, side2=STEEL_M,
                              min_pressure=1e5, max_pressure=1e8)
