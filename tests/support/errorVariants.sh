@@ -21,7 +21,9 @@
 #   - every word of the variant's ENTRY list (the offending entry, and what identifies it), and
 #   - every word of its FILE list (the file that holds the mistake),
 #   - none of the words of variantForbid (a variable: e.g. bad_alloc, an allocation that failed
-#     where the input should have been refused before allocating).
+#     where the input should have been refused before allocating),
+#   - every phrase of variantExpect (a variable, phrases separated by '|', set for one variant
+#     only: words that must appear together, where the ENTRY words each appear elsewhere too).
 # VARIANTS (environment, a regular expression) runs only the variants whose name it matches.
 # Optional limits for every variant: variantTimeout (seconds; exit status 124 when exceeded)
 # and variantMemoryKB (ulimit -v of the solver).
@@ -110,6 +112,11 @@ variant() {
             for w in $entry; do has "$w" || missing+=("the entry word $w"); done
             for w in $file; do has "$w" || missing+=("the file $w"); done
             for w in $variantForbid; do ! has "$w" || missing+=("no '$w' in the error"); done
+            local phrases phrase
+            IFS='|' read -r -a phrases <<< "${variantExpect:-}"
+            for phrase in "${phrases[@]}"; do
+                [ -z "$phrase" ] || has "$phrase" || missing+=("the phrase \"$phrase\"")
+            done
             ;;
         esac
     fi
