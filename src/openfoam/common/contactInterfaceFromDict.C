@@ -99,10 +99,10 @@ roughContact::BoundaryElementTablePoints boundaryElementPoints
     const roughContact::BoundaryElementTable bem(spec);
     const fileName file =
         casePath/"constant"/("boundaryElementTable." + name + ".csv");
-    // The load being solved and how many this rank solves, for the progress
-    // of a long solve.
+    // The load being solved and how many this rank solves (known after its
+    // first load; 0 before), for the progress of a long solve.
     std::size_t current = 1;
-    std::size_t share = bem.pressures().size();
+    std::size_t share = 0;
     return bem.loadOrBuild
     (
         file,
@@ -141,8 +141,12 @@ roughContact::BoundaryElementTablePoints boundaryElementPoints
                 << name << "': ";
             if (!patch)
             {
-                Info<< "load " << label(current) << " of "
-                    << label(share) << ", ";
+                Info<< "load " << label(current);
+                if (share > 0)
+                {
+                    Info<< " of " << label(share);
+                }
+                Info<< ", ";
             }
             Info<< s.stage << " solve: iteration " << label(s.iteration) << ", residual "
                 << s.residual << " (tolerance " << s.tolerance << "), "

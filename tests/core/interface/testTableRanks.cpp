@@ -6,6 +6,7 @@
 // threads of this process joined by an in-memory broadcast and sum (what the condition's Pstream
 // gives in a decomposed run).
 #include "roughContact/Error.hpp"
+#include "roughContact/bem/HalfSpaceOperator.hpp"
 #include "roughContact/interface/BoundaryElementTable.hpp"
 #include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/material/Materials.hpp"
@@ -312,6 +313,17 @@ TEST(TableRanks, AFailureOnAnyRankStopsEveryRank)
         for (const RankRun& run : runs) {
             EXPECT_EQ(run.solved, 0u);
         }
+    }
+    // Rank 0 fails while it prepares the build (here its estimate's transform cannot keep its
+    // FFT plans in a wisdom file in a missing directory): every rank throws, none is left
+    // waiting at the values' sum (each would wait for ever).
+    {
+        setFftWisdom(dir + "/missing/wisdom");
+        const std::vector<RankRun> runs = runJob(spec, 2, dir + "/table.csv");
+        setFftWisdom("");
+        EXPECT_NE(runs[0].error.find("cannot be written"), std::string::npos) << runs[0].error;
+        EXPECT_NE(runs[1].error.find("rank 0 stopped"), std::string::npos) << runs[1].error;
+        EXPECT_EQ(runs[0].solved + runs[1].solved, 0u);
     }
     // Rank 1's solve fails: it throws its own error, the others say a rank failed; no file.
     {

@@ -703,6 +703,20 @@ BoundaryElementTablePoints BoundaryElementTable::loadOrBuild(const std::string& 
                         true);
                 }
                 decision = {rebuild, double(sharingRanks(ranks.count))};
+                // Said here, where a failure (the estimate's transform, the log) still stops
+                // every rank at the broadcast below rather than leaving them at the sum.
+                const auto sharing = static_cast<std::size_t>(decision[1]);
+                std::ostringstream os;
+                os.precision(2);
+                os << "building the boundary-element table: " << loads_.size() << " loads, about "
+                   << estimatedSeconds() / double(sharing) << " s";
+                if (sharing > 1) {
+                    os << " (shared by " << sharing << " ranks, this one solving "
+                       << shareOfLoads(loads_.size(), 0, sharing).size() << " loads and holding about "
+                       << bytesPerRank() / 1048576.0 << " MiB)";
+                }
+                os << "; " << inputs_;
+                say(os.str(), false);
             }
         } catch (...) {
             failure = std::current_exception();
@@ -724,18 +738,6 @@ BoundaryElementTablePoints BoundaryElementTable::loadOrBuild(const std::string& 
     const std::size_t n = loads_.size();
     const std::vector<std::size_t> mine =
         ranks.rank < sharing ? shareOfLoads(n, ranks.rank, sharing) : std::vector<std::size_t>{};
-    if (first) {
-        std::ostringstream os;
-        os.precision(2);
-        os << "building the boundary-element table: " << n << " loads, about " << estimatedSeconds() / double(sharing)
-           << " s";
-        if (sharing > 1) {
-            os << " (shared by " << sharing << " ranks, this one solving " << mine.size() << " loads and holding about "
-               << bytesPerRank() / 1048576.0 << " MiB)";
-        }
-        os << "; " << inputs_;
-        say(os.str(), false);
-    }
     const auto start = std::chrono::steady_clock::now();
     // Every load's A_r/A_n, h_c/k_s and separation, from the rank that solved it (0 elsewhere:
     // x + 0 = x, so the sum is exact), and the number of ranks whose solves failed.
