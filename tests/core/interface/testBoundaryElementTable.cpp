@@ -12,6 +12,8 @@
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/surface/SurfaceChecksum.hpp"
 
+#include "SmallBoundaryElementSpec.hpp" // tests/support
+
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -29,26 +31,10 @@
 using namespace roughContact;
 
 namespace {
-const Material steel{200e9, 0.3, 0.4e9};
 
-// A power law synthesized on a 32 x 32 periodic grid: a table of ~20 loads in well under a second.
 InterfaceSpec smallSpec()
 {
-    InterfaceSpec spec;
-    SurfaceSpec s;
-    s.kind = SurfaceSpec::Kind::powerLaw;
-    s.parameters = {2.56e-4, 0.8, 1e3, 16e3};
-    s.length = 1e-3;
-    spec.surfaces = {s};
-    spec.side1 = steel;
-    spec.side2 = steel;
-    spec.model = "boundaryElement";
-    spec.synthesize = 32;
-    spec.seed = 1;
-    spec.minPressure = 1e5;
-    spec.maxPressure = 1e9;
-    spec.bemPointsPerDecade = 4;
-    return spec;
+    return roughContactTest::smallBoundaryElementSpec();
 }
 
 using Status = BoundaryElementTableRead::Status;

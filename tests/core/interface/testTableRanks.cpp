@@ -12,6 +12,8 @@
 #include "roughContact/material/Materials.hpp"
 #include "roughContact/models/BoundaryElement.hpp"
 
+#include "SmallBoundaryElementSpec.hpp" // tests/support
+
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -30,26 +32,10 @@
 using namespace roughContact;
 
 namespace {
-const Material steel{200e9, 0.3, 0.4e9};
 
-// The power law of testBoundaryElementTable on a 32 x 32 periodic grid, 17 loads.
 InterfaceSpec smallSpec()
 {
-    InterfaceSpec spec;
-    SurfaceSpec s;
-    s.kind = SurfaceSpec::Kind::powerLaw;
-    s.parameters = {2.56e-4, 0.8, 1e3, 16e3};
-    s.length = 1e-3;
-    spec.surfaces = {s};
-    spec.side1 = steel;
-    spec.side2 = steel;
-    spec.model = "boundaryElement";
-    spec.synthesize = 32;
-    spec.seed = 1;
-    spec.minPressure = 1e5;
-    spec.maxPressure = 1e9;
-    spec.bemPointsPerDecade = 4;
-    return spec;
+    return roughContactTest::smallBoundaryElementSpec();
 }
 
 // count ranks as threads: a broadcast from rank 0 and an element-wise sum, each a meeting of all.
