@@ -63,7 +63,8 @@ PYBIND11_MODULE(roughcontact, m)
     m.def("set_fft_wisdom", &setFftWisdom, py::arg("path"),
           "Plan the boundary-element FFTs by timing them (FFTW_MEASURE) and keep the plans in the file "
           "`path` (created when missing): runs sharing it use the same plans and give the same answer bit for "
-          "bit. '' (the default): FFTW_ESTIMATE plans, the same everywhere.");
+          "bit. '' (the default): the blocked transforms, planned without timing runs, the same answer on "
+          "every run and for any number of threads.");
 
     // ---- errors
     inputErrorType = PyErr_NewExceptionWithDoc(

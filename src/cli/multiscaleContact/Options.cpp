@@ -205,10 +205,11 @@ void addOptions(CLI::App& app, Options& o)
                    "the machine has)")
         ->check(CLI::Range(1, roughContact::limits::maximumThreads));
     app.add_option("--fft-wisdom", o.fftWisdom,
-                   "boundary-element solves: plan the FFTs by timing them (FFTW_MEASURE: 1.4-1.8 times faster "
-                   "transforms at 1024^2-2048^2, a few seconds to plan a new size) and keep the plans in FILE "
-                   "(created when missing), so that runs sharing FILE use the same plans and give the same "
-                   "answer bit for bit (default: FFTW_ESTIMATE plans, the same everywhere)");
+                   "boundary-element solves: FFTW's 2-D plans chosen by timing them (FFTW_MEASURE: a few "
+                   "seconds to plan a new size) and kept in FILE (created when missing), so that runs sharing "
+                   "FILE use the same plans and give the same answer bit for bit (default: the blocked "
+                   "transforms, planned without timing runs: the same answer on every run and for any "
+                   "number of threads; docs/benchmarks.md compares the two)");
     app.add_option("--k1", o.k1, "conductivity [W/(m K)] of solid 1: with --k2, add the column h = k_s h_per_k "
                                  "[W/(m^2 K)], k_s = 2 k1 k2/(k1 + k2)");
     app.add_option("--k2", o.k2, "conductivity [W/(m K)] of solid 2 (with --k1)");

@@ -124,8 +124,9 @@ TEST(Threads, SolvesAreTheSameForAnyNumberOfThreads)
     // A periodic elastic solve (160 x 150: the loops and FFTs above minimumParallelSize), a
     // non-periodic one (96 x 90, padded to 192 x 180) and a capped one, with their spot
     // conductances: the pressures, separations, iterations and h_c/k_s of 2 and 3 threads are
-    // those of 1, bit for bit (FFTW's threaded plans split the same transforms; the sums are
-    // by blocks in order).
+    // those of 1, bit for bit (the blocked transforms give each row and column its own 1-D
+    // transform, the same whichever thread does it: 76 and 97 columns, a block of 8 and a
+    // remainder; the sums are by blocks in order).
     struct Case {
         std::size_t nx, ny;
         bool periodic;

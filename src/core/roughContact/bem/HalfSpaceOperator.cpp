@@ -84,48 +84,238 @@ void planFor(int n)
 }
 } // namespace
 
-// FFT buffers and plans of one grid, made once for the threads() of the time they are made:
-// FFTW_ESTIMATE (deterministic, no timing runs), or with a wisdom file measured plans
-// (setFftWisdom). FFTW_MEASURE overwrites the buffers while it plans: they are filled after.
+// The columns one pass of the column transforms takes at a time (blocked transforms, below):
+// 8 columns of 2048 complex values are 256 KiB, within a core's level-2 cache. Measured
+// 2026-11-27 on the benchmarks' machine (a pair alone, single runs): 4 and 8 within 4 % of each
+// other at 512^2-2048^2; 16 the same at 1024^2-2048^2 and 1.4 times slower at 512^2.
+constexpr std::size_t columnBlock = 8;
+
+// FFT plans of one grid, made once. Two kinds:
+//  - blocked (the default, FFTW_ESTIMATE): the 2-D transform done as its two passes by the
+//    core itself, 1-D real transforms of the rows, then the columns taken columnBlock at a time
+//    into a contiguous buffer, transformed, multiplied by the operator's multiplier, transformed
+//    back and put back, then the rows back. Every 1-D transform is planned without timing runs
+//    and done the same way whichever thread does it: the answer is the same bit for bit on every
+//    run and for any number of threads. FFTW's own estimated 2-D plan strides through memory
+//    column by column: a cold solve was 1.5 times slower with it at 2048^2 (docs/benchmarks.md).
+//    A padded (non-periodic) grid's rows beyond the surface are zero and are not transformed
+//    forward, nor transformed back (the answer is read on the surface's rows only).
+//  - with a wisdom file (setFftWisdom): FFTW's 2-D plans, FFTW_MEASURE, for the threads() of the
+//    time they are made (FFTW's threads). FFTW_MEASURE overwrites the buffers while it plans:
+//    they are filled after.
 struct HalfSpaceOperator::Fft {
     std::size_t mx;
     std::size_t my;
-    std::unique_ptr<double, FftwFree<double>> real;
+    std::size_t hx; // mx / 2 + 1 complex values a row
+    bool blocked;
+    std::unique_ptr<double, FftwFree<double>> real; // 2-D plans only
     std::unique_ptr<fftw_complex, FftwFree<fftw_complex>> spectral;
-    fftw_plan forward = nullptr;
-    fftw_plan backward = nullptr;
+    fftw_plan forward = nullptr;  // 2-D, or a row's r2c
+    fftw_plan backward = nullptr; // 2-D, or a row's c2r
+    // Blocked: the columns' c2c transforms, in place on a buffer of columnBlock columns of my
+    // values each, forward and backward; and the same for the last block's remaining columns.
+    fftw_plan columnsForward = nullptr;
+    fftw_plan columnsBackward = nullptr;
+    fftw_plan restForward = nullptr;
+    fftw_plan restBackward = nullptr;
+    int realAlignment = 0; // fftw_alignment_of the buffers the row plans were made on
 
-    Fft(std::size_t mx_, std::size_t my_) : mx(mx_), my(my_)
+    Fft(std::size_t mx_, std::size_t my_) : mx(mx_), my(my_), hx(mx_ / 2 + 1)
     {
-        const std::size_t nc = my * (mx / 2 + 1);
+        spectral.reset(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * my * hx)));
+        if (!spectral) {
+            throw std::bad_alloc();
+        }
+        const std::lock_guard<std::mutex> lock(fftwPlanner());
+        const unsigned flag = planningFlag();
+        blocked = flag == FFTW_ESTIMATE;
+        if (blocked) {
+            planFor(1);
+            const std::unique_ptr<double, FftwFree<double>> row(static_cast<double*>(fftw_malloc(sizeof(double) * mx)));
+            const std::unique_ptr<fftw_complex, FftwFree<fftw_complex>> columns(
+                static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * columnBlock * my)));
+            if (!row || !columns) {
+                throw std::bad_alloc();
+            }
+            realAlignment = fftw_alignment_of(row.get());
+            const int n = static_cast<int>(mx);
+            forward = fftw_plan_dft_r2c_1d(n, row.get(), spectral.get(), FFTW_ESTIMATE);
+            backward = fftw_plan_dft_c2r_1d(n, spectral.get(), row.get(), FFTW_ESTIMATE);
+            const int length[1] = {static_cast<int>(my)};
+            const auto plan = [&](std::size_t count, int sign) {
+                return fftw_plan_many_dft(1, length, static_cast<int>(count), columns.get(), nullptr, 1,
+                                          length[0], columns.get(), nullptr, 1, length[0], sign, FFTW_ESTIMATE);
+            };
+            const std::size_t rest = hx % columnBlock;
+            columnsForward = plan(columnBlock, FFTW_FORWARD);
+            columnsBackward = plan(columnBlock, FFTW_BACKWARD);
+            if (rest > 0) {
+                restForward = plan(rest, FFTW_FORWARD);
+                restBackward = plan(rest, FFTW_BACKWARD);
+            }
+            if (!forward || !backward || !columnsForward || !columnsBackward || (rest > 0 && !restBackward) ||
+                (rest > 0 && !restForward)) {
+                destroy();
+                throw ParameterError("FFT", "FFTW could not plan a " + std::to_string(mx) + " x " +
+                                                std::to_string(my) + " transform");
+            }
+            return;
+        }
         real.reset(static_cast<double*>(fftw_malloc(sizeof(double) * mx * my)));
-        spectral.reset(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * nc)));
-        if (!real || !spectral) {
+        if (!real) {
             throw std::bad_alloc();
         }
         // FFTW's 2-D real transforms: n0 = my rows of n1 = mx (row-major, x fastest).
-        const std::lock_guard<std::mutex> lock(fftwPlanner());
         planFor(threads());
-        const unsigned flag = planningFlag();
         forward = fftw_plan_dft_r2c_2d(static_cast<int>(my), static_cast<int>(mx), real.get(), spectral.get(),
                                        flag);
         backward = fftw_plan_dft_c2r_2d(static_cast<int>(my), static_cast<int>(mx), spectral.get(),
                                         real.get(), flag);
         if (!forward || !backward) {
+            destroy();
             throw ParameterError("FFT", "FFTW could not plan a " + std::to_string(mx) + " x " + std::to_string(my) +
                                             " transform");
         }
-        if (flag != FFTW_ESTIMATE) {
-            saveWisdom();
-        }
+        saveWisdom();
     }
     ~Fft()
     {
         const std::lock_guard<std::mutex> lock(fftwPlanner());
-        fftw_destroy_plan(forward);
-        fftw_destroy_plan(backward);
+        destroy();
     }
+    // (With the planner's lock held.)
+    void destroy()
+    {
+        for (fftw_plan* p : {&forward, &backward, &columnsForward, &columnsBackward, &restForward, &restBackward}) {
+            if (*p != nullptr) {
+                fftw_destroy_plan(*p);
+                *p = nullptr;
+            }
+        }
+    }
+
+    // Blocked: the spectrum of `rows` rows of `length` values each (`stride` apart in `in`), the
+    // grid's other values zero: the rows' transforms into `spectral`, the rows beyond `rows`
+    // zero; then the columns, each multiplied by `multiplier` (my x hx, as `spectral`) and
+    // transformed back when it is given, or left as the 2-D spectrum when it is null.
+    void rowsForward(const double* in, std::size_t rows, std::size_t length, std::size_t stride) const;
+    void columns(const double* multiplier) const;
+    // The rows back: the first `rows` rows of the inverse transform, `length` values of each
+    // into `out`, `stride` apart. (The row transforms overwrite `spectral`: scratch.)
+    void rowsBackward(double* out, std::size_t rows, std::size_t length, std::size_t stride) const;
 };
+
+namespace {
+template <class T> std::unique_ptr<T, FftwFree<T>> fftwArray(std::size_t n)
+{
+    std::unique_ptr<T, FftwFree<T>> a(static_cast<T*>(fftw_malloc(sizeof(T) * n)));
+    if (!a) {
+        throw std::bad_alloc();
+    }
+    return a;
+}
+
+// body(first, last, buffer) over [0, n) in one piece per thread (forRange's pieces of items of
+// `weight` values), each with its own buffer of `bufferSize` Ts, allocated before the threads
+// start (a loop's body must not throw). Which thread does a piece changes nothing in it.
+template <class T, class Body>
+void inPieces(std::size_t n, std::size_t weight, std::size_t bufferSize, Body&& body)
+{
+    const std::size_t pieces = std::max<std::size_t>(1, std::min<std::size_t>(n, std::size_t(threads())));
+    std::vector<std::unique_ptr<T, FftwFree<T>>> buffers;
+    for (std::size_t k = 0; k < pieces; ++k) {
+        buffers.push_back(fftwArray<T>(bufferSize));
+    }
+    struct Context {
+        Body& body;
+        std::vector<std::unique_ptr<T, FftwFree<T>>>& buffers;
+        std::size_t n;
+        std::size_t pieces;
+    } context{body, buffers, n, pieces};
+    parallel::forRange(
+        pieces, weight * ((n + pieces - 1) / pieces),
+        [](std::size_t begin, std::size_t end, void* c) {
+            Context& x = *static_cast<Context*>(c);
+            for (std::size_t k = begin; k < end; ++k) {
+                x.body(x.n * k / x.pieces, x.n * (k + 1) / x.pieces, x.buffers[k].get());
+            }
+        },
+        &context);
+}
+} // namespace
+
+void HalfSpaceOperator::Fft::rowsForward(const double* in, std::size_t rows, std::size_t length,
+                                         std::size_t stride) const
+{
+    inPieces<double>(rows, mx, mx, [&](std::size_t first, std::size_t last, double* row) {
+        for (std::size_t y = first; y < last; ++y) {
+            const double* source = in + y * stride;
+            fftw_complex* target = spectral.get() + y * hx;
+            if (length == mx && fftw_alignment_of(const_cast<double*>(source)) == realAlignment) {
+                fftw_execute_dft_r2c(forward, const_cast<double*>(source), target);
+                continue;
+            }
+            std::copy(source, source + length, row);
+            std::fill(row + length, row + mx, 0.0);
+            fftw_execute_dft_r2c(forward, row, target);
+        }
+    });
+    std::fill(spectral.get()[0] + 2 * rows * hx, spectral.get()[0] + 2 * my * hx, 0.0);
+}
+
+void HalfSpaceOperator::Fft::columns(const double* multiplier) const
+{
+    const std::size_t blocks = (hx + columnBlock - 1) / columnBlock;
+    inPieces<fftw_complex>(blocks, columnBlock * my, columnBlock * my,
+                           [&](std::size_t first, std::size_t last, fftw_complex* buffer) {
+        fftw_complex* c = spectral.get();
+        for (std::size_t b = first; b < last; ++b) {
+            const std::size_t x0 = b * columnBlock;
+            const std::size_t count = std::min(columnBlock, hx - x0);
+            const bool whole = count == columnBlock;
+            for (std::size_t y = 0; y < my; ++y) {
+                for (std::size_t j = 0; j < count; ++j) {
+                    buffer[j * my + y][0] = c[y * hx + x0 + j][0];
+                    buffer[j * my + y][1] = c[y * hx + x0 + j][1];
+                }
+            }
+            fftw_execute_dft(whole ? columnsForward : restForward, buffer, buffer);
+            if (multiplier != nullptr) {
+                for (std::size_t y = 0; y < my; ++y) {
+                    for (std::size_t j = 0; j < count; ++j) {
+                        const double m = multiplier[y * hx + x0 + j];
+                        buffer[j * my + y][0] *= m;
+                        buffer[j * my + y][1] *= m;
+                    }
+                }
+                fftw_execute_dft(whole ? columnsBackward : restBackward, buffer, buffer);
+            }
+            for (std::size_t y = 0; y < my; ++y) {
+                for (std::size_t j = 0; j < count; ++j) {
+                    c[y * hx + x0 + j][0] = buffer[j * my + y][0];
+                    c[y * hx + x0 + j][1] = buffer[j * my + y][1];
+                }
+            }
+        }
+    });
+}
+
+void HalfSpaceOperator::Fft::rowsBackward(double* out, std::size_t rows, std::size_t length,
+                                          std::size_t stride) const
+{
+    inPieces<double>(rows, mx, mx, [&](std::size_t first, std::size_t last, double* row) {
+        for (std::size_t y = first; y < last; ++y) {
+            double* target = out + y * stride;
+            fftw_complex* source = spectral.get() + y * hx;
+            if (length == mx && fftw_alignment_of(target) == realAlignment) {
+                fftw_execute_dft_c2r(backward, source, target);
+                continue;
+            }
+            fftw_execute_dft_c2r(backward, source, row);
+            std::copy(row, row + length, target);
+        }
+    });
+}
 
 void setFftWisdom(const std::string& path)
 {
@@ -146,7 +336,11 @@ double HalfSpaceOperator::loveRectangle(double x, double y, double a, double b, 
 double HalfSpaceOperator::bytesFor(std::size_t nx, std::size_t ny, bool periodic)
 {
     const double m = (periodic ? 1.0 : 4.0) * double(nx) * double(ny);
-    return m * (8.0 + 16.0 * 0.5 + 2.0 * 8.0 * 0.5); // real buffer, half-complex buffer, K and S
+    // A real grid, the half-complex buffer, K and S. (The blocked transforms hold no real grid,
+    // only a few rows and columns a thread, but a padded operator makes one while it is built,
+    // and the measured peaks of periodic solves, docs/benchmarks.md, are matched with it
+    // counted: FFTW's 2-D plans never touched theirs there either.)
+    return m * (8.0 + 16.0 * 0.5 + 2.0 * 8.0 * 0.5);
 }
 
 HalfSpaceOperator::HalfSpaceOperator(std::size_t nx, std::size_t ny, double dx, double dy, double Eprime,
@@ -180,7 +374,8 @@ HalfSpaceOperator::HalfSpaceOperator(std::size_t nx, std::size_t ny, double dx, 
     }
     // Non-periodic: Love's influence of one cell at every offset (i dx, j dy), |i| < nx,
     // |j| < ny, placed in wrap-around order on the padded grid; the rest (offset nx, ny) 0.
-    double* k = fft_->real.get();
+    const auto kernel = fftwArray<double>(mx_ * my_);
+    double* k = kernel.get();
     for (std::size_t jy = 0; jy < my_; ++jy) {
         for (std::size_t jx = 0; jx < mx_; ++jx) {
             const long ix = jx < nx_ ? long(jx) : (jx > nx_ ? long(jx) - long(mx_) : 0);
@@ -191,7 +386,13 @@ HalfSpaceOperator::HalfSpaceOperator(std::size_t nx, std::size_t ny, double dx, 
                                                       0.5 * dy_, 1.0, Eprime_);
         }
     }
-    fftw_execute(fft_->forward);
+    if (fft_->blocked) {
+        fft_->rowsForward(k, my_, mx_, mx_);
+        fft_->columns(nullptr);
+    } else {
+        std::copy(k, k + mx_ * my_, fft_->real.get());
+        fftw_execute(fft_->forward);
+    }
     // The kernel is even in x and y, so its transform is real (to round-off).
     for (std::size_t i = 0; i < kernel_.size(); ++i) {
         kernel_[i] = fft_->spectral.get()[i][0] / double(mx_ * my_);
@@ -226,6 +427,14 @@ void HalfSpaceOperator::convolve(const std::vector<double>& multiplier, const do
 {
     ++pairs_;
     fftw_complex* c = fft_->spectral.get();
+    if (fft_->blocked) {
+        // Periodic: the grid's rows; padded: the surface's ny rows of nx, the rest zero, and
+        // only the surface's rows back.
+        fft_->rowsForward(in, ny_, nx_, nx_);
+        fft_->columns(multiplier.data());
+        fft_->rowsBackward(out, ny_, nx_, nx_);
+        return;
+    }
     double* r = fft_->real.get();
     // Periodic: transform the caller's arrays directly when their alignment matches the
     // planned buffers' (FFTW's new-array execute), sparing two copies of the grid.

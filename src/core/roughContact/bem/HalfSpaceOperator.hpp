@@ -10,9 +10,14 @@
 
 namespace roughContact {
 
-/// How HalfSpaceOperator plans its FFTs. Empty (the default): FFTW_ESTIMATE, a plan chosen
-/// without timing runs, the same on every run and machine. A file: FFTW_MEASURE plans (timed
-/// once per grid size and thread count, 1.4-1.8 times faster transforms at 1024^2-2048^2),
+/// How HalfSpaceOperator plans its FFTs. Empty (the default): blocked transforms, the 2-D
+/// transform done by the core as FFTW's 1-D transforms of the rows and then of the columns, 8
+/// columns at a time through a small buffer (the multiplier applied there), each 1-D plan
+/// chosen with FFTW_ESTIMATE (no timing runs). Every run gets the same answer bit for bit, for
+/// any number of threads (a processor with other SIMD instructions may get other codelets from
+/// FFTW: answers then agree to round-off). A cold solve on one core is 1.12-1.16 times faster
+/// at 1024^2 and 1.5 times at 2048^2 than with FFTW's own estimated 2-D plan (docs/benchmarks.md).
+/// A file: FFTW_MEASURE 2-D plans (timed once per grid size and thread count),
 /// kept in that file as FFTW's wisdom and read back by later runs, so that every run sharing the
 /// file uses the same plans and gets the same answer bit for bit (a run without the file, or on
 /// another machine, may choose other plans: the answers then agree to round-off, not bit for

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The threads of the boundary-element solves (FFTW's threads and the solvers' own loops), and
+// The threads of the boundary-element solves (the transforms' rows and columns, FFTW's threads
+// with measured 2-D plans, and the solvers' own loops), and
 // the loops they run: each loop's answer is the same for any number of threads, bit for bit.
 #pragma once
 
