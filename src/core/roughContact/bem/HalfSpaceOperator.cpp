@@ -85,9 +85,9 @@ void planFor(int n)
 } // namespace
 
 // The columns one pass of the column transforms takes at a time (blocked transforms, below):
-// 8 columns of 2048 complex values are 256 KiB, within a core's level-2 cache. Measured
-// 2026-11-27 on the benchmarks' machine (a pair alone, single runs): 4 and 8 within 4 % of each
-// other at 512^2-2048^2; 16 the same at 1024^2-2048^2 and 1.4 times slower at 512^2.
+// 8 columns of 2048 complex values are 256 KiB, within a core's level-2 cache. Chosen from
+// single timed runs of a pair on the benchmarks' machine (2026-11-27): 4, 8 and 16 could not be
+// told apart reliably at 1024^2-2048^2, 16 was slower at 512^2 and 32 slower everywhere.
 constexpr std::size_t columnBlock = 8;
 
 // FFT plans of one grid, made once. Two kinds:
@@ -119,6 +119,10 @@ struct HalfSpaceOperator::Fft {
     fftw_plan restForward = nullptr;
     fftw_plan restBackward = nullptr;
     int realAlignment = 0; // fftw_alignment_of the buffers the row plans were made on
+    // Blocked: a row and a block of columns for each thread, made at the first transform and
+    // kept (an operator is used by one solve at a time: HalfSpaceOperator::pairs_).
+    mutable std::vector<std::unique_ptr<double, FftwFree<double>>> rowBuffers;
+    mutable std::vector<std::unique_ptr<fftw_complex, FftwFree<fftw_complex>>> columnBuffers;
 
     Fft(std::size_t mx_, std::size_t my_) : mx(mx_), my(my_), hx(mx_ / 2 + 1)
     {
@@ -216,14 +220,15 @@ template <class T> std::unique_ptr<T, FftwFree<T>> fftwArray(std::size_t n)
 }
 
 // body(first, last, buffer) over [0, n) in one piece per thread (forRange's pieces of items of
-// `weight` values), each with its own buffer of `bufferSize` Ts, allocated before the threads
-// start (a loop's body must not throw). Which thread does a piece changes nothing in it.
+// `weight` values), each with its own buffer of `bufferSize` Ts from `buffers` (made there when
+// there are fewer than pieces, before the threads start: a loop's body must not throw). Which
+// thread does a piece changes nothing in it.
 template <class T, class Body>
-void inPieces(std::size_t n, std::size_t weight, std::size_t bufferSize, Body&& body)
+void inPieces(std::size_t n, std::size_t weight, std::vector<std::unique_ptr<T, FftwFree<T>>>& buffers,
+              std::size_t bufferSize, Body&& body)
 {
     const std::size_t pieces = std::max<std::size_t>(1, std::min<std::size_t>(n, std::size_t(threads())));
-    std::vector<std::unique_ptr<T, FftwFree<T>>> buffers;
-    for (std::size_t k = 0; k < pieces; ++k) {
+    while (buffers.size() < pieces) {
         buffers.push_back(fftwArray<T>(bufferSize));
     }
     struct Context {
@@ -247,7 +252,7 @@ void inPieces(std::size_t n, std::size_t weight, std::size_t bufferSize, Body&& 
 void HalfSpaceOperator::Fft::rowsForward(const double* in, std::size_t rows, std::size_t length,
                                          std::size_t stride) const
 {
-    inPieces<double>(rows, mx, mx, [&](std::size_t first, std::size_t last, double* row) {
+    inPieces<double>(rows, mx, rowBuffers, mx, [&](std::size_t first, std::size_t last, double* row) {
         for (std::size_t y = first; y < last; ++y) {
             const double* source = in + y * stride;
             fftw_complex* target = spectral.get() + y * hx;
@@ -266,7 +271,7 @@ void HalfSpaceOperator::Fft::rowsForward(const double* in, std::size_t rows, std
 void HalfSpaceOperator::Fft::columns(const double* multiplier) const
 {
     const std::size_t blocks = (hx + columnBlock - 1) / columnBlock;
-    inPieces<fftw_complex>(blocks, columnBlock * my, columnBlock * my,
+    inPieces<fftw_complex>(blocks, columnBlock * my, columnBuffers, columnBlock * my,
                            [&](std::size_t first, std::size_t last, fftw_complex* buffer) {
         fftw_complex* c = spectral.get();
         for (std::size_t b = first; b < last; ++b) {
@@ -303,7 +308,7 @@ void HalfSpaceOperator::Fft::columns(const double* multiplier) const
 void HalfSpaceOperator::Fft::rowsBackward(double* out, std::size_t rows, std::size_t length,
                                           std::size_t stride) const
 {
-    inPieces<double>(rows, mx, mx, [&](std::size_t first, std::size_t last, double* row) {
+    inPieces<double>(rows, mx, rowBuffers, mx, [&](std::size_t first, std::size_t last, double* row) {
         for (std::size_t y = first; y < last; ++y) {
             double* target = out + y * stride;
             fftw_complex* source = spectral.get() + y * hx;
@@ -374,8 +379,9 @@ HalfSpaceOperator::HalfSpaceOperator(std::size_t nx, std::size_t ny, double dx, 
     }
     // Non-periodic: Love's influence of one cell at every offset (i dx, j dy), |i| < nx,
     // |j| < ny, placed in wrap-around order on the padded grid; the rest (offset nx, ny) 0.
-    const auto kernel = fftwArray<double>(mx_ * my_);
-    double* k = kernel.get();
+    // (Blocked transforms hold no real grid: a temporary one, freed at the end of construction.)
+    const auto temporary = fft_->blocked ? fftwArray<double>(mx_ * my_) : nullptr;
+    double* k = fft_->blocked ? temporary.get() : fft_->real.get();
     for (std::size_t jy = 0; jy < my_; ++jy) {
         for (std::size_t jx = 0; jx < mx_; ++jx) {
             const long ix = jx < nx_ ? long(jx) : (jx > nx_ ? long(jx) - long(mx_) : 0);
@@ -390,7 +396,6 @@ HalfSpaceOperator::HalfSpaceOperator(std::size_t nx, std::size_t ny, double dx, 
         fft_->rowsForward(k, my_, mx_, mx_);
         fft_->columns(nullptr);
     } else {
-        std::copy(k, k + mx_ * my_, fft_->real.get());
         fftw_execute(fft_->forward);
     }
     // The kernel is even in x and y, so its transform is real (to round-off).
