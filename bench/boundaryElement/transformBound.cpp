@@ -6,8 +6,11 @@
 // (HalfSpaceOperator::transformPairs), the seconds of one pair (median of 15, timed here on the
 // same operator), and the transforms' share of the measured time: pairs x seconds per pair
 // against the total. The rest is the solvers' own loops over the grid.
-// Usage: transformBound N LOAD [plain] [wisdom FILE]
+// Usage: transformBound N LOAD [plain] [wisdom FILE] [padded | mirrored]
 //   plain: without the stiffness preconditioner (PolonskyKeerOptions::precondition false).
+//   padded, mirrored: the operator's edges (HalfSpaceOperator::Edges; default periodic), the
+//   same surface solved as a zero-padded patch or mirrored about its edges (other problems:
+//   for the cost of a pair on the same grid).
 //   wisdom FILE: measured FFT plans kept in FILE (setFftWisdom), as --fft-wisdom.
 #include "roughContact/bem/HalfSpaceOperator.hpp"
 #include "roughContact/bem/PolonskyKeer.hpp"
@@ -35,16 +38,21 @@ double seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_cloc
 int main(int argc, char** argv)
 {
     if (argc < 3) {
-        std::fprintf(stderr, "usage: transformBound N LOAD [plain] [wisdom FILE]\n");
+        std::fprintf(stderr, "usage: transformBound N LOAD [plain] [wisdom FILE] [padded | mirrored]\n");
         return 1;
     }
     const auto n = static_cast<std::size_t>(std::atol(argv[1]));
     const double load = std::atof(argv[2]);
     bool precondition = true;
+    HalfSpaceOperator::Edges edges = HalfSpaceOperator::Edges::periodic;
     for (int i = 3; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "plain") {
             precondition = false;
+        } else if (a == "padded") {
+            edges = HalfSpaceOperator::Edges::padded;
+        } else if (a == "mirrored") {
+            edges = HalfSpaceOperator::Edges::mirrored;
         } else if (a == "wisdom" && i + 1 < argc) {
             setFftWisdom(argv[++i]);
         } else {
@@ -56,7 +64,7 @@ int main(int argc, char** argv)
     const ArealSurface surface =
         synthesizeIsotropic(roughnessSpectrum(0.8e-6, 0.1).spectrum, n, 1).detrended(Detrend::mean);
     const double Eprime = 1.0 / (2.0 * (1.0 - 0.3 * 0.3) / 2e11);
-    const HalfSpaceOperator op(n, n, surface.dx(), surface.dy(), Eprime, true);
+    const HalfSpaceOperator op(n, n, surface.dx(), surface.dy(), Eprime, edges);
     PolonskyKeerOptions options;
     options.precondition = precondition;
     const PolonskyKeer solver(op, surface.heights(), options);
@@ -87,8 +95,11 @@ int main(int argc, char** argv)
     const double conductanceSeconds = seconds(t1, t2);
     const double total = contactSeconds + conductanceSeconds;
     const std::size_t pairs = contactPairs + conductancePairs;
-    std::printf("%zu^2, p/E' = %g, %s%s: A_r/A_n %.6f, h_c/k_s %.6g 1/m\n", n, load,
-                precondition ? "preconditioned" : "plain", fftWisdom().empty() ? "" : ", measured plans",
+    const char* edgesName = edges == HalfSpaceOperator::Edges::padded     ? ", padded"
+                            : edges == HalfSpaceOperator::Edges::mirrored ? ", mirrored"
+                                                                          : "";
+    std::printf("%zu^2, p/E' = %g, %s%s%s: A_r/A_n %.6f, h_c/k_s %.6g 1/m\n", n, load,
+                precondition ? "preconditioned" : "plain", fftWisdom().empty() ? "" : ", measured plans", edgesName,
                 s.areaFraction, c.perConductivity);
     std::printf("  contact:     %4zu iterations, %4zu pairs (%.2f a iteration), %7.3f s\n", s.iterations,
                 contactPairs, double(contactPairs) / double(std::max<std::size_t>(s.iterations, 1)), contactSeconds);

@@ -51,7 +51,8 @@ roughContact::InterfaceSpec interfaceSpec(
     std::optional<double> minPressure, std::optional<double> maxPressure, std::size_t pointsPerDecade,
     std::optional<std::size_t> synthesize, std::uint64_t seed, std::optional<bool> periodic,
     std::optional<double> hardness, bool hardnessFromYield, std::size_t bemPointsPerDecade,
-    std::optional<roughContact::GapSpec> gap, std::optional<std::string> detrend);
+    std::optional<roughContact::GapSpec> gap, std::optional<std::string> detrend,
+    std::optional<bool> mirror = std::nullopt);
 
 /// A contact model built by name, with the spectrum and E' it was built from.
 struct Model {

@@ -51,9 +51,10 @@ void bindBoundaryElement(py::module_& m)
         .def(py::init([](const ArealSurface& surface, const py::object& materials, bool periodic,
                          std::optional<double> hardness, double tolerance, std::size_t maxIterations,
                          std::optional<std::string> detrend, const py::object& progress, bool verbose,
-                         double progressEvery, const py::object& threads) {
+                         double progressEvery, const py::object& threads, bool mirror) {
                  BoundaryElementOptions o;
                  o.periodic = periodic;
+                 o.mirrored = mirror;
                  if (detrend) {
                      o.detrend = parseDetrend(*detrend, "detrend");
                  }
@@ -105,10 +106,12 @@ void bindBoundaryElement(py::module_& m)
              py::arg("surface"), py::arg("materials"), py::arg("periodic") = false, py::arg("hardness") = py::none(),
              py::arg("tolerance") = 1e-8, py::arg("max_iterations") = 20000, py::arg("detrend") = py::none(),
              py::arg("progress") = py::none(), py::arg("verbose") = false, py::arg("progress_every") = 3.0,
-             py::arg("threads") = py::none(),
+             py::arg("threads") = py::none(), py::arg("mirror") = false,
              "BoundaryElement(surface, materials, periodic=False, hardness=None, tolerance=1e-8, "
              "max_iterations=20000, detrend=None, progress=None, verbose=False, progress_every=3.0, "
-             "threads=None): threads sets the process's threads of the solves (set_threads; None: as they "
+             "threads=None, mirror=False): mirror solves a measured map mirrored about its edges into one "
+             "period of a periodic surface (an interface: no edges, no patch constriction to remove; not "
+             "with periodic); threads sets the process's threads of the solves (set_threads; None: as they "
              "are, by default what the machine has); progress "
              "a callable called every progress_every seconds of a long solve with a dict (stage, iteration, "
              "residual, tolerance, seconds), or "
@@ -120,7 +123,7 @@ void bindBoundaryElement(py::module_& m)
                                "E' [Pa].")
         .def_property_readonly("patch_conductance_per_conductivity",
                                [](const BoundaryElement& x) { return x.model->patchConductancePerConductivity(); },
-                               "Non-periodic: h/k_s [1/m] of the whole patch bonded; periodic: inf.")
+                               "Non-periodic: h/k_s [1/m] of the whole patch bonded; periodic or mirrored: inf.")
         .def(
             "area_fraction",
             [](const BoundaryElement& x, const py::object& P) {

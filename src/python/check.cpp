@@ -114,10 +114,10 @@ void bindCheck(py::module_& m)
            std::optional<double> maxPressure, std::optional<bool> periodic, std::optional<double> hardness,
            bool hardnessFromYield, std::optional<std::string> detrend, const std::vector<double>& pressures,
            std::size_t grid, const std::vector<std::uint64_t>& seeds, std::size_t count, const py::object& progress,
-           const py::object& threads) {
+           const py::object& threads, std::optional<bool> mirror) {
             const InterfaceSpec spec = interfaceSpec(surfaces, side1, side2, model, conductance, microhardness, vickers,
                                                      minPressure, maxPressure, 40, std::nullopt, 1, periodic, hardness,
-                                                     hardnessFromYield, 6, std::nullopt, detrend);
+                                                     hardnessFromYield, 6, std::nullopt, detrend, mirror);
             SurfaceCheckOptions o;
             o.gridSize = grid;
             o.seeds = seeds;
@@ -146,10 +146,10 @@ void bindCheck(py::module_& m)
         py::arg("hardness") = py::none(), py::arg("hardness_from_yield") = false, py::arg("detrend") = py::none(),
         py::arg("pressures") = std::vector<double>{}, py::arg("grid") = 512,
         py::arg("seeds") = std::vector<std::uint64_t>{1, 2, 3}, py::arg("count") = 4, py::arg("progress") = py::none(),
-        py::arg("threads") = py::none(),
+        py::arg("threads") = py::none(), py::arg("mirror") = py::none(),
         "check(*, surfaces, side1, side2, model='jacksonGreen', conductance='', ..., pressures=[], grid=512, "
-        "seeds=[1, 2, 3], count=4, progress=None, threads=None): the exact model (boundaryElement) on the user's own surface "
-        "(an areal map as it is; a 1-D description as `seeds` surfaces of grid x grid synthesized from its "
+        "seeds=[1, 2, 3], count=4, progress=None, threads=None, mirror=None): the exact model (boundaryElement) on the user's "
+        "own surface (an areal map as it is, or mirror=True: mirrored about its edges into a periodic surface; a 1-D description as `seeds` surfaces of grid x grid synthesized from its "
         "spectrum, cut at grid/8 levels) at `pressures` [Pa] (at most 5) or `count` pressures across "
         "[min_pressure, max_pressure], within p/(E' h') 1e-4 to 1e-1; capped at H where hardness, "
         "hardness_from_yield or S_y say, elastic otherwise; every law's ratio to it. The interface's keyword "

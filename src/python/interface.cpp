@@ -98,7 +98,8 @@ InterfaceSpec interfaceSpec(const std::vector<SurfaceSpec>& surfaces, const Mate
                             std::optional<double> minPressure, std::optional<double> maxPressure,
                             std::size_t pointsPerDecade, std::optional<std::size_t> synthesize, std::uint64_t seed,
                             std::optional<bool> periodic, std::optional<double> hardness, bool hardnessFromYield,
-                            std::size_t bemPointsPerDecade, std::optional<GapSpec> gap, std::optional<std::string> detrend)
+                            std::size_t bemPointsPerDecade, std::optional<GapSpec> gap, std::optional<std::string> detrend,
+                            std::optional<bool> mirror)
 {
     // The parts are objects already read (SurfaceSpec and GapSpec through the core's reader,
     // Material checked by the pair); the settings through the core's reader of them.
@@ -125,6 +126,7 @@ InterfaceSpec interfaceSpec(const std::vector<SurfaceSpec>& surfaces, const Mate
         v.set("seed", seed);
     }
     setIf(v, "periodic", periodic);
+    setIf(v, "mirror", mirror);
     setIf(v, "hardness", hardness);
     if (hardnessFromYield) {
         v.set("hardnessFromYield", true);
@@ -224,11 +226,11 @@ void bindInterface(py::module_& m)
                          std::size_t pointsPerDecade, std::optional<std::size_t> synthesize, std::uint64_t seed,
                          std::optional<bool> periodic, std::optional<double> hardness, bool hardnessFromYield,
                          std::size_t bemPointsPerDecade, std::optional<GapSpec> gap, std::optional<std::string> detrend,
-                         std::optional<std::string> tableFile, const py::object& threads) {
+                         std::optional<std::string> tableFile, const py::object& threads, std::optional<bool> mirror) {
                  const InterfaceSpec s =
                      interfaceSpec(surfaces, side1, side2, model, conductance, microhardness, vickers, minPressure,
                                    maxPressure, pointsPerDecade, synthesize, seed, periodic, hardness,
-                                   hardnessFromYield, bemPointsPerDecade, gap, detrend);
+                                   hardnessFromYield, bemPointsPerDecade, gap, detrend, mirror);
                  if (tableFile && s.model != "boundaryElement") {
                      throw ParameterError("table_file", "is the cache of model 'boundaryElement', not of '" +
                                                             s.model + "'");
@@ -252,13 +254,14 @@ void bindInterface(py::module_& m)
              py::arg("periodic") = py::none(), py::arg("hardness") = py::none(),
              py::arg("hardness_from_yield") = false, py::arg("bem_points_per_decade") = 6,
              py::arg("gap") = py::none(), py::arg("detrend") = py::none(), py::arg("table_file") = py::none(),
-             py::arg("threads") = py::none(),
+             py::arg("threads") = py::none(), py::arg("mirror") = py::none(),
              "ContactInterface(*, surfaces, side1, side2, model='jacksonGreen', conductance='', ...): "
              "surfaces a list of one or two SurfaceSpec; side1, side2 the Materials of the two solids; model a "
              "multi-scale model or 'boundaryElement'; conductance a law name ('' the default); microhardness "
              "[Pa] or vickers (c1 [Pa], c2) for cooperMikicYovanovich; min_pressure, max_pressure [Pa] the "
              "table's range (default 1e-9 E' to E'); points_per_decade; boundaryElement only: synthesize N "
-             "(an N x N surface from the 1-D surfaces), seed, periodic, detrend ('none', 'mean' or 'plane'; None: "
+             "(an N x N surface from the 1-D surfaces), seed, periodic, mirror (a map mirrored about its edges into "
+             "one period of a periodic surface), detrend ('none', 'mean' or 'plane'; None: "
              "'mean' when periodic, 'plane' otherwise), hardness [Pa], hardness_from_yield, "
              "bem_points_per_decade, table_file (the boundary-element table's cache file, as the condition's "
              "constant/boundaryElementTable.NAME.csv: read when it holds this table, else built and written); "

@@ -204,3 +204,31 @@ def test_threads_change_nothing_in_the_answer(spectrum):
             rc.set_threads(0)
     finally:
         rc.set_threads(before)
+
+
+def test_boundary_element_mirror(cli, spectrum, tmp_path):
+    """mirror=True (--mirror): a map solved mirrored about its edges into one period of a periodic
+    surface equals the map mirrored by hand (numpy) and solved periodic, and the CLI; no patch."""
+    full = np.asarray(rc.synthesize_isotropic(spectrum, 32, 3).heights)
+    heights = full[:14, :18]  # a corner: not periodic; dy != dx
+    dx, dy = 2e-6, 3e-6
+    surface = rc.ArealSurface(heights, dx, dy)
+    materials = rc.ContactMaterials.from_reduced_modulus(2e11)
+    bem = rc.BoundaryElement(surface, materials, mirror=True)
+    assert math.isinf(bem.patch_conductance_per_conductivity)
+    curve = bem.curve([2e6, 2e7])
+    flat = np.asarray(surface.detrended("plane").heights)
+    row = np.hstack([flat, flat[:, ::-1]])
+    by_hand = rc.ArealSurface(np.vstack([row, row[::-1, :]]), dx, dy)
+    periodic = rc.BoundaryElement(by_hand, materials, periodic=True, detrend="none").curve([2e6, 2e7])
+    np.testing.assert_allclose(curve["area_fraction"], periodic["area_fraction"], rtol=1e-3)
+    np.testing.assert_allclose(curve["conductance_per_conductivity"], periodic["conductance_per_conductivity"],
+                               rtol=1e-6)
+    path = tmp_path / "corner.npy"
+    np.save(path, heights)
+    r = cli("--areal", str(path), "--dx", f"{dx!r}", "--dy", f"{dy!r}", "--mirror", "--model", "boundaryElement",
+            "--Eprime", "2e11", "--loads", "1e-5,1e-4")
+    assert r.status == 0, r.err
+    np.testing.assert_allclose(curve["conductance_per_conductivity"], r.columns()["h_per_k"], rtol=1e-9)
+    with pytest.raises(rc.ParameterError, match="^mirror: "):
+        rc.BoundaryElement(surface, materials, mirror=True, periodic=True)

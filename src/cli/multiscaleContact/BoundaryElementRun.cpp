@@ -60,6 +60,7 @@ int runBoundaryElement(const Options& o)
     const ContactMaterials materials = materialsOf(o);
     BoundaryElementOptions bo;
     bo.periodic = periodic;
+    bo.mirrored = o.mirror;
     if (o.detrend) {
         bo.detrend = parseDetrend(*o.detrend, "--detrend");
     }
@@ -88,7 +89,7 @@ int runBoundaryElement(const Options& o)
     {
         // Before a long run, what to expect (a timed FFT pair times the solves' evaluations).
         const HalfSpaceOperator op(surface.nx(), surface.ny(), surface.dx(), surface.dy(), materials.reducedModulus(),
-                                   periodic);
+                                   edgesOf(periodic, o.mirror));
         const double expected = estimatedCurveSeconds(op, loads.size() + (o.pressureMap.empty() ? 0 : 1));
         if (expected > 3.0) {
             std::cerr << "multiscaleContact: boundaryElement " << surface.nx() << " x " << surface.ny() << ": "
@@ -101,7 +102,7 @@ int runBoundaryElement(const Options& o)
             current = done + 1;
             if (seconds() > 2.0) {
                 std::cerr << "multiscaleContact: boundaryElement " << surface.nx() << " x " << surface.ny()
-                          << (periodic ? " (periodic)" : " (non-periodic)") << ": load " << done << " of " << total
+                          << (o.mirror ? " (mirrored)" : periodic ? " (periodic)" : " (non-periodic)") << ": load " << done << " of " << total
                           << ", F/(A_n E') = " << p.load << ": A_r/A_n = " << p.areaFraction << ", "
                           << p.iterations << " iterations, residual " << p.residual << "; " << seconds()
                           << " s\n";

@@ -87,6 +87,9 @@ int runCheck(const Options& o)
     if (o.periodic) {
         in.periodic = true;
     }
+    if (o.mirror) {
+        in.mirror = true;
+    }
     if (o.detrend) {
         in.detrend = parseDetrend(*o.detrend, "--detrend");
     }

@@ -314,6 +314,9 @@ std::pair<ArealSurface, bool> arealSurfaceOf(const Options& o)
                              "needs an areal surface: --areal FILE, or --synthesize N[,SEED] with a profile or "
                              "spectrum");
     }
+    if (o.mirror) {
+        throw ParameterError("--mirror", "is for --areal maps; a --synthesize'd surface is periodic already");
+    }
     const auto [n, seed] = synthesisOf(o);
     const Spectrum lineScan = surfaceOf(o);
     // A synthesized surface is periodic: it is solved so (the option is for measured maps).

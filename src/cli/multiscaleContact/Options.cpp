@@ -134,6 +134,10 @@ void addOptions(CLI::App& app, Options& o)
     app.add_flag("--periodic", o.periodic,
                  "boundaryElement: solve an --areal map as one period of a periodic surface (default: "
                  "non-periodic, zero-padded)");
+    app.add_flag("--mirror", o.mirror,
+                 "boundaryElement: solve an --areal map mirrored about its edges into one period of a periodic "
+                 "surface twice as long each way (an interface with the map's heights: no edges, no patch "
+                 "constriction to remove; at the cost of a periodic solve of the map's size)");
     app.add_option("--detrend", o.detrend,
                    "boundaryElement: what is removed from the heights before the solve: none, mean or plane "
                    "(default: mean for a periodic solve, which has no trend to remove; plane for a "

@@ -27,6 +27,7 @@ struct Options {
     std::string synthesize; // "N[,SEED]"
     std::string resample;   // "N[,K]"
     bool periodic = false;
+    bool mirror = false;
     std::optional<std::string> detrend; // boundaryElement: none | mean | plane
     std::optional<double> hardness;
     bool hardnessFromYield = false;

@@ -80,6 +80,7 @@ int run(const Options& o)
     for (const auto& [given, what] : {std::pair<bool, const char*>{!o.synthesize.empty(), "--synthesize"},
                                       {!o.resample.empty(), "--resample"},
                                       {o.periodic, "--periodic"},
+                                      {o.mirror, "--mirror"},
                                       {o.detrend.has_value(), "--detrend"},
                                       {o.hardness.has_value() && !hardnessUsed, "--hardness"},
                                       {o.hardnessFromYield && !hardnessUsed, "--hardness-from-yield"},

@@ -55,6 +55,9 @@ int runTable(const Options& o)
     if (o.periodic) {
         spec.periodic = true;
     }
+    if (o.mirror) {
+        spec.mirror = true;
+    }
     if (o.detrend) {
         spec.detrend = parseDetrend(*o.detrend, "--detrend");
     }

@@ -712,6 +712,105 @@ TEST(BoundaryElementModel, APatchsConductanceLessItsOwnConstrictionIsTheInterfac
     }
 }
 
+// The heights of an nx x ny map mirrored about its edges: 2nx x 2ny, h(2nx-1-i) = h(i).
+std::vector<double> mirroredGrid(const std::vector<double>& h, std::size_t nx, std::size_t ny)
+{
+    std::vector<double> m(4 * nx * ny);
+    for (std::size_t y = 0; y < 2 * ny; ++y) {
+        for (std::size_t x = 0; x < 2 * nx; ++x) {
+            m[y * 2 * nx + x] = h[(y < ny ? y : 2 * ny - 1 - y) * nx + (x < nx ? x : 2 * nx - 1 - x)];
+        }
+    }
+    return m;
+}
+
+TEST(HalfSpaceOperator, MirroredIsThePeriodicOperatorOnTheMirroredGrid)
+{
+    // The mirrored operator (cosine transforms of nx x ny) against the periodic one on the
+    // 2nx x 2ny grid of the field mirrored about its edges: the same displacements and
+    // stiffness on the map's quadrant, the same bounds. Odd and even sizes, dx != dy.
+    // Tolerance: 1e-12 of max |u| (both are exact up to the transforms' round-off).
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> value(0.0, 1.0);
+    for (const auto& [nx, ny] : std::vector<std::pair<std::size_t, std::size_t>>{{7, 5}, {16, 9}, {12, 12}}) {
+        const double dx = 1e-6;
+        const double dy = 1.3e-6;
+        const HalfSpaceOperator mirrored(nx, ny, dx, dy, Ep, HalfSpaceOperator::Edges::mirrored);
+        const HalfSpaceOperator periodic(2 * nx, 2 * ny, dx, dy, Ep, HalfSpaceOperator::Edges::periodic);
+        EXPECT_TRUE(mirrored.periodic());
+        EXPECT_TRUE(mirrored.mirrored());
+        EXPECT_FALSE(periodic.mirrored());
+        EXPECT_DOUBLE_EQ(mirrored.smallestStiffness(), periodic.smallestStiffness());
+        EXPECT_NEAR(mirrored.largestEigenvalue(), periodic.largestEigenvalue(), 1e-12 * periodic.largestEigenvalue());
+        std::vector<double> p(nx * ny);
+        for (double& v : p) {
+            v = value(rng);
+        }
+        const std::vector<double> big = mirroredGrid(p, nx, ny);
+        for (bool stiffness : {false, true}) {
+            std::vector<double> u(nx * ny);
+            std::vector<double> U(big.size());
+            if (stiffness) {
+                mirrored.applyStiffness(p.data(), u.data());
+                periodic.applyStiffness(big.data(), U.data());
+            } else {
+                mirrored.apply(p.data(), u.data());
+                periodic.apply(big.data(), U.data());
+            }
+            double scale = 0.0;
+            for (double v : U) {
+                scale = std::max(scale, std::abs(v));
+            }
+            for (std::size_t y = 0; y < ny; ++y) {
+                for (std::size_t x = 0; x < nx; ++x) {
+                    ASSERT_NEAR(u[y * nx + x], U[y * 2 * nx + x], 1e-12 * scale)
+                        << nx << " x " << ny << (stiffness ? " stiffness" : " compliance") << " at " << x << ", " << y;
+                }
+            }
+        }
+    }
+}
+
+TEST(BoundaryElementModel, AMirroredMapIsThePeriodicSurfaceOfItsMirrorImages)
+{
+    // A map (not periodic: a random surface's corner) solved mirrored against the same map
+    // mirrored by hand and solved periodic, 4 times the points: the same area (the solution of
+    // the mirrored grid is even about the edges) and conductance, no patch correction. The
+    // solves stop at their tolerances: areas equal to a cell in a thousand, h_c to 1e-6.
+    const std::size_t n = 128;
+    const std::size_t nx = 48;
+    const std::size_t ny = 40;
+    const double dx = 1e-4 / double(n);
+    const std::vector<double> full = randomSurface(n, 23, 1e-7);
+    std::vector<double> h(nx * ny);
+    for (std::size_t y = 0; y < ny; ++y) {
+        for (std::size_t x = 0; x < nx; ++x) {
+            h[y * nx + x] = full[y * n + x] + 2e-9 * double(x); // and a tilt, which both remove
+        }
+    }
+    BoundaryElementOptions mo;
+    mo.mirrored = true;
+    const BoundaryElementModel mirrored(ArealSurface(h, nx, ny, dx, dx, "corner"), Ep, mo);
+    EXPECT_TRUE(std::isinf(mirrored.patchConductancePerConductivity()));
+    const ArealSurface flat = ArealSurface(h, nx, ny, dx, dx, "corner").detrended(Detrend::plane);
+    BoundaryElementOptions po;
+    po.periodic = true;
+    po.detrend = Detrend::none;
+    const BoundaryElementModel periodic(
+        ArealSurface(mirroredGrid(flat.heights(), nx, ny), 2 * nx, 2 * ny, dx, dx, "mirrored by hand"), Ep, po);
+    for (double load : {3e-4, 2e-3}) {
+        const BoundaryElementPoint a = mirrored.solve(load);
+        const BoundaryElementPoint b = periodic.solve(load);
+        EXPECT_NEAR(a.areaFraction, b.areaFraction, 1e-3 * b.areaFraction) << load;
+        EXPECT_NEAR(a.conductancePerConductivity, b.conductancePerConductivity, 1e-6 * b.conductancePerConductivity)
+            << load;
+        EXPECT_DOUBLE_EQ(a.spotsConductancePerConductivity, a.conductancePerConductivity);
+    }
+    BoundaryElementOptions both = mo;
+    both.periodic = true;
+    EXPECT_THROW(BoundaryElementModel(ArealSurface(h, nx, ny, dx, dx, "corner"), Ep, both), ParameterError);
+}
+
 TEST(BoundaryElementModel, CompleteContactAndHardnessLimits)
 {
     // A sinusoidal ridge beyond Westergaard's p*: complete contact, h_c infinite. With a

@@ -186,8 +186,17 @@ TEST(BoundaryElementTable, EveryInputChangesTheKey)
         s.surfaces[0].arealOptions.dx = a.dx();
         s.surfaces[0].arealOptions.dy = a.dy();
         const std::string nonPeriodic = BoundaryElementTable(s).key();
+        // mirror: the same map mirrored about its edges (its own key, and not with periodic).
+        InterfaceSpec m = s;
+        m.mirror = true;
+        EXPECT_NE(BoundaryElementTable(m).key(), nonPeriodic) << "mirror";
+        EXPECT_TRUE(BoundaryElementTable(m).mirrored());
+        EXPECT_NE(BoundaryElementTable(m).inputs().find("mirrored"), std::string::npos);
         s.periodic = true;
         EXPECT_NE(BoundaryElementTable(s).key(), nonPeriodic) << "periodic";
+        EXPECT_NE(BoundaryElementTable(s).key(), BoundaryElementTable(m).key()) << "periodic, mirror";
+        m.periodic = true;
+        EXPECT_THROW(BoundaryElementTable{m}, ParameterError);
         EXPECT_FALSE(BoundaryElementTable(s).periodic() == BoundaryElementTable(base).periodic() &&
                      BoundaryElementTable(s).key() == key);
         std::remove(file.c_str());

@@ -313,6 +313,20 @@ TEST(InterfaceSpecReader, TableRanksAreAWholeNumberFrom1ForTheBoundaryElementMod
               std::string::npos);
 }
 
+TEST(InterfaceSpecReader, MirrorIsAFlag)
+{
+    // mirror (a map mirrored about its edges): a flag, unset by default, not a number.
+    SpecValues c = contact();
+    c.set("model", std::string("boundaryElement"));
+    EXPECT_FALSE(readInterfaceSpec(c).mirror.has_value());
+    c.set("mirror", true);
+    EXPECT_TRUE(*readInterfaceSpec(c).mirror);
+    c.set("mirror", false);
+    EXPECT_FALSE(*readInterfaceSpec(c).mirror);
+    c.set("mirror", 1.5);
+    messageOf([&] { readInterfaceSpec(c); }, "--mirror");
+}
+
 TEST(InterfaceSpecReader, SeedBelongsToSynthesize)
 {
     SpecValues c = contact();

@@ -122,24 +122,27 @@ TEST(Threads, SumsAreTheSameForAnyNumberOfThreads)
 TEST(Threads, SolvesAreTheSameForAnyNumberOfThreads)
 {
     // A periodic elastic solve (160 x 150: the loops and FFTs above minimumParallelSize), a
-    // non-periodic one (96 x 90, padded to 192 x 180) and a capped one, with their spot
+    // non-periodic one (96 x 90, padded to 192 x 180), a mirrored one (97 x 90: the cosine
+    // transforms' 12 column blocks and a remainder of 1) and a capped one, with their spot
     // conductances: the pressures, separations, iterations and h_c/k_s of 2 and 3 threads are
     // those of 1, bit for bit (the blocked transforms give each row and column its own 1-D
     // transform, the same whichever thread does it: 76 and 97 columns, a block of 8 and a
     // remainder; the sums are by blocks in order).
     struct Case {
         std::size_t nx, ny;
-        bool periodic;
+        HalfSpaceOperator::Edges edges;
         bool capped;
     };
+    using Edges = HalfSpaceOperator::Edges;
     const double Ep = 1e11;
-    for (const Case c : {Case{160, 150, true, false}, Case{96, 90, false, false}, Case{160, 150, true, true}}) {
+    for (const Case c : {Case{160, 150, Edges::periodic, false}, Case{96, 90, Edges::padded, false},
+                         Case{97, 90, Edges::mirrored, false}, Case{160, 150, Edges::periodic, true}}) {
         const std::vector<double> h = waves(c.nx, c.ny, 3, 1e-7);
         std::vector<ContactSolution> solutions;
         std::vector<double> conductances;
         for (int t : {1, 2, 3}) {
             const ThreadsFor scope(t);
-            const HalfSpaceOperator K(c.nx, c.ny, 1e-6, 1e-6, Ep, c.periodic);
+            const HalfSpaceOperator K(c.nx, c.ny, 1e-6, 1e-6, Ep, c.edges);
             PolonskyKeerOptions options;
             if (c.capped) {
                 options.hardness = 3e8;
@@ -161,8 +164,8 @@ TEST(Threads, SolvesAreTheSameForAnyNumberOfThreads)
             EXPECT_GT(one.plasticFraction, 0.0);
         }
         for (std::size_t k = 1; k < solutions.size(); ++k) {
-            EXPECT_TRUE(sameBits(solutions[k].pressure, one.pressure)) << c.nx << " periodic " << c.periodic;
-            EXPECT_TRUE(sameBits(solutions[k].gap, one.gap)) << c.nx << " periodic " << c.periodic;
+            EXPECT_TRUE(sameBits(solutions[k].pressure, one.pressure)) << c.nx << " edges " << int(c.edges);
+            EXPECT_TRUE(sameBits(solutions[k].gap, one.gap)) << c.nx << " edges " << int(c.edges);
             EXPECT_EQ(solutions[k].iterations, one.iterations);
             EXPECT_EQ(std::memcmp(&conductances[k], &conductances[0], sizeof(double)), 0);
         }

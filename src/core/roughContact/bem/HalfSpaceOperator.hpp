@@ -39,8 +39,21 @@ const std::string& fftWisdom() noexcept;
 ///    F(x, y) = x asinh(y/|x|) + y asinh(x/|y|), a = dx/2, b = dy/2 (the integral of 1/r over
 ///    the rectangle). The sum over cells is a discrete convolution, evaluated without
 ///    wrap-around on a grid padded to 2nx x 2ny (Liu, Wang & Liu, Wear 243 (2000) 101, DC-FFT).
+///  - mirrored: the grid mirrored about its edges, 2nx x 2ny, is one period of a periodic
+///    surface (an interface with a measured map's heights and neither edges nor a patch of its
+///    own). A field even about the edges (p(-1-i) = p(i), p(2n-1-i) = p(i)) has a real Fourier
+///    series of cosines: the periodic multiplier above on the 2nx x 2ny grid acts on it as
+///    u = DCT-III(K(q) DCT-II(p)) / (4 nx ny), q = pi sqrt((kx/(nx dx))^2 + (ky/(ny dy))^2)
+///    (FFTW's REDFT10 and REDFT01; Strang, SIAM Rev. 41 (1999) 135, the DCT-II's even
+///    extension). The same answer as the periodic operator on the mirrored grid, with
+///    transforms of nx x ny points, not 4 nx ny (blocked as the periodic ones; a cosine
+///    transform costs FFTW 2-3 real ones: a pair is about a padded one's, docs/benchmarks.md).
 class HalfSpaceOperator {
 public:
+    /// The grid's edges: a patch zero-padded, one period, or mirrored (above).
+    enum class Edges { padded, periodic, mirrored };
+    HalfSpaceOperator(std::size_t nx, std::size_t ny, double dx, double dy, double Eprime, Edges edges);
+    /// periodic ? Edges::periodic : Edges::padded.
     HalfSpaceOperator(std::size_t nx, std::size_t ny, double dx, double dy, double Eprime, bool periodic);
     ~HalfSpaceOperator();
     HalfSpaceOperator(const HalfSpaceOperator&) = delete;
@@ -68,7 +81,9 @@ public:
     double dx() const noexcept { return dx_; }
     double dy() const noexcept { return dy_; }
     double reducedModulus() const noexcept { return Eprime_; }
-    bool periodic() const noexcept { return periodic_; }
+    /// Periodic or mirrored: an interface without edges (mirrored() says which).
+    bool periodic() const noexcept { return edges_ != Edges::padded; }
+    bool mirrored() const noexcept { return edges_ == Edges::mirrored; }
     /// The largest eigenvalue of K [m/Pa] (the largest magnitude of its Fourier multiplier),
     /// the step bound of gradient methods.
     double largestEigenvalue() const noexcept { return largest_; }
@@ -80,7 +95,9 @@ public:
 
 private:
     struct Fft;
+    struct Dct;
     void makeStiffness();
+    void makeMirrored();
     void convolve(const std::vector<double>& multiplier, const double* in, double* out) const;
     mutable std::size_t pairs_ = 0; // convolve() calls (an operator is used by one solve at a time)
     std::size_t nx_;
@@ -88,13 +105,14 @@ private:
     double dx_;
     double dy_;
     double Eprime_;
-    bool periodic_;
-    std::size_t mx_; ///< FFT grid: nx (periodic) or 2 nx
+    Edges edges_;
+    std::size_t mx_; ///< FFT grid: nx (periodic, mirrored) or 2 nx (padded)
     std::size_t my_;
-    std::vector<double> kernel_; ///< the real, symmetric kernel's transform, my x (mx/2 + 1)
+    std::vector<double> kernel_; ///< the real, symmetric kernel's transform, my x (mx/2 + 1); mirrored: ny x nx
     std::vector<double> stiffness_; ///< S's multiplier, the same layout
     double smallestStiffness_ = 0.0;
-    std::unique_ptr<Fft> fft_;
+    std::unique_ptr<Fft> fft_; ///< padded, periodic
+    std::unique_ptr<Dct> dct_; ///< mirrored
     double largest_ = 0.0;
 };
 

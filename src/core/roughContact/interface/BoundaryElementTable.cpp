@@ -177,6 +177,13 @@ BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
     // A synthesized surface is periodic (solvedSurface refuses 'periodic false' with it).
     : periodic_(spec.synthesize ? true : spec.periodic.value_or(false)), surface_(solvedSurface(spec))
 {
+    mirrored_ = spec.mirror.value_or(false);
+    if (mirrored_ && spec.synthesize) {
+        throw ParameterError("mirror", "is for areal maps; a synthesized surface is periodic already");
+    }
+    if (mirrored_ && spec.periodic && *spec.periodic) {
+        throw ParameterError("mirror", "a mirrored map is its own periodic surface: give periodic or mirror, not both");
+    }
     if (spec.model != "boundaryElement") {
         throw ParameterError("model", "a boundary-element table is for model boundaryElement, not '" +
                                           spec.model + "'");
@@ -229,7 +236,7 @@ BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
     for (double z : solved.heights()) {
         k.f64(z);
     }
-    k.u64(periodic_ ? 1 : 0);
+    k.u64(mirrored_ ? 2 : periodic_ ? 1 : 0);
     k.f64(Eprime_);
     k.u64(hardness_ ? 1 : 0);
     k.f64(hardness_.value_or(0.0));
@@ -245,7 +252,7 @@ BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
     std::ostringstream os;
     os.precision(6);
     os << "surface " << surface_.source() << ", " << solved.nx() << " x " << solved.ny() << " points at "
-       << solved.dx() << " x " << solved.dy() << " m, " << (periodic_ ? "periodic" : "non-periodic")
+       << solved.dx() << " x " << solved.dy() << " m, " << (mirrored_ ? "mirrored about its edges" : periodic_ ? "periodic" : "non-periodic")
        << ", detrended " << detrendName(detrend_) << ", rms height " << solved.rms() << " m; E' = " << Eprime_ << " Pa; hardness ";
     if (hardness_) {
         os << *hardness_ << " Pa";
@@ -259,7 +266,8 @@ BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
 
 double BoundaryElementTable::estimatedSeconds() const
 {
-    const HalfSpaceOperator op(surface_.nx(), surface_.ny(), surface_.dx(), surface_.dy(), Eprime_, periodic_);
+    const HalfSpaceOperator op(surface_.nx(), surface_.ny(), surface_.dx(), surface_.dy(), Eprime_,
+                               edgesOf(periodic_, mirrored_));
     return estimatedCurveSeconds(op, pressures_.size());
 }
 
@@ -289,6 +297,7 @@ std::vector<BoundaryElementPoint> BoundaryElementTable::solveLoads(const std::ve
     bo.progress = solveProgress;
     bo.detrend = detrend_;
     bo.periodic = periodic_;
+    bo.mirrored = mirrored_;
     bo.hardness = hardness_;
     bo.tolerance = tolerance_;
     bo.precondition = precondition_;
@@ -639,7 +648,7 @@ constexpr double rebuild = 2.0;
 
 double BoundaryElementTable::bytesPerRank() const
 {
-    return boundaryElementBytes(surface_.nx(), surface_.ny(), periodic_, hardness_.has_value());
+    return boundaryElementBytes(surface_.nx(), surface_.ny(), periodic_ || mirrored_, hardness_.has_value());
 }
 
 std::size_t BoundaryElementTable::sharingRanks(std::size_t ranks) const

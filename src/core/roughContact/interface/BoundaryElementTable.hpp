@@ -117,6 +117,8 @@ public:
     /// What the solve removes from it (the spec's detrend, or defaultDetrend(periodic())).
     Detrend detrend() const noexcept { return detrend_; }
     bool periodic() const noexcept { return periodic_; }
+    /// A map solved mirrored about its edges (InterfaceSpec::mirror; BoundaryElementOptions).
+    bool mirrored() const noexcept { return mirrored_; }
     /// The cap p <= H [Pa] of the solve (none: elastic).
     std::optional<double> hardness() const noexcept { return hardness_; }
 
@@ -195,6 +197,7 @@ private:
                                         const std::vector<double>& separations) const;
 
     bool periodic_; // before surface_: both are set from the spec in this order
+    bool mirrored_ = false;
     ArealSurface surface_;
     Detrend detrend_ = Detrend::plane;
     double Eprime_ = 0.0;

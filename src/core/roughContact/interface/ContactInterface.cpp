@@ -128,10 +128,12 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
         table_ = std::make_unique<ContactTable>(points.table(bem.reducedModulus()));
         std::ostringstream os;
         os << bem.surface().nx() << " x " << bem.surface().ny() << " "
-           << (bem.periodic() ? "periodic" : "non-periodic") << " " << bem.surface().source();
+           << (bem.mirrored() ? "mirrored" : bem.periodic() ? "periodic" : "non-periodic") << " "
+           << bem.surface().source();
         bemSurface_ = os.str();
         surfaceChecksum_ =
-            checksumHex(roughContact::surfaceChecksum(surface_, bem.surface().detrended(bem.detrend()), bem.periodic()));
+            checksumHex(roughContact::surfaceChecksum(surface_, bem.surface().detrended(bem.detrend()), bem.periodic(),
+                                                        bem.mirrored()));
         // The regime of what is solved: a synthesized surface holds the levels up to its grid's
         // Nyquist frequency (ArealSynthesis.hpp), a map its own.
         const Spectrum solvedSpectrum =
@@ -145,6 +147,7 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
     }
     for (const auto& [given, what] : {std::pair<bool, const char*>{spec.synthesize.has_value(), "synthesize"},
                                       {spec.periodic.has_value(), "periodic"},
+                                      {spec.mirror.has_value(), "mirror"},
                                       {spec.detrend.has_value(), "detrend"},
                                       {spec.hardness.has_value(), "hardness"},
                                       {spec.hardnessFromYield, "hardnessFromYield"},

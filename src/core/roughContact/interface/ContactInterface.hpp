@@ -88,6 +88,10 @@ struct InterfaceSpec {
     /// Solve an areal map as one period of a periodic surface; unset: false for a map, true
     /// for a synthesized surface (which cannot be solved non-periodic).
     std::optional<bool> periodic;
+    /// Solve an areal map mirrored about its edges into one period of a periodic surface
+    /// (BoundaryElementOptions::mirrored: an interface with neither edges nor the patch's own
+    /// constriction, which near complete contact is ill-conditioned); unset: false.
+    std::optional<bool> mirror;
     /// What is removed from the solved heights; unset: defaultDetrend(periodic) (the mean of a
     /// periodic surface, the plane of a measured map: ArealSurface.hpp).
     std::optional<Detrend> detrend;

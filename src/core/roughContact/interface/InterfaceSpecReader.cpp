@@ -164,7 +164,7 @@ const std::vector<std::string>& interfaceEntries()
     static const std::vector<std::string> names{
         "model",     "surface",        "surfaces",  "side1",    "side2",   "conductance",     "microhardness",
         "vickers",   "minPressure",    "maxPressure", "pointsPerDecade", "synthesize", "seed", "periodic",
-        "detrend",   "hardness",       "hardnessFromYield", "gap", "check", "threads",
+        "mirror",    "detrend",   "hardness",       "hardnessFromYield", "gap", "check", "threads",
         "tableRanks"};
     return names;
 }
@@ -420,6 +420,9 @@ void readInterfaceSettings(const SpecSource& source, InterfaceSpec& spec)
     }
     if (source.has("periodic")) {
         spec.periodic = source.flag("periodic");
+    }
+    if (source.has("mirror")) {
+        spec.mirror = source.flag("mirror");
     }
     if (source.has("detrend")) {
         spec.detrend = named(source, "detrend", [&] { return parseDetrend(source.word("detrend"), "detrend"); });

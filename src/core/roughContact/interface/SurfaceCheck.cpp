@@ -174,6 +174,7 @@ SurfaceCheckInputs checkInputsOf(const InterfaceSpec& spec)
         in.hardness = in.materials->hardness("check hardnessFromYield");
     }
     in.periodic = spec.periodic;
+    in.mirror = spec.mirror;
     in.detrend = spec.detrend;
     // The table's range (ContactInterface.hpp, BoundaryElementTable.hpp defaults).
     const double Ep = in.materials->reducedModulus();
@@ -223,6 +224,7 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     std::vector<ArealSurface> solved;
     std::optional<Spectrum> lawSpectrum;
     bool periodic = true;
+    bool mirrored = false;
     std::optional<Detrend> detrend = spec.detrend;
     if (areal) {
         for (const SurfaceSpec& s : spec.surfaces) {
@@ -232,12 +234,17 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
         }
         solved.push_back(arealComposite(spec.surfaces)); // as the boundaryElement model reads it
         periodic = spec.periodic.value_or(false);
+        mirrored = spec.mirror.value_or(false);
         lawSpectrum = given;
         std::ostringstream os;
         os << "the map " << solved[0].source() << " (" << solved[0].nx() << " x " << solved[0].ny()
-           << (periodic ? ", periodic)" : ", non-periodic)");
+           << (mirrored ? ", mirrored)" : periodic ? ", periodic)" : ", non-periodic)");
         out.surface = os.str();
     } else {
+        if (spec.mirror.value_or(false)) {
+            throw ParameterError("mirror", "is for areal maps; a surface synthesized from a 1-D description is "
+                                           "periodic already");
+        }
         const std::size_t n = options.gridSize;
         limits::requireSynthesisSize("check grid", n);
         // The shortest wavelength 8 cells (SurfaceCheck.hpp); the lowest level always stays.
@@ -341,6 +348,7 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     }
     BoundaryElementOptions bo;
     bo.periodic = periodic;
+    bo.mirrored = mirrored;
     bo.hardness = out.hardness;
     bo.detrend = detrend;
     const std::size_t count = out.pressures.size();

@@ -114,6 +114,7 @@ struct SurfaceCheckInputs {
     std::optional<VickersCoefficients> vickers;
     std::optional<double> hardness;              ///< the cap; unset: 2.84 S_y where given
     std::optional<bool> periodic;                ///< a map's solve (InterfaceSpec::periodic)
+    std::optional<bool> mirror;                  ///< a map's solve (InterfaceSpec::mirror)
     std::optional<Detrend> detrend;
     double minPressure = 0.0;                    ///< [Pa]; the range the pressures are taken from
     double maxPressure = 0.0;

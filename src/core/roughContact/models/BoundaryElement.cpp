@@ -17,6 +17,10 @@ BoundaryElementModel::BoundaryElementModel(const ArealSurface& surface, double E
                                            BoundaryElementOptions options)
     : surface_(surface.detrended(options.detrend.value_or(defaultDetrend(options.periodic)))), Eprime_(requirePositive("reduced modulus E'", Eprime)), options_(options)
 {
+    if (options_.periodic && options_.mirrored) {
+        throw ParameterError("mirror", "a mirrored map is its own periodic surface: give periodic or mirror, not both");
+    }
+    const bool interface = options_.periodic || options_.mirrored; // no patch of its own
     // The roughness floor of every model (Limits.hpp): a smaller rms is a unit mistake or a
     // constant map (a mask with one valid point, filled), which the solver cannot resolve.
     double mean = 0.0;
@@ -41,18 +45,18 @@ BoundaryElementModel::BoundaryElementModel(const ArealSurface& surface, double E
         throw ParameterError("surface " + surface_.source(), os.str());
     }
     const double bytes =
-        boundaryElementBytes(surface_.nx(), surface_.ny(), options_.periodic, options_.hardness.has_value());
+        boundaryElementBytes(surface_.nx(), surface_.ny(), interface, options_.hardness.has_value());
     if (bytes > options_.memoryLimit) {
         std::ostringstream os;
         os.precision(3);
         os << surface_.nx() << " x " << surface_.ny() << " points"
-           << (options_.periodic ? "" : " (padded to twice each way)") << " would need about " << bytes / 1e9
+           << (interface ? "" : " (padded to twice each way)") << " would need about " << bytes / 1e9
            << " GB, more than the limit of " << options_.memoryLimit / 1e9
            << " GB; resample the map coarser or cut a part of it";
         throw ParameterError("boundary-element grid", os.str());
     }
     op_ = std::make_unique<HalfSpaceOperator>(surface_.nx(), surface_.ny(), surface_.dx(), surface_.dy(),
-                                              Eprime_, options_.periodic);
+                                              Eprime_, edgesOf(options_.periodic, options_.mirrored));
     PolonskyKeerOptions po;
     po.tolerance = options_.tolerance;
     po.maxIterations = options_.maxIterations;
@@ -62,7 +66,7 @@ BoundaryElementModel::BoundaryElementModel(const ArealSurface& surface, double E
     po.progressEvery = options_.progressEvery;
     solver_ = std::make_unique<PolonskyKeer>(*op_, surface_.heights(), po);
     patchConductance_ = std::numeric_limits<double>::infinity();
-    if (!options_.periodic) {
+    if (!interface) {
         SolveProgressCallback patchProgress;
         if (options_.progress) {
             patchProgress = [this](const SolveProgress& s) {

@@ -28,6 +28,12 @@ struct BoundaryElementOptions {
     /// otherwise (measured maps) without wrap-around: zero-padded, the surface a patch of an
     /// unbounded half-space loaded only on the patch.
     bool periodic = false;
+    /// Solve a measured map mirrored about its edges into one period (2nx x 2ny) of a periodic
+    /// surface (HalfSpaceOperator::Edges::mirrored): an interface with the map's heights,
+    /// neither edges nor a patch of its own, so no patch constriction to remove (which near
+    /// complete contact is a difference of two nearly equal resistances:
+    /// docs/validation/boundaryElement.md). Not with periodic. Detrended like a map (plane).
+    bool mirrored = false;
     /// Perfectly plastic cap p <= H [Pa]; none when unset.
     std::optional<double> hardness;
     /// What is removed from the heights before the solve; unset: defaultDetrend(periodic), the
@@ -44,6 +50,13 @@ struct BoundaryElementOptions {
     SolveProgressCallback progress;
     double progressEvery = progressInterval;
 };
+
+/// The operator's edges of a solve: mirrored, periodic or padded (a patch).
+inline HalfSpaceOperator::Edges edgesOf(bool periodic, bool mirrored)
+{
+    return mirrored ? HalfSpaceOperator::Edges::mirrored
+                    : (periodic ? HalfSpaceOperator::Edges::periodic : HalfSpaceOperator::Edges::padded);
+}
 
 /// One load point of a boundary-element curve.
 struct BoundaryElementPoint {

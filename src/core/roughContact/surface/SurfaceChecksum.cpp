@@ -42,7 +42,7 @@ std::uint64_t surfaceChecksum(const Spectrum& surface)
     return addDouble(hash, surface.length());
 }
 
-std::uint64_t surfaceChecksum(const Spectrum& lineScan, const ArealSurface& solved, bool periodic)
+std::uint64_t surfaceChecksum(const Spectrum& lineScan, const ArealSurface& solved, bool periodic, bool mirrored)
 {
     std::uint64_t hash = surfaceChecksum(lineScan);
     hash = addDouble(hash, double(solved.nx()));
@@ -52,7 +52,7 @@ std::uint64_t surfaceChecksum(const Spectrum& lineScan, const ArealSurface& solv
     for (double z : solved.heights()) {
         hash = addDouble(hash, z);
     }
-    return addDouble(hash, periodic ? 1.0 : 0.0);
+    return addDouble(hash, mirrored ? 2.0 : periodic ? 1.0 : 0.0);
 }
 
 std::string checksumHex(std::uint64_t value)

@@ -20,9 +20,10 @@ std::uint64_t surfaceChecksum(const Spectrum& surface);
 
 /// What a boundary-element interface solves: surfaceChecksum(lineScan) continued over the grid
 /// (nx, ny, as binary64), the spacings dx, dy, every height of the solved areal surface, row by
-/// row, and whether it is solved periodic (1.0 or 0.0). A synthesized surface's seed or grid
+/// row, and how it is solved: periodic 1.0, mirrored 2.0, else 0.0. A synthesized surface's seed or grid
 /// size changes its heights, so it changes this (the spectrum alone does not: issue 18).
-std::uint64_t surfaceChecksum(const Spectrum& lineScan, const ArealSurface& solved, bool periodic);
+std::uint64_t surfaceChecksum(const Spectrum& lineScan, const ArealSurface& solved, bool periodic,
+                              bool mirrored = false);
 
 /// value as 16 lower-case hexadecimal digits (leading zeros kept).
 std::string checksumHex(std::uint64_t value);

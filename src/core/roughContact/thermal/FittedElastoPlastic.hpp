@@ -27,8 +27,8 @@
 // elastic points, then the plastic branch and N on the capped ones, on four surfaces (three
 // synthesized, the Dektak profile's spectrum); never on the X3P map nor on a second hold-out
 // (Hurst 0.6, roll-off at L/2, h' = 0.2). Measured: 0.80-1.25 elastic and 0.71-1.41 capped on
-// the training points (86 % within 25 %), 0.77-1.28 on the second hold-out, 0.55-1.08 on the
-// X3P map (46 %; solved mirrored; its light loads are not converged). Not for x above 0.1,
+// the training points (86 % within 25 %), 0.77-1.28 on the second hold-out, 0.51-1.23 on the
+// X3P map (79 %; solved mirrored about its edges; 0.51 elastic at x = 0.02). Not for x above 0.1,
 // where it extrapolates.
 #pragma once
 
