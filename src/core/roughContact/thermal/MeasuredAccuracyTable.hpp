@@ -73,12 +73,12 @@ inline constexpr AccuracyRow accuracyRows[] = {
     {"jacksonBhavnaniFerguson", "truncation", true, 1e-04, 0.001, 0.208, 0.856, 4, "fidelity report"},
     {"jacksonBhavnaniFerguson", "truncation", true, 1e-03, 0.01, 0.272, 1.46, 4, "fidelity report"},
     {"jacksonBhavnaniFerguson", "truncation", true, 1e-02, 0.1, 0.33, 1.81, 4, "fidelity report"},
-    {"jacksonBhavnaniFerguson", "truncation", true, 1e-01, 1, 0.742, 1.43, 2, "fidelity report"},
+    {"jacksonBhavnaniFerguson", "truncation", true, 1e-01, 1, 0.91, 1.6, 2, "fidelity report"},
     {"multiscaleBarber", "truncation", true, 1e-05, 0.0001, 0.195, 0.236, 2, "fidelity report"},
-    {"multiscaleBarber", "truncation", true, 1e-04, 0.001, 0.0814, 0.423, 4, "fidelity report"},
+    {"multiscaleBarber", "truncation", true, 1e-04, 0.001, 0.0814, 0.439, 4, "fidelity report"},
     {"multiscaleBarber", "truncation", true, 1e-03, 0.01, 0.316, 1.36, 4, "fidelity report"},
     {"multiscaleBarber", "truncation", true, 1e-02, 0.1, 0.0191, 2.65, 4, "fidelity report"},
-    {"multiscaleBarber", "truncation", true, 1e-01, 1, 0.03, 1.61, 2, "fidelity report"},
+    {"multiscaleBarber", "truncation", true, 1e-01, 1, 0.0649, 1.61, 2, "fidelity report"},
 };
 
 } // namespace roughContact::measured
