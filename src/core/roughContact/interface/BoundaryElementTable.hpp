@@ -41,9 +41,9 @@ struct BoundaryElementTablePoints {
     std::vector<double> conductancesPerConductivity; ///< h_c/k_s [1/m]
     /// The mean separation Y [m] (BoundaryElementPoint::meanSeparation): the gap per cell
     /// (0 in contact) averaged over the grid, the heights detrended (their least-squares plane
-    /// removed, so Y is measured from the mean plane of the solved map). Periodic: relative to
-    /// the mean displacement, the mean-plane separation of an interface of which the grid is one
-    /// period. Non-periodic (a measured map): the local gaps of the patch loaded on an unbounded
+    /// removed, so Y is measured from the mean plane of the solved map). Periodic (and mirrored:
+    /// the map mirrored about its edges is the period): relative to the mean displacement, the
+    /// mean-plane separation of an interface of which the grid is one period. Non-periodic (a measured map): the local gaps of the patch loaded on an unbounded
     /// half-space, so the patch's own bowl-shaped deflection (less at its edges) is averaged in,
     /// as its constriction is in the spots' conductance (BoundaryElement.hpp); no correction is
     /// applied to Y. Measured on a 128 x 128 synthesized power law solved both ways: the same Y
