@@ -79,6 +79,7 @@ void planFor(int n)
     static const bool ready = fftw_init_threads() != 0;
     fftw_plan_with_nthreads(ready ? n : 1);
 #else
+    (void)n;
 #endif
 }
 } // namespace
@@ -372,6 +373,10 @@ struct HalfSpaceOperator::Dct {
     Dct& operator=(const Dct&) = delete;
     // out = DCT-III(multiplier DCT-II(in)) (unnormalised: the multiplier carries 1/(4 nx ny)).
     void convolve(const double* multiplier, const double* in, double* out) const;
+    // Every row of `from` transformed by `plan` in the grid buffer and put in `to` (either may
+    // be the grid), in pieces of rows on threads() threads (weighted by their length, as the
+    // periodic rows are).
+    void rows(fftw_plan plan, const double* from, double* to) const;
 
 private:
     void release()
@@ -417,17 +422,42 @@ HalfSpaceOperator::Dct::Dct(std::size_t nx_, std::size_t ny_) : nx(nx_), ny(ny_)
                 *p = nullptr;
             }
         }
-        throw std::runtime_error("FFTW could not plan the mirrored grid's cosine transforms");
+        throw ParameterError("FFT", "FFTW could not plan the cosine transforms of a mirrored " + std::to_string(nx) +
+                                        " x " + std::to_string(ny) + " grid");
     }
+}
+
+void HalfSpaceOperator::Dct::rows(fftw_plan plan, const double* from, double* to) const
+{
+    struct Context {
+        const Dct& dct;
+        fftw_plan plan;
+        const double* from;
+        double* to;
+    } context{*this, plan, from, to};
+    parallel::forRange(
+        ny, nx,
+        [](std::size_t begin, std::size_t end, void* c) {
+            const Context& x = *static_cast<const Context*>(c);
+            const std::size_t n = x.dct.nx;
+            double* g = x.dct.grid.get();
+            for (std::size_t y = begin; y < end; ++y) {
+                if (x.from != g) {
+                    std::copy(x.from + y * n, x.from + (y + 1) * n, g + y * n);
+                }
+                fftw_execute_r2r(x.plan, g + y * n, g + y * n);
+                if (x.to != g) {
+                    std::copy(g + y * n, g + (y + 1) * n, x.to + y * n);
+                }
+            }
+        },
+        &context);
 }
 
 void HalfSpaceOperator::Dct::convolve(const double* multiplier, const double* in, double* out) const
 {
     double* g = grid.get();
-    parallel::forEach(ny, [&](std::size_t y) {
-        std::copy(in + y * nx, in + (y + 1) * nx, g + y * nx);
-        fftw_execute_r2r(rowForward, g + y * nx, g + y * nx);
-    });
+    rows(rowForward, in, g);
     const std::size_t blocks = (nx + columnBlock - 1) / columnBlock;
     inPieces<double>(blocks, columnBlock * ny, columnBuffers, columnBlock * ny,
                      [&](std::size_t first, std::size_t last, double* buffer) {
@@ -454,10 +484,7 @@ void HalfSpaceOperator::Dct::convolve(const double* multiplier, const double* in
             }
         }
     });
-    parallel::forEach(ny, [&](std::size_t y) {
-        fftw_execute_r2r(rowBackward, g + y * nx, g + y * nx);
-        std::copy(g + y * nx, g + (y + 1) * nx, out + y * nx);
-    });
+    rows(rowBackward, g, out);
 }
 
 
