@@ -352,7 +352,7 @@ double HalfSpaceOperator::bytesFor(std::size_t nx, std::size_t ny, bool periodic
 // periodic transforms are (Fft): the rows in place in one grid buffer, then the columns
 // columnBlock at a time through a small buffer, multiplied there, transformed back, put back,
 // then the rows back. FFTW's own 2-D cosine transform strides down the columns and took 1.7
-// times a padded transform pair at 1024^2 (2.3 times the blocked one). Every 1-D plan is
+// times a padded transform pair at 1024^2 (about twice the blocked one). Every 1-D plan is
 // FFTW_ESTIMATE (the rows' FFTW_UNALIGNED: a row of an odd length starts anywhere), so the
 // answer is the same on every run and for any number of threads.
 struct HalfSpaceOperator::Dct {
