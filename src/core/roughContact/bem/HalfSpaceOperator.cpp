@@ -29,6 +29,24 @@ double F(double x, double y)
     return term(x, y) + term(y, x);
 }
 
+// The periodic half-space's multipliers at the wavenumber q [1/m] (HalfSpaceOperator.hpp): the
+// compliance u(q)/p(q) = 2/(E' q), 0 for the mean (q = 0); the stiffness E' q/2, at least that
+// of the longest wavelength of a grid of lengths Lx, Ly, E' pi/max(Lx, Ly).
+double compliance(double q, double Eprime)
+{
+    return q > 0.0 ? 2.0 / (Eprime * q) : 0.0;
+}
+
+double longestWaveStiffness(double Lx, double Ly, double Eprime)
+{
+    return 0.5 * Eprime * 2.0 * pi / std::max(Lx, Ly);
+}
+
+double stiffness(double q, double Eprime, double smallest)
+{
+    return std::max(0.5 * Eprime * q, smallest);
+}
+
 template <class T> struct FftwFree {
     void operator()(T* p) const { fftw_free(p); }
 };
@@ -352,7 +370,7 @@ double HalfSpaceOperator::bytesFor(std::size_t nx, std::size_t ny, bool periodic
 // periodic transforms are (Fft): the rows in place in one grid buffer, then the columns
 // columnBlock at a time through a small buffer, multiplied there, transformed back, put back,
 // then the rows back. FFTW's own 2-D cosine transform strides down the columns and took 1.7
-// times a padded transform pair at 1024^2 (about twice the blocked one). Every 1-D plan is
+// times a padded transform pair at 1024^2 (about twice the blocked one; single runs). Every 1-D plan is
 // FFTW_ESTIMATE (the rows' FFTW_UNALIGNED: a row of an odd length starts anywhere), so the
 // answer is the same on every run and for any number of threads.
 struct HalfSpaceOperator::Dct {
@@ -368,7 +386,11 @@ struct HalfSpaceOperator::Dct {
     mutable std::vector<std::unique_ptr<double, FftwFree<double>>> columnBuffers;
 
     Dct(std::size_t nx_, std::size_t ny_);
-    ~Dct() { release(); }
+    ~Dct()
+    {
+        const std::lock_guard<std::mutex> lock(fftwPlanner());
+        destroy();
+    }
     Dct(const Dct&) = delete;
     Dct& operator=(const Dct&) = delete;
     // out = DCT-III(multiplier DCT-II(in)) (unnormalised: the multiplier carries 1/(4 nx ny)).
@@ -379,9 +401,9 @@ struct HalfSpaceOperator::Dct {
     void rows(fftw_plan plan, const double* from, double* to) const;
 
 private:
-    void release()
+    // (With the planner's lock held.)
+    void destroy()
     {
-        const std::lock_guard<std::mutex> lock(fftwPlanner());
         for (fftw_plan* p : {&rowForward, &rowBackward, &columnsForward, &columnsBackward, &restForward, &restBackward}) {
             if (*p != nullptr) {
                 fftw_destroy_plan(*p);
@@ -415,13 +437,7 @@ HalfSpaceOperator::Dct::Dct(std::size_t nx_, std::size_t ny_) : nx(nx_), ny(ny_)
     }
     if (rowForward == nullptr || rowBackward == nullptr || columnsForward == nullptr || columnsBackward == nullptr ||
         (rest > 0 && (restForward == nullptr || restBackward == nullptr))) {
-        // (release() takes the lock itself.)
-        for (fftw_plan* p : {&rowForward, &rowBackward, &columnsForward, &columnsBackward, &restForward, &restBackward}) {
-            if (*p != nullptr) {
-                fftw_destroy_plan(*p);
-                *p = nullptr;
-            }
-        }
+        destroy();
         throw ParameterError("FFT", "FFTW could not plan the cosine transforms of a mirrored " + std::to_string(nx) +
                                         " x " + std::to_string(ny) + " grid");
     }
@@ -487,7 +503,6 @@ void HalfSpaceOperator::Dct::convolve(const double* multiplier, const double* in
     rows(rowBackward, g, out);
 }
 
-
 HalfSpaceOperator::HalfSpaceOperator(std::size_t nx, std::size_t ny, double dx, double dy, double Eprime,
                                      bool periodic)
     : HalfSpaceOperator(nx, ny, dx, dy, Eprime, periodic ? Edges::periodic : Edges::padded)
@@ -520,7 +535,7 @@ HalfSpaceOperator::HalfSpaceOperator(std::size_t nx, std::size_t ny, double dx, 
                 const double q = 2.0 * pi * std::sqrt(fx * fx + fy * fy);
                 // u(q) = 2 p(q) / (E' q); q = 0: mean displacement 0. The 1/(mx my) of FFTW's
                 // unnormalised inverse is folded in here.
-                kernel_[ky * hx + kx] = q > 0.0 ? 2.0 / (Eprime_ * q) / double(mx_ * my_) : 0.0;
+                kernel_[ky * hx + kx] = compliance(q, Eprime_) / double(mx_ * my_);
                 largest_ = std::max(largest_, kernel_[ky * hx + kx] * double(mx_ * my_));
             }
         }
@@ -565,13 +580,13 @@ void HalfSpaceOperator::makeStiffness()
     const double Lx = dx_ * double(mx_);
     const double Ly = dy_ * double(my_);
     stiffness_.assign(my_ * hx, 0.0);
-    smallestStiffness_ = 0.5 * Eprime_ * 2.0 * pi / std::max(Lx, Ly);
+    smallestStiffness_ = longestWaveStiffness(Lx, Ly, Eprime_);
     for (std::size_t ky = 0; ky < my_; ++ky) {
         const double fy = double(ky <= my_ / 2 ? ky : my_ - ky) / Ly;
         for (std::size_t kx = 0; kx < hx; ++kx) {
             const double fx = double(kx) / Lx;
             const double q = 2.0 * pi * std::sqrt(fx * fx + fy * fy);
-            stiffness_[ky * hx + kx] = std::max(0.5 * Eprime_ * q, smallestStiffness_) / double(mx_ * my_);
+            stiffness_[ky * hx + kx] = stiffness(q, Eprime_, smallestStiffness_) / double(mx_ * my_);
         }
     }
 }
@@ -585,7 +600,7 @@ void HalfSpaceOperator::makeMirrored()
     const double Lx = 2.0 * dx_ * double(nx_);
     const double Ly = 2.0 * dy_ * double(ny_);
     const double scale = 4.0 * double(nx_) * double(ny_);
-    smallestStiffness_ = 0.5 * Eprime_ * 2.0 * pi / std::max(Lx, Ly);
+    smallestStiffness_ = longestWaveStiffness(Lx, Ly, Eprime_);
     kernel_.assign(nx_ * ny_, 0.0);
     stiffness_.assign(nx_ * ny_, 0.0);
     for (std::size_t ky = 0; ky < ny_; ++ky) {
@@ -593,10 +608,10 @@ void HalfSpaceOperator::makeMirrored()
         for (std::size_t kx = 0; kx < nx_; ++kx) {
             const double fx = double(kx) / Lx;
             const double q = 2.0 * pi * std::sqrt(fx * fx + fy * fy);
-            const double k = q > 0.0 ? 2.0 / (Eprime_ * q) : 0.0;
+            const double k = compliance(q, Eprime_);
             kernel_[ky * nx_ + kx] = k / scale;
             largest_ = std::max(largest_, k);
-            stiffness_[ky * nx_ + kx] = std::max(0.5 * Eprime_ * q, smallestStiffness_) / scale;
+            stiffness_[ky * nx_ + kx] = stiffness(q, Eprime_, smallestStiffness_) / scale;
         }
     }
 }

@@ -181,9 +181,7 @@ BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
     if (mirrored_ && spec.synthesize) {
         throw ParameterError("mirror", "is for areal maps; a synthesized surface is periodic already");
     }
-    if (mirrored_ && spec.periodic && *spec.periodic) {
-        throw ParameterError("mirror", "a mirrored map is its own periodic surface: give periodic or mirror, not both");
-    }
+    (void)edgesOf(periodic_, mirrored_); // periodic and mirror: refused before the key is made
     if (spec.model != "boundaryElement") {
         throw ParameterError("model", "a boundary-element table is for model boundaryElement, not '" +
                                           spec.model + "'");

@@ -17,9 +17,7 @@ BoundaryElementModel::BoundaryElementModel(const ArealSurface& surface, double E
                                            BoundaryElementOptions options)
     : surface_(surface.detrended(options.detrend.value_or(defaultDetrend(options.periodic)))), Eprime_(requirePositive("reduced modulus E'", Eprime)), options_(options)
 {
-    if (options_.periodic && options_.mirrored) {
-        throw ParameterError("mirror", "a mirrored map is its own periodic surface: give periodic or mirror, not both");
-    }
+    const HalfSpaceOperator::Edges edges = edgesOf(options_.periodic, options_.mirrored);
     const bool interface = options_.periodic || options_.mirrored; // no patch of its own
     // The roughness floor of every model (Limits.hpp): a smaller rms is a unit mistake or a
     // constant map (a mask with one valid point, filled), which the solver cannot resolve.
@@ -56,7 +54,7 @@ BoundaryElementModel::BoundaryElementModel(const ArealSurface& surface, double E
         throw ParameterError("boundary-element grid", os.str());
     }
     op_ = std::make_unique<HalfSpaceOperator>(surface_.nx(), surface_.ny(), surface_.dx(), surface_.dy(),
-                                              Eprime_, edgesOf(options_.periodic, options_.mirrored));
+                                              Eprime_, edges);
     PolonskyKeerOptions po;
     po.tolerance = options_.tolerance;
     po.maxIterations = options_.maxIterations;
@@ -195,6 +193,15 @@ std::vector<BoundaryElementPoint> BoundaryElementModel::curve(
         }
     }
     return out;
+}
+
+HalfSpaceOperator::Edges edgesOf(bool periodic, bool mirrored)
+{
+    if (periodic && mirrored) {
+        throw ParameterError("mirror", "a mirrored map is its own periodic surface: give periodic or mirror, not both");
+    }
+    return mirrored ? HalfSpaceOperator::Edges::mirrored
+                    : (periodic ? HalfSpaceOperator::Edges::periodic : HalfSpaceOperator::Edges::padded);
 }
 
 double boundaryElementBytes(std::size_t nx, std::size_t ny, bool periodic, bool capped)

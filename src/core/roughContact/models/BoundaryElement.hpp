@@ -51,12 +51,9 @@ struct BoundaryElementOptions {
     double progressEvery = progressInterval;
 };
 
-/// The operator's edges of a solve: mirrored, periodic or padded (a patch).
-inline HalfSpaceOperator::Edges edgesOf(bool periodic, bool mirrored)
-{
-    return mirrored ? HalfSpaceOperator::Edges::mirrored
-                    : (periodic ? HalfSpaceOperator::Edges::periodic : HalfSpaceOperator::Edges::padded);
-}
+/// The operator's edges of a solve: mirrored, periodic or padded (a patch). ParameterError
+/// naming "mirror" for both periodic and mirrored (a mirrored map is its own periodic surface).
+HalfSpaceOperator::Edges edgesOf(bool periodic, bool mirrored);
 
 /// One load point of a boundary-element curve.
 struct BoundaryElementPoint {
