@@ -2,16 +2,17 @@
 // How far one exact solve is from the limit its transforms set (issue 23, item 1): one cold load
 // on the benchmarks' periodic surface (Rq 0.8 um, rms slope 0.1, synthesized N x N, seed 1,
 // steel on steel), the contact solve then the conductance solve as BoundaryElementModel makes
-// them, on one thread. Prints their iterations, the forward/inverse transform pairs each used
+// them, on one thread (threads T: on T). Prints their iterations, the forward/inverse transform pairs each used
 // (HalfSpaceOperator::transformPairs), the seconds of one pair (median of 15, timed here on the
 // same operator), and the transforms' share of the measured time: pairs x seconds per pair
 // against the total. The rest is the solvers' own loops over the grid.
-// Usage: transformBound N LOAD [plain] [wisdom FILE] [padded | mirrored]
+// Usage: transformBound N LOAD [plain] [wisdom FILE] [padded | mirrored] [threads T]
 //   plain: without the stiffness preconditioner (PolonskyKeerOptions::precondition false).
 //   padded, mirrored: the operator's edges (HalfSpaceOperator::Edges; default periodic), the
 //   same surface solved as a zero-padded patch or mirrored about its edges (other problems:
 //   for the cost of a pair on the same grid).
 //   wisdom FILE: measured FFT plans kept in FILE (setFftWisdom), as --fft-wisdom.
+//   threads T: the solves on T threads (setThreads; default 1), as --threads.
 #include "roughContact/bem/HalfSpaceOperator.hpp"
 #include "roughContact/bem/PolonskyKeer.hpp"
 #include "roughContact/models/BoundaryElement.hpp"
@@ -38,13 +39,14 @@ double seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_cloc
 int main(int argc, char** argv)
 {
     if (argc < 3) {
-        std::fprintf(stderr, "usage: transformBound N LOAD [plain] [wisdom FILE] [padded | mirrored]\n");
+        std::fprintf(stderr, "usage: transformBound N LOAD [plain] [wisdom FILE] [padded | mirrored] [threads T]\n");
         return 1;
     }
     const auto n = static_cast<std::size_t>(std::atol(argv[1]));
     const double load = std::atof(argv[2]);
     bool precondition = true;
     HalfSpaceOperator::Edges edges = HalfSpaceOperator::Edges::periodic;
+    int threads = 1;
     for (int i = 3; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "plain") {
@@ -53,6 +55,8 @@ int main(int argc, char** argv)
             edges = HalfSpaceOperator::Edges::padded;
         } else if (a == "mirrored") {
             edges = HalfSpaceOperator::Edges::mirrored;
+        } else if (a == "threads" && i + 1 < argc) {
+            threads = std::atoi(argv[++i]);
         } else if (a == "wisdom" && i + 1 < argc) {
             setFftWisdom(argv[++i]);
         } else {
@@ -60,7 +64,7 @@ int main(int argc, char** argv)
             return 1;
         }
     }
-    setThreads(1);
+    setThreads(threads);
     const ArealSurface surface =
         synthesizeIsotropic(roughnessSpectrum(0.8e-6, 0.1).spectrum, n, 1).detrended(Detrend::mean);
     const double Eprime = 1.0 / (2.0 * (1.0 - 0.3 * 0.3) / 2e11);

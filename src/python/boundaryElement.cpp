@@ -164,13 +164,20 @@ void bindBoundaryElement(py::module_& m)
                     column([](const BoundaryElementPoint& q) { return q.conductancePerConductivity; });
                 d["iterations"] = column([](const BoundaryElementPoint& q) { return q.iterations; });
                 d["residual"] = column([](const BoundaryElementPoint& q) { return q.residual; });
+                d["patch_correction_gain"] = column([](const BoundaryElementPoint& q) { return q.patchCorrectionGain; });
+                if (const std::string warning = patchCorrectionWarning(points, "mirror=True"); !warning.empty()) {
+                    py::module_::import("warnings").attr("warn")(warning, py::module_::import("builtins").attr("RuntimeWarning"), 2);
+                }
                 return d;
             },
             py::arg("pressures"),
             "The curve at the nominal pressures [Pa] (solved in increasing order, each warm-started from the one "
             "below; returned in the order given) as a dict of 1-D arrays: pressure [Pa], load (P/E'), "
             "area_fraction, plastic_fraction, mean_separation [m], conductance_per_conductivity [1/m], "
-            "iterations, residual (the columns of multiscaleContact --model boundaryElement).");
+            "iterations, residual (the columns of multiscaleContact --model boundaryElement), and "
+            "patch_correction_gain (a map solved padded: how many times 1/h_c = 1/h_spots - 1/h_patch multiplies "
+            "an error of the spots' h; 1 periodic or mirrored). A RuntimeWarning when it exceeds 50 at some "
+            "pressure: the map's h_c is not to be trusted there; solve it mirror=True.");
 }
 
 } // namespace roughcontact_py

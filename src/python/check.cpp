@@ -79,6 +79,9 @@ void bindCheck(py::module_& m)
         .def_readonly("closest_law", &SurfaceCheck::closestLaw, "The law with the smallest worst factor.")
         .def_property_readonly("chosen_misses", [](const SurfaceCheck& c) { return toArray(c.chosenMisses()); },
                                "The pressures [Pa] at which the chosen law is off by more than 25 %.")
+        .def_readonly("exact_warning", &SurfaceCheck::exactWarning,
+                      "A map solved padded near complete contact: that its exact h_c (and the ratios) are not "
+                      "to be trusted at some pressures, and to solve it mirrored; empty otherwise.")
         .def_readonly("seconds", &SurfaceCheck::seconds, "How long the check took [s].")
         .def("report", &SurfaceCheck::report, "The table a terminal or a log shows.")
         .def("csv", &SurfaceCheck::csv, "The numbers as CSV (the CLI's --check).")

@@ -43,6 +43,24 @@ def test_check_is_the_clis(cli):
     assert c.closest_law in c.ratios
     assert "closest: " + c.closest_law in c.report()
     assert np.all(c.exact_low <= c.exact) and np.all(c.exact <= c.exact_high)
+    assert c.exact_warning == ""  # synthesized surfaces are periodic: no patch correction
+
+
+def test_check_of_a_padded_map_near_complete_contact_warns(tmp_path):
+    """A map checked padded (no mirror) up to near complete contact: exact_warning says where its
+    exact h_c is not to be trusted (and the report repeats it); mirror=True: none. The map of
+    test_models' patch-correction test, capped soft (H = 2.84 x 20 MPa) so that 50 MPa is at 88 %
+    contact."""
+    spectrum = rc.Spectrum.from_profile(rc.read_profile(STANDIN))
+    path = tmp_path / "map.npy"
+    np.save(path, np.asarray(rc.synthesize_isotropic(spectrum, 64, 3).heights))
+    soft = rc.Material(E=200e9, nu=0.3, Sy=20e6)
+    surfaces = [rc.SurfaceSpec.areal(str(path), dx=2e-6)]
+    padded = rc.check(surfaces=surfaces, side1=soft, side2=soft, pressures=[1e6, 5e7])
+    assert "not to be trusted" in padded.exact_warning and "mirror=True" in padded.exact_warning
+    assert "warning: " + padded.exact_warning in padded.report()
+    mirrored = rc.check(surfaces=surfaces, side1=soft, side2=soft, pressures=[1e6, 5e7], mirror=True)
+    assert mirrored.exact_warning == ""
 
 
 def test_check_refuses_what_it_cannot_check():

@@ -108,6 +108,9 @@ int runBoundaryElement(const Options& o)
                           << " s\n";
             }
         });
+    if (const std::string warning = patchCorrectionWarning(points, "--mirror"); !warning.empty()) {
+        std::cerr << "multiscaleContact: warning: " << warning << std::endl;
+    }
     std::ostringstream out;
     out.precision(10);
     const std::optional<double> ks = harmonicConductivityOf(o, true);

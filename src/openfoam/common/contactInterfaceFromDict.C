@@ -292,6 +292,13 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
             const roughContact::SurfaceCheck c =
                 roughContact::checkSurface(spec, options);
             Info<< c.report().c_str() << endl;
+            if (!c.exactWarning.empty())
+            {
+                WarningInFunction
+                    << who.c_str() << ": contact entry '" << name << "' in "
+                    << dictFile << ": check yes: "
+                    << c.exactWarning.c_str() << endl;
+            }
             const std::vector<double> misses = c.chosenMisses();
             if (!misses.empty())
             {

@@ -712,6 +712,65 @@ TEST(BoundaryElementModel, APatchsConductanceLessItsOwnConstrictionIsTheInterfac
     }
 }
 
+TEST(BoundaryElementModel, APaddedMapSaysWhereItsPatchCorrectionIsNotToBeTrusted)
+{
+    // The gain of the patch correction, 1/(1 - h_spots/h_patch) = 1 + h_c/h_patch, on the
+    // surface of the test above solved as a patch, against the same surface periodic (the
+    // interface's answer): where the gain is small the corrected patch is the interface's h_c
+    // (above); as the contact nears complete the spots conduct nearly as the bonded patch does,
+    // the gain grows past patchCorrectionGainLimit and the corrected patch is far off. Measured:
+    // gain 4.5 at 2e-3 (13 % contact; the corrected patch 1.05 of the periodic h_c), 184 at 2e-2
+    // (72 %; 0.85) and 4213 at 5e-2 (96 %; 0.096).
+    const std::size_t n = 128;
+    const double L = 1e-4;
+    const std::vector<double> h = randomSurface(n, 17, 1e-7);
+    BoundaryElementOptions periodicOptions;
+    periodicOptions.periodic = true;
+    const BoundaryElementModel periodic(arealOf(h, n, L, "random"), Ep, periodicOptions);
+    const BoundaryElementModel patch(arealOf(h, n, L, "random"), Ep);
+    const std::vector<double> loads{2e-3, 5e-2};
+    const std::vector<BoundaryElementPoint> a = periodic.curve(loads);
+    const std::vector<BoundaryElementPoint> b = patch.curve(loads);
+    for (std::size_t i = 0; i < loads.size(); ++i) {
+        std::printf("F/(A_n E') = %g: A_r/A_n %.4f; h_c/k_s %.6g periodic, %.6g patch corrected; gain %.4g\n", loads[i],
+                    b[i].areaFraction, a[i].conductancePerConductivity, b[i].conductancePerConductivity,
+                    b[i].patchCorrectionGain);
+        EXPECT_EQ(a[i].patchCorrectionGain, 1.0);
+        EXPECT_NEAR(b[i].patchCorrectionGain,
+                    1.0 / (1.0 - b[i].spotsConductancePerConductivity / patch.patchConductancePerConductivity()),
+                    1e-9 * b[i].patchCorrectionGain);
+    }
+    EXPECT_LT(b[0].patchCorrectionGain, patchCorrectionGainLimit);
+    EXPECT_GT(b[1].patchCorrectionGain, patchCorrectionGainLimit);
+    EXPECT_TRUE(patchCorrectionWarning(a, "mirror").empty());
+    EXPECT_TRUE(patchCorrectionWarning({b[0]}, "mirror").empty());
+    const std::string warning = patchCorrectionWarning(b, "--mirror");
+    EXPECT_NE(warning.find("1 of 2 loads"), std::string::npos) << warning;
+    EXPECT_NE(warning.find("--mirror"), std::string::npos) << warning;
+}
+
+TEST(BoundaryElementModel, ThePatchCorrectionWarningNamesTheLowestLoadAboveTheLimit)
+{
+    // Points in any order (a curve returns them as given), an infinite gain (spots conducting as
+    // the bonded patch: h_c = inf), and a gain at the limit itself, which is trusted.
+    const auto point = [](double load, double area, double gain) {
+        BoundaryElementPoint p;
+        p.load = load;
+        p.areaFraction = area;
+        p.patchCorrectionGain = gain;
+        return p;
+    };
+    const std::vector<BoundaryElementPoint> points{point(3e-2, 0.9, std::numeric_limits<double>::infinity()),
+                                                   point(1e-3, 0.1, 2.0), point(1e-2, 0.6, 120.0),
+                                                   point(5e-3, 0.4, patchCorrectionGainLimit)};
+    const std::string warning = patchCorrectionWarning(points, "mirror true;");
+    EXPECT_NE(warning.find("at 2 of 4 loads, from F/(A_n E') = 0.01 on (A_r/A_n = 0.6)"), std::string::npos) << warning;
+    EXPECT_NE(warning.find("up to inf times"), std::string::npos) << warning;
+    EXPECT_NE(warning.find("(mirror true;)"), std::string::npos) << warning;
+    EXPECT_TRUE(patchCorrectionWarning({points[1], points[3]}, "mirror").empty());
+    EXPECT_TRUE(patchCorrectionWarning({}, "mirror").empty());
+}
+
 // The heights of an nx x ny map mirrored about its edges: 2nx x 2ny, h(2nx-1-i) = h(i).
 std::vector<double> mirroredGrid(const std::vector<double>& h, std::size_t nx, std::size_t ny)
 {

@@ -494,6 +494,59 @@ TEST(BoundaryElementTable, CompleteContactEndsTheTable)
     EXPECT_EQ(t.parse(t.write(q)).status, Status::corrupt);
 }
 
+TEST(BoundaryElementTable, APaddedMapNearCompleteContactIsSaidNotToBeTrusted)
+{
+    // A 32 x 32 map solved padded up to near complete contact: building its table logs a warning
+    // (BoundaryElement.hpp, patchCorrectionWarning) that names the mirrored solve; the same map
+    // mirrored has no patch correction and no warning.
+    const ArealSurface map = synthesizeIsotropic(smallSpec().surfaces[0].spectrum(), 32, 5);
+    const std::string dir = testing::TempDir() + "/bemPaddedWarning-" + std::to_string(::getpid());
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::string file = dir + "/map.txt";
+    {
+        std::ofstream out(file);
+        out.precision(17);
+        for (std::size_t iy = 0; iy < 32; ++iy) {
+            for (std::size_t ix = 0; ix < 32; ++ix) {
+                out << (ix ? " " : "") << map.at(ix, iy);
+            }
+            out << '\n';
+        }
+    }
+    InterfaceSpec s = smallSpec();
+    s.synthesize.reset();
+    SurfaceSpec a;
+    a.kind = SurfaceSpec::Kind::areal;
+    a.file = file;
+    a.arealOptions.dx = map.dx();
+    s.surfaces = {a};
+    s.maxPressure = 1e10; // p/E' up to 0.09: near complete contact (elastic: no hardness given)
+    std::vector<std::pair<std::string, bool>> log;
+    const auto logger = [&](const std::string& line, bool warning) { log.emplace_back(line, warning); };
+    const auto warnings = [&] {
+        std::size_t n = 0;
+        for (const auto& [line, warning] : log) {
+            if (warning && line.find("not to be trusted") != std::string::npos &&
+                line.find("mirror true;") != std::string::npos) {
+                ++n;
+            }
+        }
+        return n;
+    };
+    const BoundaryElementTablePoints padded = BoundaryElementTable(s).loadOrBuild(dir + "/padded.csv", {}, logger);
+    for (const auto& [line, warning] : log) {
+        std::printf("%s%s\n", warning ? "warning: " : "", line.c_str());
+    }
+    EXPECT_EQ(warnings(), 1u);
+    log.clear();
+    s.mirror = true;
+    const BoundaryElementTablePoints mirrored = BoundaryElementTable(s).loadOrBuild(dir + "/mirrored.csv", {}, logger);
+    EXPECT_EQ(warnings(), 0u);
+    EXPECT_FALSE(log.empty());
+    std::filesystem::remove_all(dir);
+}
+
 TEST(BoundaryElementTable, ArealMapsAndTheirComposite)
 {
     // Two 32 x 32 maps as text matrices: one alone (non-periodic), and their composite.

@@ -248,6 +248,34 @@ TEST(ContactInterface, FaceConductanceFromTheTableAndBothConductivities)
     EXPECT_THROW(ci.face(1e6, k1, std::nan("")), ParameterError);
 }
 
+TEST(ContactInterface, HowAMapIsSolvedIsForTheExactModelOrTheCheck)
+{
+    // periodic, mirror and detrend say how the exact model solves a map: refused with a
+    // multi-scale model (nothing of it is solved so), taken with check (SurfaceCheck.hpp solves
+    // the map as they say: `check yes; mirror true;` in a contact entry).
+    for (const char* what : {"periodic", "mirror", "detrend"}) {
+        SCOPED_TRACE(what);
+        InterfaceSpec spec = steelOnCopper();
+        if (std::string(what) == "periodic") {
+            spec.periodic = false;
+        } else if (std::string(what) == "mirror") {
+            spec.mirror = true;
+        } else {
+            spec.detrend = Detrend::plane;
+        }
+        try {
+            ContactInterface{spec};
+            ADD_FAILURE() << "taken without check";
+        } catch (const ParameterError& e) {
+            EXPECT_NE(std::string(e.what()).find(std::string(what) + ": is for model boundaryElement (or the check of a map"),
+                      std::string::npos)
+                << e.what();
+        }
+        spec.check = true;
+        EXPECT_NO_THROW(ContactInterface{spec});
+    }
+}
+
 TEST(ContactInterface, HeldAtTableEndOnlyWhereMaxPressureCutTheTable)
 {
     // The boundary condition warns "raise maxPressure" from this; before, it also warned in the

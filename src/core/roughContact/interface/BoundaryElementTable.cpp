@@ -746,9 +746,11 @@ BoundaryElementTablePoints BoundaryElementTable::loadOrBuild(const std::string& 
     const std::vector<std::size_t> mine =
         ranks.rank < sharing ? shareOfLoads(n, ranks.rank, sharing) : std::vector<std::size_t>{};
     const auto start = std::chrono::steady_clock::now();
-    // Every load's A_r/A_n, h_c/k_s and separation, from the rank that solved it (0 elsewhere:
-    // x + 0 = x, so the sum is exact), and the number of ranks whose solves failed.
-    std::vector<double> values(3 * n + 1, 0.0);
+    // Every load's A_r/A_n, h_c/k_s, separation and patch-correction gain, from the rank that
+    // solved it (0 elsewhere: x + 0 = x, so the sum is exact), and the number of ranks whose
+    // solves failed.
+    constexpr std::size_t columns = 4;
+    std::vector<double> values(columns * n + 1, 0.0);
     try {
         if (!mine.empty()) {
             const std::vector<BoundaryElementPoint> curve = solveLoads(mine, progress, solveProgress);
@@ -756,6 +758,7 @@ BoundaryElementTablePoints BoundaryElementTable::loadOrBuild(const std::string& 
                 values[mine[i]] = curve[i].areaFraction;
                 values[n + mine[i]] = curve[i].conductancePerConductivity;
                 values[2 * n + mine[i]] = curve[i].meanSeparation;
+                values[3 * n + mine[i]] = curve[i].patchCorrectionGain;
             }
         }
     } catch (...) {
@@ -763,16 +766,16 @@ BoundaryElementTablePoints BoundaryElementTable::loadOrBuild(const std::string& 
             throw;
         }
         failure = std::current_exception();
-        values.assign(3 * n + 1, 0.0);
-        values[3 * n] = 1.0;
+        values.assign(columns * n + 1, 0.0);
+        values[columns * n] = 1.0;
     }
     exchange(values, true);
-    if (values[3 * n] > 0.0) {
+    if (values[columns * n] > 0.0) {
         if (failure) {
             std::rethrow_exception(failure);
         }
         throw ParameterError("boundary-element table", "not built: the solves failed on " +
-                                                           std::to_string(std::lround(values[3 * n])) +
+                                                           std::to_string(std::lround(values[columns * n])) +
                                                            " rank(s) (their errors say why)");
     }
     const auto column = [&](std::size_t c) {
@@ -802,6 +805,19 @@ BoundaryElementTablePoints BoundaryElementTable::loadOrBuild(const std::string& 
        << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s: "
        << points.pressures.size() << " points; wrote " << path << " (key " << key_ << ")";
     say(os.str(), false);
+    // A padded map near complete contact: its h_c is a difference of two nearly equal
+    // resistances (BoundaryElement.hpp, patchCorrectionGainLimit).
+    std::vector<BoundaryElementPoint> solved(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        solved[k].load = loads_[k];
+        solved[k].areaFraction = values[k];
+        solved[k].patchCorrectionGain = values[3 * n + k];
+    }
+    if (const std::string warning = patchCorrectionWarning(solved, "mirror true; in the contact entry, --mirror on "
+                                                                   "the command line, mirror=True in Python");
+        !warning.empty()) {
+        say("boundary-element table: " + warning, true);
+    }
     return points;
 }
 

@@ -145,15 +145,21 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
         buildGap(spec);
         return;
     }
+    // periodic, mirror and detrend also say how the check (check: SurfaceCheck.hpp) solves a
+    // map, so they are taken with it.
     for (const auto& [given, what] : {std::pair<bool, const char*>{spec.synthesize.has_value(), "synthesize"},
-                                      {spec.periodic.has_value(), "periodic"},
-                                      {spec.mirror.has_value(), "mirror"},
-                                      {spec.detrend.has_value(), "detrend"},
+                                      {spec.periodic.has_value() && !spec.check, "periodic"},
+                                      {spec.mirror.has_value() && !spec.check, "mirror"},
+                                      {spec.detrend.has_value() && !spec.check, "detrend"},
                                       {spec.hardness.has_value(), "hardness"},
                                       {spec.hardnessFromYield, "hardnessFromYield"},
                                       {boundaryElementTable != nullptr, "boundary-element table"}}) {
         if (given) {
-            throw ParameterError(what, "is for model boundaryElement, not " + spec.model);
+            const bool ofTheCheck = std::string(what) == "periodic" || std::string(what) == "mirror" ||
+                                    std::string(what) == "detrend";
+            throw ParameterError(what, std::string("is for model boundaryElement") +
+                                           (ofTheCheck ? " (or the check of a map, check yes;)" : "") + ", not " +
+                                           spec.model);
         }
     }
     if (!isMultiscaleModel(spec.model)) {

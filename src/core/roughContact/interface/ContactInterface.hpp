@@ -91,6 +91,8 @@ struct InterfaceSpec {
     /// Solve an areal map mirrored about its edges into one period of a periodic surface
     /// (BoundaryElementOptions::mirrored: an interface with neither edges nor the patch's own
     /// constriction, which near complete contact is ill-conditioned); unset: false.
+    /// periodic, mirror and detrend are for model boundaryElement, and with check also say how
+    /// the check solves a map (with any model).
     std::optional<bool> mirror;
     /// What is removed from the solved heights; unset: defaultDetrend(periodic) (the mean of a
     /// periodic surface, the plane of a measured map: ArealSurface.hpp).

@@ -128,6 +128,9 @@ std::string SurfaceCheck::report() const
            << misses.size() << " of " << pressures.size() << " checked pressures";
     }
     os << " (" << number(seconds) << " s)\n";
+    if (!exactWarning.empty()) {
+        os << "  warning: " << exactWarning << "\n";
+    }
     return os.str();
 }
 
@@ -371,6 +374,12 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
                    << " 1/m; " << number(seconds()) << " s";
                 log(os.str());
             });
+        if (const std::string warning =
+                patchCorrectionWarning(points, "mirror true; in the contact entry, --mirror with --check, "
+                                               "mirror=True in Python");
+            !warning.empty()) {
+            out.exactWarning = warning + "; nor are the laws' ratios there";
+        }
         for (std::size_t i = 0; i < count; ++i) {
             const double h = points[i].conductancePerConductivity;
             if (!(h > 0.0) || !std::isfinite(h)) {

@@ -86,6 +86,9 @@ struct SurfaceCheck {
     std::vector<CheckedLaw> laws;        ///< every law, in conductanceLawNames() order
     std::string chosenLaw;               ///< the spec's (or the default)
     std::string closestLaw;              ///< the smallest worstFactor
+    /// A map solved padded near complete contact: that its exact h_c is not to be trusted at
+    /// some pressures (patchCorrectionWarning) and the ratios there neither; empty otherwise.
+    std::string exactWarning;
     double seconds = 0.0;                ///< the time the check took
 
     /// The chosen law's entry (ParameterError when it is not among laws).
@@ -94,7 +97,7 @@ struct SurfaceCheck {
     /// checkTolerance.
     std::vector<double> chosenMisses() const;
     /// A table for a log or a terminal: the exact h_c/k_s per pressure with the seeds' spread,
-    /// each law's ratio, the closest law and the chosen law's verdict.
+    /// each law's ratio, the closest law and the chosen law's verdict (and exactWarning).
     std::string report() const;
     /// The numbers as CSV: nominal_pressure [Pa], nominal_pressure_per_Eprime (F/(A_n E')), the
     /// exact area and h_c/k_s (with the spread), one ratio_NAME column per law that could be built.
