@@ -165,8 +165,8 @@ void bindBoundaryElement(py::module_& m)
                 d["iterations"] = column([](const BoundaryElementPoint& q) { return q.iterations; });
                 d["residual"] = column([](const BoundaryElementPoint& q) { return q.residual; });
                 d["patch_correction_gain"] = column([](const BoundaryElementPoint& q) { return q.patchCorrectionGain; });
-                if (const std::string warning = patchCorrectionWarning(points, "mirror=True"); !warning.empty()) {
-                    py::module_::import("warnings").attr("warn")(warning, py::module_::import("builtins").attr("RuntimeWarning"), 2);
+                if (const std::string warning = patchCorrectionWarning(points, x.model->reducedModulus(), "mirror=True"); !warning.empty()) {
+                    py::module_::import("warnings").attr("warn")(warning, py::module_::import("builtins").attr("RuntimeWarning"), 1);
                 }
                 return d;
             },

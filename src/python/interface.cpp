@@ -238,14 +238,33 @@ void bindInterface(py::module_& m)
                  if (!threads.is_none()) {
                      setThreads(threads.cast<int>());
                  }
-                 py::gil_scoped_release release;
-                 if (tableFile) {
-                     // The case's cache, shared with the condition: read when it holds this table
-                     // (its key and digest), else built and written (BoundaryElementTable.hpp).
-                     const BoundaryElementTablePoints points = BoundaryElementTable(s).loadOrBuild(*tableFile);
-                     return std::make_unique<ContactInterface>(s, &points);
+                 // What the build warns of (a cache file replaced; a padded map's h_c not to be
+                 // trusted near complete contact): RuntimeWarnings, once the GIL is held again.
+                 std::vector<std::string> warned;
+                 std::unique_ptr<ContactInterface> made;
+                 {
+                     py::gil_scoped_release release;
+                     if (tableFile) {
+                         // The case's cache, shared with the condition: read when it holds this
+                         // table (its key and digest), else built and written (BoundaryElementTable.hpp).
+                         const BoundaryElementTablePoints points = BoundaryElementTable(s).loadOrBuild(
+                             *tableFile, {}, [&](const std::string& line, bool warning) {
+                                 if (warning) {
+                                     warned.push_back(line);
+                                 }
+                             });
+                         made = std::make_unique<ContactInterface>(s, &points);
+                     } else {
+                         made = std::make_unique<ContactInterface>(s);
+                         if (!made->tableWarning().empty()) {
+                             warned.push_back("boundary-element table: " + made->tableWarning());
+                         }
+                     }
                  }
-                 return std::make_unique<ContactInterface>(s);
+                 for (const std::string& w : warned) {
+                     py::module_::import("warnings").attr("warn")(w, py::module_::import("builtins").attr("RuntimeWarning"), 1);
+                 }
+                 return made;
              }),
              py::kw_only(), py::arg("surfaces"), py::arg("side1"), py::arg("side2"), py::arg("model") = "jacksonGreen",
              py::arg("conductance") = "", py::arg("microhardness") = py::none(), py::arg("vickers") = py::none(),
@@ -313,6 +332,10 @@ void bindInterface(py::module_& m)
                                "The lowest pressure [Pa] of complete contact (inf: none).")
         .def_property_readonly("reduced_modulus", &ContactInterface::reducedModulus, "E' [Pa].")
         .def_property_readonly("model_name", &ContactInterface::modelName, "The model's name.")
+        .def_property_readonly("table_warning", &ContactInterface::tableWarning,
+                               "model boundaryElement on a map solved padded: where its table's h_c is not to be "
+                               "trusted (near complete contact; solve it mirror=True); empty otherwise, and for a table "
+                               "read back from table_file.")
         .def_property_readonly("conductance_law", &ContactInterface::conductanceLaw, "The law of the h column.")
         .def_property_readonly("surface", &ContactInterface::surface, "The equivalent surface's spectrum.")
         .def_property_readonly("has_gap", &ContactInterface::hasGap, "True with a gap (gas or radiation).")

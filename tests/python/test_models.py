@@ -216,7 +216,7 @@ def test_boundary_element_patch_correction_warning(cli, spectrum, tmp_path):
     surface = rc.ArealSurface(heights, 2e-6, 2e-6)
     materials = rc.ContactMaterials.from_reduced_modulus(2e11)
     padded = rc.BoundaryElement(surface, materials)
-    with pytest.warns(RuntimeWarning, match=r"not to be trusted at 1 of 3 loads, from F/\(A_n E'\) = 0.025 .*mirror=True"):
+    with pytest.warns(RuntimeWarning, match=r"not to be trusted at 1 of 3 loads, from P = 5e\+09 Pa \(F/\(A_n E'\) = 0.025, .*mirror=True"):
         curve = padded.curve([2e6, 2e9, 5e9])
     gain = curve["patch_correction_gain"]
     np.testing.assert_allclose(gain, 1 + curve["conductance_per_conductivity"] / padded.patch_conductance_per_conductivity,
@@ -230,6 +230,21 @@ def test_boundary_element_patch_correction_warning(cli, spectrum, tmp_path):
     np.testing.assert_array_equal(mirrored["patch_correction_gain"], [1.0, 1.0, 1.0])
     path = tmp_path / "map.npy"
     np.save(path, heights)
+    # The interface of model boundaryElement on the map: its table warns when it is built (also
+    # into a table_file), not when it is read back from that file.
+    steel = rc.Material(E=200e9, nu=0.3)
+    spec = dict(surfaces=[rc.SurfaceSpec.areal(str(path), dx=2e-6)], side1=steel, side2=steel,
+                model="boundaryElement", max_pressure=5e9)
+    with pytest.warns(RuntimeWarning, match="boundary-element table: the map's h_c is not to be trusted"):
+        built = rc.ContactInterface(**spec)
+    assert built.table_warning.startswith("the map's h_c is not to be trusted")
+    table = tmp_path / "table.csv"
+    with pytest.warns(RuntimeWarning, match="boundary-element table: the map's h_c is not to be trusted"):
+        rc.ContactInterface(**spec, table_file=str(table))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert rc.ContactInterface(**spec, table_file=str(table)).table_warning == ""  # read back: none
+        assert rc.ContactInterface(**spec, mirror=True).table_warning == ""
     for mirror, warned in (([], True), (["--mirror"], False)):
         r = cli("--areal", str(path), "--dx", "2e-6", "--model", "boundaryElement", "--Eprime", "2e11",
                 "--loads", "1e-5,2.5e-2", *mirror)

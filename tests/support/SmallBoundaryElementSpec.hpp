@@ -6,6 +6,10 @@
 
 #include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/material/Materials.hpp"
+#include "roughContact/surface/ArealSynthesis.hpp"
+
+#include <fstream>
+#include <string>
 
 namespace roughContactTest {
 
@@ -27,6 +31,32 @@ inline roughContact::InterfaceSpec smallBoundaryElementSpec()
     spec.minPressure = 1e5;
     spec.maxPressure = 1e9;
     spec.bemPointsPerDecade = 4;
+    return spec;
+}
+
+/// The spec above on a 32 x 32 map (its spectrum synthesized with seed 5, written to `file` as a
+/// text matrix) solved padded up to 1e10 Pa (p/E' 0.09, elastic: near complete contact), where
+/// the padded answer is not to be trusted (BoundaryElement.hpp, patchCorrectionWarning).
+inline roughContact::InterfaceSpec smallPaddedMapSpec(const std::string& file)
+{
+    using namespace roughContact;
+    InterfaceSpec spec = smallBoundaryElementSpec();
+    const ArealSurface map = synthesizeIsotropic(spec.surfaces[0].spectrum(), 32, 5);
+    std::ofstream out(file);
+    out.precision(17);
+    for (std::size_t iy = 0; iy < 32; ++iy) {
+        for (std::size_t ix = 0; ix < 32; ++ix) {
+            out << (ix ? " " : "") << map.at(ix, iy);
+        }
+        out << '\n';
+    }
+    spec.synthesize.reset();
+    SurfaceSpec a;
+    a.kind = SurfaceSpec::Kind::areal;
+    a.file = file;
+    a.arealOptions.dx = map.dx();
+    spec.surfaces = {a};
+    spec.maxPressure = 1e10;
     return spec;
 }
 

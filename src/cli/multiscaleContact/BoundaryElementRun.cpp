@@ -108,7 +108,7 @@ int runBoundaryElement(const Options& o)
                           << " s\n";
             }
         });
-    if (const std::string warning = patchCorrectionWarning(points, "--mirror"); !warning.empty()) {
+    if (const std::string warning = patchCorrectionWarning(points, materials.reducedModulus(), "--mirror"); !warning.empty()) {
         std::cerr << "multiscaleContact: warning: " << warning << std::endl;
     }
     std::ostringstream out;

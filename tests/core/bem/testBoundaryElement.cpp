@@ -742,11 +742,19 @@ TEST(BoundaryElementModel, APaddedMapSaysWhereItsPatchCorrectionIsNotToBeTrusted
     }
     EXPECT_LT(b[0].patchCorrectionGain, patchCorrectionGainLimit);
     EXPECT_GT(b[1].patchCorrectionGain, patchCorrectionGainLimit);
-    EXPECT_TRUE(patchCorrectionWarning(a, "mirror").empty());
-    EXPECT_TRUE(patchCorrectionWarning({b[0]}, "mirror").empty());
-    const std::string warning = patchCorrectionWarning(b, "--mirror");
+    EXPECT_TRUE(patchCorrectionWarning(a, Ep, "mirror").empty());
+    EXPECT_TRUE(patchCorrectionWarning({b[0]}, Ep, "mirror").empty());
+    const std::string warning = patchCorrectionWarning(b, Ep, "--mirror");
     EXPECT_NE(warning.find("1 of 2 loads"), std::string::npos) << warning;
     EXPECT_NE(warning.find("--mirror"), std::string::npos) << warning;
+    // At P >= H every point flows: complete contact, h_c infinite with nothing subtracted, which
+    // is exact (a gain of 1), not a failed correction.
+    BoundaryElementOptions capped;
+    capped.hardness = 1e9;
+    const BoundaryElementPoint flowing = BoundaryElementModel(arealOf(h, n, L, "random"), Ep, capped).solve(1e9 / Ep);
+    EXPECT_TRUE(std::isinf(flowing.conductancePerConductivity));
+    EXPECT_EQ(flowing.patchCorrectionGain, 1.0);
+    EXPECT_TRUE(patchCorrectionWarning({flowing}, Ep, "mirror").empty());
 }
 
 TEST(BoundaryElementModel, ThePatchCorrectionWarningNamesTheLowestLoadAboveTheLimit)
@@ -763,12 +771,14 @@ TEST(BoundaryElementModel, ThePatchCorrectionWarningNamesTheLowestLoadAboveTheLi
     const std::vector<BoundaryElementPoint> points{point(3e-2, 0.9, std::numeric_limits<double>::infinity()),
                                                    point(1e-3, 0.1, 2.0), point(1e-2, 0.6, 120.0),
                                                    point(5e-3, 0.4, patchCorrectionGainLimit)};
-    const std::string warning = patchCorrectionWarning(points, "mirror true;");
-    EXPECT_NE(warning.find("at 2 of 4 loads, from F/(A_n E') = 0.01 on (A_r/A_n = 0.6)"), std::string::npos) << warning;
-    EXPECT_NE(warning.find("up to inf times"), std::string::npos) << warning;
+    const std::string warning = patchCorrectionWarning(points, 2e11, "mirror true;");
+    EXPECT_NE(warning.find("at 2 of 4 loads, from P = 2e+09 Pa (F/(A_n E') = 0.01, A_r/A_n = 0.6) on"),
+              std::string::npos)
+        << warning;
+    EXPECT_NE(warning.find("without bound"), std::string::npos) << warning;
     EXPECT_NE(warning.find("(mirror true;)"), std::string::npos) << warning;
-    EXPECT_TRUE(patchCorrectionWarning({points[1], points[3]}, "mirror").empty());
-    EXPECT_TRUE(patchCorrectionWarning({}, "mirror").empty());
+    EXPECT_TRUE(patchCorrectionWarning({points[1], points[3]}, 2e11, "mirror").empty());
+    EXPECT_TRUE(patchCorrectionWarning({}, 2e11, "mirror").empty());
 }
 
 // The heights of an nx x ny map mirrored about its edges: 2nx x 2ny, h(2nx-1-i) = h(i).

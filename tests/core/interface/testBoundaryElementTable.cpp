@@ -497,31 +497,13 @@ TEST(BoundaryElementTable, CompleteContactEndsTheTable)
 TEST(BoundaryElementTable, APaddedMapNearCompleteContactIsSaidNotToBeTrusted)
 {
     // A 32 x 32 map solved padded up to near complete contact: building its table logs a warning
-    // (BoundaryElement.hpp, patchCorrectionWarning) that names the mirrored solve; the same map
-    // mirrored has no patch correction and no warning.
-    const ArealSurface map = synthesizeIsotropic(smallSpec().surfaces[0].spectrum(), 32, 5);
+    // (BoundaryElement.hpp, patchCorrectionWarning) that names the mirrored solve, and the points
+    // and the interface made of them carry it (patchWarning, tableWarning); build() gives the same.
+    // The same map mirrored has no patch correction and no warning; a table read back has none.
     const std::string dir = testing::TempDir() + "/bemPaddedWarning-" + std::to_string(::getpid());
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
-    const std::string file = dir + "/map.txt";
-    {
-        std::ofstream out(file);
-        out.precision(17);
-        for (std::size_t iy = 0; iy < 32; ++iy) {
-            for (std::size_t ix = 0; ix < 32; ++ix) {
-                out << (ix ? " " : "") << map.at(ix, iy);
-            }
-            out << '\n';
-        }
-    }
-    InterfaceSpec s = smallSpec();
-    s.synthesize.reset();
-    SurfaceSpec a;
-    a.kind = SurfaceSpec::Kind::areal;
-    a.file = file;
-    a.arealOptions.dx = map.dx();
-    s.surfaces = {a};
-    s.maxPressure = 1e10; // p/E' up to 0.09: near complete contact (elastic: no hardness given)
+    InterfaceSpec s = roughContactTest::smallPaddedMapSpec(dir + "/map.txt");
     std::vector<std::pair<std::string, bool>> log;
     const auto logger = [&](const std::string& line, bool warning) { log.emplace_back(line, warning); };
     const auto warnings = [&] {
@@ -534,15 +516,24 @@ TEST(BoundaryElementTable, APaddedMapNearCompleteContactIsSaidNotToBeTrusted)
         }
         return n;
     };
-    const BoundaryElementTablePoints padded = BoundaryElementTable(s).loadOrBuild(dir + "/padded.csv", {}, logger);
+    const BoundaryElementTable table(s);
+    const BoundaryElementTablePoints padded = table.loadOrBuild(dir + "/padded.csv", {}, logger);
     for (const auto& [line, warning] : log) {
         std::printf("%s%s\n", warning ? "warning: " : "", line.c_str());
     }
     EXPECT_EQ(warnings(), 1u);
+    EXPECT_NE(padded.patchWarning.find("not to be trusted"), std::string::npos);
+    EXPECT_EQ(table.build().patchWarning, padded.patchWarning);
+    EXPECT_EQ(ContactInterface(s, &padded).tableWarning(), padded.patchWarning);
+    EXPECT_EQ(ContactInterface(s).tableWarning(), padded.patchWarning);
+    log.clear();
+    EXPECT_TRUE(table.loadOrBuild(dir + "/padded.csv", {}, logger).patchWarning.empty()); // read back
+    EXPECT_EQ(warnings(), 0u);
     log.clear();
     s.mirror = true;
     const BoundaryElementTablePoints mirrored = BoundaryElementTable(s).loadOrBuild(dir + "/mirrored.csv", {}, logger);
     EXPECT_EQ(warnings(), 0u);
+    EXPECT_TRUE(mirrored.patchWarning.empty());
     EXPECT_FALSE(log.empty());
     std::filesystem::remove_all(dir);
 }

@@ -251,29 +251,47 @@ TEST(ContactInterface, FaceConductanceFromTheTableAndBothConductivities)
 TEST(ContactInterface, HowAMapIsSolvedIsForTheExactModelOrTheCheck)
 {
     // periodic, mirror and detrend say how the exact model solves a map: refused with a
-    // multi-scale model (nothing of it is solved so), taken with check (SurfaceCheck.hpp solves
-    // the map as they say: `check yes; mirror true;` in a contact entry).
-    for (const char* what : {"periodic", "mirror", "detrend"}) {
-        SCOPED_TRACE(what);
-        InterfaceSpec spec = steelOnCopper();
-        if (std::string(what) == "periodic") {
-            spec.periodic = false;
-        } else if (std::string(what) == "mirror") {
-            spec.mirror = true;
-        } else {
-            spec.detrend = Detrend::plane;
-        }
+    // multi-scale model (nothing of it is solved so), taken with check on an areal map
+    // (SurfaceCheck.hpp solves the map as they say: `check yes; mirror true;` in a contact entry);
+    // detrend also with check on a 1-D description (the check detrends its synthesized
+    // surfaces), periodic and mirror not (the check's surfaces are periodic), and periodic with
+    // mirror never.
+    InterfaceSpec map = steelOnCopper();
+    map.surfaces[0].kind = SurfaceSpec::Kind::areal;
+    map.surfaces[0].file = std::string(ROUGHCONTACT_SOURCE_DIR) + "/data/x3p-2.x3p";
+    const auto refused = [](const InterfaceSpec& spec, const std::string& start) {
         try {
             ContactInterface{spec};
-            ADD_FAILURE() << "taken without check";
+            return std::string("taken");
         } catch (const ParameterError& e) {
-            EXPECT_NE(std::string(e.what()).find(std::string(what) + ": is for model boundaryElement (or the check of a map"),
-                      std::string::npos)
-                << e.what();
+            return std::string(e.what()).rfind(start, 0) == 0 ? std::string() : std::string(e.what());
         }
-        spec.check = true;
-        EXPECT_NO_THROW(ContactInterface{spec});
+    };
+    for (const char* what : {"periodic", "mirror", "detrend"}) {
+        SCOPED_TRACE(what);
+        for (InterfaceSpec spec : {steelOnCopper(), map}) {
+            const bool areal = spec.surfaces[0].kind == SurfaceSpec::Kind::areal;
+            if (std::string(what) == "periodic") {
+                spec.periodic = false;
+            } else if (std::string(what) == "mirror") {
+                spec.mirror = true;
+            } else {
+                spec.detrend = Detrend::plane;
+            }
+            EXPECT_EQ(refused(spec, std::string(what) + ": is for model boundaryElement (or the check of an areal map"),
+                      "");
+            spec.check = true;
+            if (areal || std::string(what) == "detrend") {
+                EXPECT_NO_THROW(ContactInterface{spec}) << (areal ? "map" : "profile");
+            } else {
+                EXPECT_EQ(refused(spec, std::string(what) + ": is for model boundaryElement"), "") << "profile";
+            }
+        }
     }
+    map.check = true;
+    map.periodic = true;
+    map.mirror = true;
+    EXPECT_EQ(refused(map, "mirror: a mirrored map is its own periodic surface"), "");
 }
 
 TEST(ContactInterface, HeldAtTableEndOnlyWhereMaxPressureCutTheTable)

@@ -265,6 +265,31 @@ TEST(TableRanks, RanksShareTheBuildAndAllHoldTheSameTable)
     }
 }
 
+TEST(TableRanks, APaddedMapsWarningIsTheSerialBuildsOnEveryRank)
+{
+    // The gains of the patch correction travel with the loads' values (BoundaryElementTable.cpp):
+    // a shared build warns of the same loads as a serial one, rank 0 logging it once, every rank
+    // holding it. The largest gain may differ: it is where h_spots meets h_patch, and the shared
+    // curves' warm starts move h_spots there by the solves' tolerance (measured: 6.95e9 serial,
+    // infinite shared), so the texts are compared up to the loads they name.
+    const std::string dir = freshDirectory("tableRanksPadded");
+    const InterfaceSpec spec = roughContactTest::smallPaddedMapSpec(dir + "/map.txt");
+    const std::string serial = BoundaryElementTable(spec).build().patchWarning;
+    ASSERT_NE(serial.find("not to be trusted"), std::string::npos) << serial;
+    const auto loadsNamed = [](const std::string& w) { return w.substr(0, w.find(") on:")); };
+    const std::vector<RankRun> runs = runJob(spec, 2, dir + "/table.csv");
+    for (std::size_t r = 0; r < 2; ++r) {
+        SCOPED_TRACE("rank " + std::to_string(r));
+        ASSERT_EQ(runs[r].error, "");
+        EXPECT_EQ(loadsNamed(runs[r].points.patchWarning), loadsNamed(serial));
+        EXPECT_EQ(runs[r].points.patchWarning, runs[0].points.patchWarning);
+    }
+    EXPECT_EQ(std::count(runs[0].log.begin(), runs[0].log.end(), "boundary-element table: " + runs[0].points.patchWarning),
+              1);
+    EXPECT_TRUE(runs[1].log.empty());
+    std::filesystem::remove_all(dir);
+}
+
 TEST(TableRanks, TableRanksLimitsTheSharingRanks)
 {
     InterfaceSpec spec = smallSpec();

@@ -36,6 +36,10 @@ namespace roughContact {
 
 namespace {
 
+// How a table's user asks for the mirrored solve (patchCorrectionWarning).
+const char* const patchWarningMirror =
+    "mirror true; in the contact entry, --mirror on the command line, mirror=True in Python";
+
 // Bumped whenever the meaning of a table changes for the same inputs (the solver, the
 // conductance, the file's layout): every older file is then foreign and rebuilt.
 // The version of what the table holds, in its key: 2 since the conductance of a non-periodic
@@ -326,7 +330,9 @@ BoundaryElementTablePoints BoundaryElementTable::build(const Progress& progress,
         conductances.push_back(p.conductancePerConductivity);
         separations.push_back(p.meanSeparation);
     }
-    return assemble(areas, conductances, separations);
+    BoundaryElementTablePoints points = assemble(areas, conductances, separations);
+    points.patchWarning = patchCorrectionWarning(curve, Eprime_, patchWarningMirror);
+    return points;
 }
 
 BoundaryElementTablePoints BoundaryElementTable::assemble(const std::vector<double>& areas,
@@ -782,7 +788,18 @@ BoundaryElementTablePoints BoundaryElementTable::loadOrBuild(const std::string& 
         return std::vector<double>(values.begin() + std::ptrdiff_t(c * n), values.begin() + std::ptrdiff_t((c + 1) * n));
     };
     // The same values on every rank, so the same table (or the same error).
-    const BoundaryElementTablePoints points = assemble(column(0), column(1), column(2));
+    BoundaryElementTablePoints points = assemble(column(0), column(1), column(2));
+    {
+        // A padded map near complete contact: its h_c is a difference of two nearly equal
+        // resistances (BoundaryElement.hpp, patchCorrectionGainLimit).
+        std::vector<BoundaryElementPoint> solved(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            solved[k].load = loads_[k];
+            solved[k].areaFraction = values[k];
+            solved[k].patchCorrectionGain = values[3 * n + k];
+        }
+        points.patchWarning = patchCorrectionWarning(solved, Eprime_, patchWarningMirror);
+    }
     std::vector<double> written{1.0};
     if (first) {
         try {
@@ -805,18 +822,8 @@ BoundaryElementTablePoints BoundaryElementTable::loadOrBuild(const std::string& 
        << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s: "
        << points.pressures.size() << " points; wrote " << path << " (key " << key_ << ")";
     say(os.str(), false);
-    // A padded map near complete contact: its h_c is a difference of two nearly equal
-    // resistances (BoundaryElement.hpp, patchCorrectionGainLimit).
-    std::vector<BoundaryElementPoint> solved(n);
-    for (std::size_t k = 0; k < n; ++k) {
-        solved[k].load = loads_[k];
-        solved[k].areaFraction = values[k];
-        solved[k].patchCorrectionGain = values[3 * n + k];
-    }
-    if (const std::string warning = patchCorrectionWarning(solved, "mirror true; in the contact entry, --mirror on "
-                                                                   "the command line, mirror=True in Python");
-        !warning.empty()) {
-        say("boundary-element table: " + warning, true);
+    if (!points.patchWarning.empty()) {
+        say("boundary-element table: " + points.patchWarning, true);
     }
     return points;
 }

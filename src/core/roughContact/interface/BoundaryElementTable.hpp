@@ -54,6 +54,10 @@ struct BoundaryElementTablePoints {
     /// h_c/k_s infinite): from there on the table gives complete contact; +inf: not reached.
     double completeContactPressure = std::numeric_limits<double>::infinity();
     ContactTable::End end = ContactTable::End::maxPressure;
+    /// A map solved padded: patchCorrectionWarning of the loads solved (where its h_c is not to
+    /// be trusted), or empty. Set by a build (build(), loadOrBuild() when it solves); not kept in
+    /// the file, so a table read back has none.
+    std::string patchWarning;
 
     /// The table these points make (ContactTable::fromPoints).
     ContactTable table(double Eprime) const;

@@ -4,6 +4,7 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/interface/InterfaceSpecReader.hpp"
 #include "roughContact/io/SpectrumReader.hpp"
+#include "roughContact/models/BoundaryElement.hpp"
 #include "roughContact/models/ModelFactory.hpp"
 #include "roughContact/surface/RoughnessSpectrum.hpp"
 #include "roughContact/surface/SurfaceChecksum.hpp"
@@ -126,6 +127,7 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
         const BoundaryElementTable bem(spec);
         const BoundaryElementTablePoints points = boundaryElementTable ? *boundaryElementTable : bem.build();
         table_ = std::make_unique<ContactTable>(points.table(bem.reducedModulus()));
+        tableWarning_ = points.patchWarning;
         std::ostringstream os;
         os << bem.surface().nx() << " x " << bem.surface().ny() << " "
            << (bem.mirrored() ? "mirrored" : bem.periodic() ? "periodic" : "non-periodic") << " "
@@ -145,11 +147,20 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
         buildGap(spec);
         return;
     }
-    // periodic, mirror and detrend also say how the check (check: SurfaceCheck.hpp) solves a
-    // map, so they are taken with it.
+    // periodic and mirror also say how the check (check: SurfaceCheck.hpp) solves a map, and
+    // detrend how it detrends what it solves, so they are taken with it: periodic and mirror
+    // for areal maps only (the check synthesizes periodic surfaces from a 1-D description), and
+    // not both.
+    const bool maps = !spec.surfaces.empty() && std::all_of(spec.surfaces.begin(), spec.surfaces.end(), [](const SurfaceSpec& s) {
+        return s.kind == SurfaceSpec::Kind::areal;
+    });
+    const bool ofCheckedMaps = spec.check && maps;
+    if (ofCheckedMaps) {
+        (void)edgesOf(spec.periodic.value_or(false), spec.mirror.value_or(false));
+    }
     for (const auto& [given, what] : {std::pair<bool, const char*>{spec.synthesize.has_value(), "synthesize"},
-                                      {spec.periodic.has_value() && !spec.check, "periodic"},
-                                      {spec.mirror.has_value() && !spec.check, "mirror"},
+                                      {spec.periodic.has_value() && !ofCheckedMaps, "periodic"},
+                                      {spec.mirror.has_value() && !ofCheckedMaps, "mirror"},
                                       {spec.detrend.has_value() && !spec.check, "detrend"},
                                       {spec.hardness.has_value(), "hardness"},
                                       {spec.hardnessFromYield, "hardnessFromYield"},
@@ -158,7 +169,7 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
             const bool ofTheCheck = std::string(what) == "periodic" || std::string(what) == "mirror" ||
                                     std::string(what) == "detrend";
             throw ParameterError(what, std::string("is for model boundaryElement") +
-                                           (ofTheCheck ? " (or the check of a map, check yes;)" : "") + ", not " +
+                                           (ofTheCheck ? " (or the check of an areal map, check yes;)" : "") + ", not " +
                                            spec.model);
         }
     }

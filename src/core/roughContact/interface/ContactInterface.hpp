@@ -181,6 +181,9 @@ public:
     const MultiscaleModel& model() const;
     /// The model's name: a multi-scale model's or boundaryElement.
     const std::string& modelName() const noexcept { return modelName_; }
+    /// model boundaryElement on a map solved padded: where its table's h_c is not to be trusted
+    /// (BoundaryElementTablePoints::patchWarning of the points it was made of), or empty.
+    const std::string& tableWarning() const noexcept { return tableWarning_; }
     const Spectrum& surface() const noexcept { return surface_; }
     /// What identifies the surface this interface was built on, so that a restart can tell a
     /// changed surface (16 hex digits, SurfaceChecksum.hpp): the spectrum's checksum; for
@@ -205,6 +208,7 @@ private:
     std::string conductanceLaw_;
     std::string modelName_;
     std::string bemSurface_; ///< boundaryElement: what was solved (for summary())
+    std::string tableWarning_;
     std::string surfaceChecksum_;
     std::optional<InterfaceGap> gap_;
     InterfaceRegime regime_;

@@ -375,7 +375,7 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
                 log(os.str());
             });
         if (const std::string warning =
-                patchCorrectionWarning(points, "mirror true; in the contact entry, --mirror with --check, "
+                patchCorrectionWarning(points, Ep, "mirror true; in the contact entry, --mirror with --check, "
                                                "mirror=True in Python");
             !warning.empty()) {
             out.exactWarning = warning + "; nor are the laws' ratios there";
@@ -383,9 +383,13 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
         for (std::size_t i = 0; i < count; ++i) {
             const double h = points[i].conductancePerConductivity;
             if (!(h > 0.0) || !std::isfinite(h)) {
-                throw ParameterError("check", "the exact conductance at " + number(out.pressures[i]) +
-                                                  " Pa is " + number(h) +
-                                                  " 1/m (no contact, or complete contact): check other pressures");
+                // A padded map's spots conducting as the bonded map (h infinite below complete
+                // contact) is the patch correction's failure, which the warning says.
+                const bool patch = points[i].patchCorrectionGain > patchCorrectionGainLimit;
+                throw ParameterError("check", "the exact conductance at " + number(out.pressures[i]) + " Pa is " +
+                                                  number(h) + " 1/m (" +
+                                                  (patch ? out.exactWarning : std::string("no contact, or complete contact")) +
+                                                  "): check other pressures");
             }
             logSum[i] += std::log(h);
             areaSum[i] += points[i].areaFraction;

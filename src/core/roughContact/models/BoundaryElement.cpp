@@ -100,7 +100,7 @@ BoundaryElementPoint BoundaryElementModel::solve(double load, std::vector<double
         out.plasticFraction = 1.0;
         out.conductancePerConductivity = std::numeric_limits<double>::infinity();
         out.spotsConductancePerConductivity = patchConductance_;
-        out.patchCorrectionGain = std::isfinite(patchConductance_) ? std::numeric_limits<double>::infinity() : 1.0;
+        out.patchCorrectionGain = 1.0; // nothing is subtracted: complete contact is exact
         return out;
     }
     ContactSolution s = solver_->solve(P, warmStart);
@@ -199,7 +199,8 @@ std::vector<BoundaryElementPoint> BoundaryElementModel::curve(
     return out;
 }
 
-std::string patchCorrectionWarning(const std::vector<BoundaryElementPoint>& points, const std::string& mirror)
+std::string patchCorrectionWarning(const std::vector<BoundaryElementPoint>& points, double Eprime,
+                                   const std::string& mirror)
 {
     std::size_t count = 0;
     const BoundaryElementPoint* lowest = nullptr;
@@ -218,11 +219,15 @@ std::string patchCorrectionWarning(const std::vector<BoundaryElementPoint>& poin
     }
     std::ostringstream os;
     os.precision(3);
-    os << "the map's h_c is not to be trusted at " << count << " of " << points.size() << " loads, from F/(A_n E') = "
-       << lowest->load << " on (A_r/A_n = " << lowest->areaFraction
-       << "): its spots conduct nearly as the whole map bonded does, and 1/h_c = 1/h_spots - 1/h_patch multiplies "
-          "their error up to "
-       << largest << " times (above " << patchCorrectionGainLimit
+    os << "the map's h_c is not to be trusted at " << count << " of " << points.size() << " loads, from P = "
+       << lowest->load * Eprime << " Pa (F/(A_n E') = " << lowest->load << ", A_r/A_n = " << lowest->areaFraction
+       << ") on: its spots conduct nearly as the whole map bonded does, and 1/h_c = 1/h_spots - 1/h_patch ";
+    if (std::isinf(largest)) {
+        os << "multiplies their error without bound (at some load the spots conduct as the bonded map: h_c infinite)";
+    } else {
+        os << "multiplies their error up to " << largest << " times";
+    }
+    os << " (above " << patchCorrectionGainLimit
        << "; on a measured map such points were 1.06-1.96 times the map solved mirrored). Solve the map mirrored ("
        << mirror << ") for the interface's h_c there";
     return os.str();

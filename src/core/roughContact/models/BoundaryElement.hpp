@@ -70,7 +70,8 @@ struct BoundaryElementPoint {
     double spotsConductancePerConductivity = 0.0;
     /// Non-periodic: how many times 1/h_c = 1/h_spots - 1/h_patch multiplies a relative error of
     /// h_spots into h_c, 1/(1 - h_spots/h_patch) = 1 + h_c/h_patch (+inf when the spots conduct
-    /// as the bonded patch does); periodic and mirrored: 1 (nothing is removed). Above
+    /// as the bonded patch does); periodic and mirrored: 1 (nothing is removed); 1 at P >= H too
+    /// (every point flows: complete contact, exact without a correction). Above
     /// patchCorrectionGainLimit the padded answer is not to be trusted (patchCorrectionWarning).
     double patchCorrectionGain = 1.0;
     std::size_t iterations = 0;              ///< contact solve
@@ -84,14 +85,15 @@ struct BoundaryElementPoint {
 /// resistances amplifies any error of the series picture: at a gain of 50 a 0.5 % error of h_spots
 /// is 25 % of h_c. On the X3P map against the same map solved mirrored (the engineering range's
 /// 48 points, docs/validation/boundaryElement.md): 0.87-1.16 at gains up to 39, and 1.22, 1.06,
-/// 1.90 and 1.96 at gains 51, 70, 172 and 205 (41-64 % contact).
+/// 1.90 and 1.96 at gains 51, 70, 172 and 205 (39-64 % contact).
 inline constexpr double patchCorrectionGainLimit = 50.0;
 
 /// A warning for the points of a padded map's curve whose patchCorrectionGain exceeds
-/// patchCorrectionGainLimit: how many, from which load on, the largest gain, and that the map
-/// solved mirrored (the front-end's option `mirror`) gives the interface's h_c there. Empty when
-/// none does (always for periodic and mirrored solves).
-std::string patchCorrectionWarning(const std::vector<BoundaryElementPoint>& points, const std::string& mirror);
+/// patchCorrectionGainLimit: how many, from which pressure on (P = load x Eprime [Pa] and the
+/// load), the largest gain, and that the map solved mirrored (the front-end's option `mirror`)
+/// gives the interface's h_c there. Empty when none does (always for periodic and mirrored solves).
+std::string patchCorrectionWarning(const std::vector<BoundaryElementPoint>& points, double Eprime,
+                                   const std::string& mirror);
 
 /// The conductance of a measured (non-periodic) map. The map is a patch of an unbounded
 /// half-space; the heat through its spots then also has to spread from the patch into the
