@@ -2,6 +2,7 @@
 #include "roughContact/bem/HalfSpaceOperator.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/bem/GridMemory.hpp"
 #include "roughContact/parallel/Threads.hpp"
 
 #include <fftw3.h>
@@ -47,8 +48,8 @@ double stiffness(double q, double Eprime, double smallest)
     return std::max(0.5 * Eprime * q, smallest);
 }
 
-template <class T> struct FftwFree {
-    void operator()(T* p) const { fftw_free(p); }
+template <class T> struct GridFree {
+    void operator()(T* p) const { freeGridMemory(p); }
 };
 
 std::string& wisdomPath()
@@ -126,8 +127,8 @@ struct HalfSpaceOperator::Fft {
     std::size_t my;
     std::size_t hx; // mx / 2 + 1 complex values a row
     bool blocked;
-    std::unique_ptr<double, FftwFree<double>> real; // 2-D plans only
-    std::unique_ptr<fftw_complex, FftwFree<fftw_complex>> spectral;
+    std::unique_ptr<double, GridFree<double>> real; // 2-D plans only
+    std::unique_ptr<fftw_complex, GridFree<fftw_complex>> spectral;
     fftw_plan forward = nullptr;  // 2-D, or a row's r2c
     fftw_plan backward = nullptr; // 2-D, or a row's c2r
     // Blocked: the columns' c2c transforms, in place on a buffer of columnBlock columns of my
@@ -139,12 +140,12 @@ struct HalfSpaceOperator::Fft {
     int realAlignment = 0; // fftw_alignment_of the buffers the row plans were made on
     // Blocked: a row and a block of columns for each thread, made at the first transform and
     // kept (an operator is used by one solve at a time: HalfSpaceOperator::pairs_).
-    mutable std::vector<std::unique_ptr<double, FftwFree<double>>> rowBuffers;
-    mutable std::vector<std::unique_ptr<fftw_complex, FftwFree<fftw_complex>>> columnBuffers;
+    mutable std::vector<std::unique_ptr<double, GridFree<double>>> rowBuffers;
+    mutable std::vector<std::unique_ptr<fftw_complex, GridFree<fftw_complex>>> columnBuffers;
 
     Fft(std::size_t mx_, std::size_t my_) : mx(mx_), my(my_), hx(mx_ / 2 + 1)
     {
-        spectral.reset(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * my * hx)));
+        spectral.reset(static_cast<fftw_complex*>(allocateGridMemory(sizeof(fftw_complex) * my * hx)));
         if (!spectral) {
             throw std::bad_alloc();
         }
@@ -153,9 +154,9 @@ struct HalfSpaceOperator::Fft {
         blocked = flag == FFTW_ESTIMATE;
         if (blocked) {
             planFor(1);
-            const std::unique_ptr<double, FftwFree<double>> row(static_cast<double*>(fftw_malloc(sizeof(double) * mx)));
-            const std::unique_ptr<fftw_complex, FftwFree<fftw_complex>> columns(
-                static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * columnBlock * my)));
+            const std::unique_ptr<double, GridFree<double>> row(static_cast<double*>(allocateGridMemory(sizeof(double) * mx)));
+            const std::unique_ptr<fftw_complex, GridFree<fftw_complex>> columns(
+                static_cast<fftw_complex*>(allocateGridMemory(sizeof(fftw_complex) * columnBlock * my)));
             if (!row || !columns) {
                 throw std::bad_alloc();
             }
@@ -183,7 +184,7 @@ struct HalfSpaceOperator::Fft {
             }
             return;
         }
-        real.reset(static_cast<double*>(fftw_malloc(sizeof(double) * mx * my)));
+        real.reset(static_cast<double*>(allocateGridMemory(sizeof(double) * mx * my)));
         if (!real) {
             throw std::bad_alloc();
         }
@@ -228,9 +229,9 @@ struct HalfSpaceOperator::Fft {
 };
 
 namespace {
-template <class T> std::unique_ptr<T, FftwFree<T>> fftwArray(std::size_t n)
+template <class T> std::unique_ptr<T, GridFree<T>> fftwArray(std::size_t n)
 {
-    std::unique_ptr<T, FftwFree<T>> a(static_cast<T*>(fftw_malloc(sizeof(T) * n)));
+    std::unique_ptr<T, GridFree<T>> a(static_cast<T*>(allocateGridMemory(sizeof(T) * n)));
     if (!a) {
         throw std::bad_alloc();
     }
@@ -242,7 +243,7 @@ template <class T> std::unique_ptr<T, FftwFree<T>> fftwArray(std::size_t n)
 // there are fewer than pieces, before the threads start: a loop's body must not throw). Which
 // thread does a piece changes nothing in it.
 template <class T, class Body>
-void inPieces(std::size_t n, std::size_t weight, std::vector<std::unique_ptr<T, FftwFree<T>>>& buffers,
+void inPieces(std::size_t n, std::size_t weight, std::vector<std::unique_ptr<T, GridFree<T>>>& buffers,
               std::size_t bufferSize, Body&& body)
 {
     const std::size_t pieces = std::max<std::size_t>(1, std::min<std::size_t>(n, std::size_t(threads())));
@@ -251,7 +252,7 @@ void inPieces(std::size_t n, std::size_t weight, std::vector<std::unique_ptr<T, 
     }
     struct Context {
         Body& body;
-        std::vector<std::unique_ptr<T, FftwFree<T>>>& buffers;
+        std::vector<std::unique_ptr<T, GridFree<T>>>& buffers;
         std::size_t n;
         std::size_t pieces;
     } context{body, buffers, n, pieces};
@@ -376,14 +377,14 @@ double HalfSpaceOperator::bytesFor(std::size_t nx, std::size_t ny, bool periodic
 struct HalfSpaceOperator::Dct {
     std::size_t nx;
     std::size_t ny;
-    std::unique_ptr<double, FftwFree<double>> grid;
+    std::unique_ptr<double, GridFree<double>> grid;
     fftw_plan rowForward = nullptr;
     fftw_plan rowBackward = nullptr;
     fftw_plan columnsForward = nullptr; // columnBlock columns of ny values, contiguous
     fftw_plan columnsBackward = nullptr;
     fftw_plan restForward = nullptr; // the last block's nx % columnBlock columns
     fftw_plan restBackward = nullptr;
-    mutable std::vector<std::unique_ptr<double, FftwFree<double>>> columnBuffers;
+    mutable std::vector<std::unique_ptr<double, GridFree<double>>> columnBuffers;
 
     Dct(std::size_t nx_, std::size_t ny_);
     ~Dct()
@@ -618,7 +619,7 @@ void HalfSpaceOperator::makeMirrored()
 
 HalfSpaceOperator::~HalfSpaceOperator() = default;
 
-void HalfSpaceOperator::convolve(const std::vector<double>& multiplier, const double* in, double* out) const
+void HalfSpaceOperator::convolve(const GridField& multiplier, const double* in, double* out) const
 {
     ++pairs_;
     if (dct_) {

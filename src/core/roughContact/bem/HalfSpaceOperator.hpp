@@ -3,6 +3,8 @@
 // pressure p causes, u = K p, evaluated with FFTs (FFTW, plans made once and reused).
 #pragma once
 
+#include "roughContact/bem/GridMemory.hpp"
+
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -98,7 +100,7 @@ private:
     struct Dct;
     void makeStiffness();
     void makeMirrored();
-    void convolve(const std::vector<double>& multiplier, const double* in, double* out) const;
+    void convolve(const GridField& multiplier, const double* in, double* out) const;
     mutable std::size_t pairs_ = 0; // convolve() calls (an operator is used by one solve at a time)
     std::size_t nx_;
     std::size_t ny_;
@@ -108,8 +110,8 @@ private:
     Edges edges_;
     std::size_t mx_; ///< FFT grid: nx (periodic, mirrored) or 2 nx (padded)
     std::size_t my_;
-    std::vector<double> kernel_; ///< the real, symmetric kernel's transform, my x (mx/2 + 1); mirrored: ny x nx
-    std::vector<double> stiffness_; ///< S's multiplier, the same layout
+    GridField kernel_; ///< the real, symmetric kernel's transform, my x (mx/2 + 1); mirrored: ny x nx
+    GridField stiffness_; ///< S's multiplier, the same layout
     double smallestStiffness_ = 0.0;
     std::unique_ptr<Fft> fft_; ///< padded, periodic
     std::unique_ptr<Dct> dct_; ///< mirrored

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/bem/PolonskyKeer.hpp"
+#include "roughContact/bem/GridMemory.hpp"
 
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
@@ -135,7 +136,7 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
         double k = 1.0;
         std::size_t atCap = 0;
     };
-    const auto balance = [&](std::vector<double>& q, const std::vector<double>& rank) {
+    const auto balance = [&](std::vector<double>& q, const auto& rank) {
         Balanced b;
         bool& changed = b.changed;
         for (int pass = 0; pass < 100; ++pass) {
@@ -244,14 +245,15 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
             }
         }
     }
-    std::vector<double> u(n); // K p
-    std::vector<double> g(n); // separation: u - h less its mean on the active set
-    std::vector<double> t(n, 0.0);
-    std::vector<double> r(n);
-    std::vector<double> z(options_.precondition ? n : 0);    // the preconditioned gap
-    std::vector<double> zOut(options_.precondition ? n : 0); // S of the penetration outside
-    std::vector<double> zRel(options_.precondition && capped ? n : 0); // S of the opening at H
-    std::vector<double> uH(capped ? n : 0); // K of the points at H alone
+    // (In grid memory: huge pages where the kernel gives them, GridMemory.hpp.)
+    GridField u(n); // K p
+    GridField g(n); // separation: u - h less its mean on the active set
+    GridField t(n, 0.0);
+    GridField r(n);
+    GridField z(options_.precondition ? n : 0);    // the preconditioned gap
+    GridField zOut(options_.precondition ? n : 0); // S of the penetration outside
+    GridField zRel(options_.precondition && capped ? n : 0); // S of the opening at H
+    GridField uH(capped ? n : 0); // K of the points at H alone
     bool uHCurrent = false;
     double delta = 0.0;
     double Gold = 1.0;
@@ -323,8 +325,8 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
             // The projected gradients start from p alone: the conjugate gradients' arrays go
             // first, so that the two solvers' arrays are never held at once (at 4096^2 that
             // was 2.70 GB at the peak instead of 2.06: docs/benchmarks.md).
-            for (std::vector<double>* v : {&u, &g, &t, &r, &z, &zOut, &zRel, &uH}) {
-                std::vector<double>().swap(*v);
+            for (GridField* v : {&u, &g, &t, &r, &z, &zOut, &zRel, &uH}) {
+                GridField().swap(*v);
             }
             ContactSolution rest = solveCapped(P, &p, options_.maxIterations - it);
             rest.iterations += it;
@@ -381,7 +383,7 @@ ContactSolution PolonskyKeer::solve(double P, const std::vector<double>* warmSta
                 op_.applyStiffness(zRel.data(), zRel.data());
             }
         }
-        const std::vector<double>& direction = options_.precondition ? z : g;
+        const GridField& direction = options_.precondition ? z : g;
         // Gold is 0 after an iteration whose gap vanished exactly on the contact set (one
         // point in contact): restart the conjugate direction then instead of dividing by it.
         const double beta = delta > 0.0 && Gold > 0.0 ? delta * G / Gold : 0.0;
@@ -507,7 +509,7 @@ ContactSolution PolonskyKeer::finish(std::vector<double> p, double P, ContactSol
     // The reported state: the final pressure's displacement and separations.
     const std::size_t n = h_.size();
     const double H = options_.hardness ? *options_.hardness : std::numeric_limits<double>::infinity();
-    std::vector<double> u(n);
+    GridField u(n);
     op_.apply(p.data(), u.data());
     std::size_t nc = 0;
     std::size_t nh = 0;
@@ -693,11 +695,11 @@ SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<b
     // Conjugate gradients for K_cc x = 1 (K restricted to the contact set: symmetric positive
     // definite), x = 0 off the set, preconditioned with the stiffness restricted to the set
     // (HalfSpaceOperator::applyStiffness; symmetric positive definite too).
-    std::vector<double> x(n, 0.0);
-    std::vector<double> res(n, 0.0);
-    std::vector<double> z(n, 0.0);
-    std::vector<double> d(n, 0.0);
-    std::vector<double> Kd(n);
+    GridField x(n, 0.0);
+    GridField res(n, 0.0);
+    GridField z(n, 0.0);
+    GridField d(n, 0.0);
+    GridField Kd(n);
     const bool warm = initial != nullptr && initial->size() == n;
     if (warm) {
         for (std::size_t i = 0; i < n; ++i) {
@@ -764,7 +766,7 @@ SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<b
     mean /= double(n);
     out.perConductivity = mean / op.reducedModulus();
     if (solution != nullptr) {
-        *solution = std::move(x);
+        solution->assign(x.begin(), x.end());
     }
     return out;
 }

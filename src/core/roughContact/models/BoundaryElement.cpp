@@ -261,7 +261,7 @@ constexpr double patchEvaluations = 60.0;
 
 double estimatedCurveSeconds(const HalfSpaceOperator& op, std::size_t loads)
 {
-    std::vector<double> p(op.size(), 1.0);
+    GridField p(op.size(), 1.0);
     double best = std::numeric_limits<double>::infinity();
     for (int k = 0; k < 3; ++k) {
         const auto start = std::chrono::steady_clock::now();
