@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The memory of the boundary-element grids (bem/GridMemory.hpp): aligned as the transforms need
 // (64 bytes) and, from 2 MiB on, to whole huge pages advised to the kernel; a GridField holds
-// its values as any vector does. Whether the kernel then gives huge pages is its own choice
-// (printed where it can be seen, not asserted: a fragmented machine may have none to give).
+// its values as any vector does. The advice is checked where the kernel takes it (the
+// mapping's VmFlags); whether the kernel then gives huge pages is its own choice (printed, not
+// asserted: a fragmented machine may have none to give).
 #include "roughContact/bem/GridMemory.hpp"
 
 #include <gtest/gtest.h>
@@ -20,24 +21,36 @@ std::uintptr_t address(const void* p)
     return reinterpret_cast<std::uintptr_t>(p);
 }
 
-// The kB of huge pages in the mapping that holds p (/proc/self/smaps), or -1 where unknown.
-long hugeKilobytesAt(const void* p)
+// The lines of the mapping that holds p in /proc/self/smaps (empty where there is none).
+std::string mappingOf(const void* p)
 {
     std::ifstream smaps("/proc/self/smaps");
-    std::string line;
+    std::string line, out;
     bool inside = false;
     while (std::getline(smaps, line)) {
         unsigned long lo = 0, hi = 0;
         if (std::sscanf(line.c_str(), "%lx-%lx ", &lo, &hi) == 2) { // a mapping's first line
             inside = address(p) >= lo && address(p) < hi;
-            continue;
         }
-        long kb = 0;
-        if (inside && std::sscanf(line.c_str(), "AnonHugePages: %ld kB", &kb) == 1) {
-            return kb;
+        if (inside) {
+            out += line + "\n";
         }
     }
-    return -1;
+    return out;
+}
+
+// Advised for huge pages: the mapping's VmFlags carry "hg" (MADV_HUGEPAGE).
+bool advised(const void* p)
+{
+    const std::string m = mappingOf(p);
+    const std::size_t flags = m.find("VmFlags:");
+    return flags != std::string::npos && m.find(" hg", flags) != std::string::npos;
+}
+
+// The kernel has transparent huge pages (it takes the advice).
+bool kernelHasHugePages()
+{
+    return std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled").good();
 }
 } // namespace
 
@@ -53,6 +66,14 @@ TEST(GridMemory, SmallArraysAreAlignedForTheTransformsAndLargeOnesToHugePages)
         void* p = allocateGridMemory(bytes);
         EXPECT_EQ(address(p) % huge, 0u) << bytes;
         static_cast<char*>(p)[bytes - 1] = 1; // the last byte is there
+        if (kernelHasHugePages()) {
+            // Its whole huge pages advised, and no more: the part past them (a grid's last
+            // rows) is not, so that nothing is rounded up to a whole huge page.
+            EXPECT_TRUE(advised(p)) << bytes << "\n" << mappingOf(p);
+            if (bytes % huge != 0) {
+                EXPECT_FALSE(advised(static_cast<char*>(p) + bytes / huge * huge)) << bytes;
+            }
+        }
         freeGridMemory(p);
     }
     EXPECT_THROW(GridAllocator<double>().allocate(std::size_t(-1) / 4), std::bad_alloc);
@@ -71,13 +92,9 @@ TEST(GridMemory, AGridFieldIsAVectorOfItsValues)
     EXPECT_EQ(copy, f);
     GridField().swap(f);
     EXPECT_TRUE(f.empty());
-    const long kb = hugeKilobytesAt(copy.data());
-    std::printf("the copy's mapping holds %ld kB of huge pages (transparent_hugepage: %s)\n", kb,
-                [] {
-                    std::ifstream s("/sys/kernel/mm/transparent_hugepage/enabled");
-                    std::string v;
-                    std::getline(s, v);
-                    return v;
-                }()
-                    .c_str());
+    // Whether the kernel gave huge pages is its choice (a fragmented machine may have none):
+    // printed, not asserted.
+    const std::string m = mappingOf(copy.data());
+    const std::size_t at = m.find("AnonHugePages:");
+    std::printf("the copy's mapping: %s", at == std::string::npos ? "unknown\n" : m.substr(at, m.find('\n', at) - at + 1).c_str());
 }

@@ -17,18 +17,17 @@ constexpr std::size_t simdAlignment = 64;
 void* allocateGridMemory(std::size_t bytes)
 {
     const bool huge = bytes >= hugePage;
-    const std::size_t alignment = huge ? hugePage : simdAlignment;
-    // Whole huge pages, so that the last one is not shared with other data.
-    const std::size_t size = huge ? (bytes + hugePage - 1) / hugePage * hugePage : (bytes > 0 ? bytes : 1);
     void* p = nullptr;
-    if (posix_memalign(&p, alignment, size) != 0 || p == nullptr) {
+    if (posix_memalign(&p, huge ? hugePage : simdAlignment, bytes > 0 ? bytes : 1) != 0 || p == nullptr) {
         throw std::bad_alloc();
     }
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     if (huge) {
-        // Advice only: where the kernel has no huge pages (or they are off) this fails and the
-        // memory stays in small pages.
-        (void)madvise(p, size, MADV_HUGEPAGE);
+        // The whole huge pages inside the array only: its last part (a grid's rows of mx/2 + 1
+        // values end just past a page) stays in small pages, so no memory is added. Advice
+        // only: a kernel without transparent huge pages refuses it (EINVAL), one with them
+        // turned off ignores it, and the memory stays in small pages.
+        (void)madvise(p, bytes / hugePage * hugePage, MADV_HUGEPAGE);
     }
 #endif
     return p;

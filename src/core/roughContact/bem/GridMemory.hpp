@@ -3,13 +3,13 @@
 // A grid of 1024^2 doubles is 8 MiB, 2048 pages of 4 KiB: the transforms' column passes step
 // through it a row (a page or more) at a time, each step a miss of the processor's page table
 // cache (TLB), and every page is a fault when first written. Arrays of 2 MiB and more are
-// therefore aligned to 2 MiB and advised to the kernel as transparent huge pages (Linux
-// madvise(MADV_HUGEPAGE); the kernel's default, "madvise", gives huge pages only to memory so
-// advised): 4 pages instead of 2048. Measured (docs/benchmarks.md, "Huge pages for the grids"):
-// a cold solve 5 % faster on one thread at 1024^2 and 2048^2, and two threads 1.71-1.88 times
-// faster than one at 1024^2 instead of 1.62-1.67 (the page faults were one thread's alone).
-// Where the kernel gives no huge pages the memory is the same, in small pages. The values are
-// the same either way: only where they live changes.
+// therefore aligned to 2 MiB and their whole 2 MiB pages advised to the kernel as transparent
+// huge pages (Linux madvise(MADV_HUGEPAGE); with the setting "madvise", Debian's, the kernel
+// gives huge pages only to memory so advised; with "always" it gives them anyway, and this
+// adds nothing): 4 pages instead of 2048. Measured (docs/benchmarks.md, "Huge pages for the
+// grids"): a cold solve 5 % faster on one thread at 1024^2 and 2048^2, 6-13 % on two threads at
+// 1024^2. Where the kernel gives no huge pages the memory is the same, in small pages. The
+// values are the same either way: only where they live changes.
 #pragma once
 
 #include <cstddef>
@@ -19,8 +19,8 @@
 
 namespace roughContact {
 
-/// At least `bytes` of memory aligned to 64 bytes (what FFTW's SIMD needs), and from 2 MiB on
-/// aligned to 2 MiB and advised for huge pages; std::bad_alloc when there is none. Not
+/// `bytes` of memory aligned to 64 bytes (FFTW's SIMD needs 16), and from 2 MiB on aligned to
+/// 2 MiB, its whole 2 MiB pages advised for huge pages; std::bad_alloc when there is none. Not
 /// initialized. Free it with freeGridMemory.
 void* allocateGridMemory(std::size_t bytes);
 void freeGridMemory(void* p) noexcept;

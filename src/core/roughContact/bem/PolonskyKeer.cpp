@@ -695,7 +695,7 @@ SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<b
     // Conjugate gradients for K_cc x = 1 (K restricted to the contact set: symmetric positive
     // definite), x = 0 off the set, preconditioned with the stiffness restricted to the set
     // (HalfSpaceOperator::applyStiffness; symmetric positive definite too).
-    GridField x(n, 0.0);
+    std::vector<double> x(n, 0.0); // the solution, handed out (moved) at the end
     GridField res(n, 0.0);
     GridField z(n, 0.0);
     GridField d(n, 0.0);
@@ -766,7 +766,7 @@ SpotConductance spotConductance(const HalfSpaceOperator& op, const std::vector<b
     mean /= double(n);
     out.perConductivity = mean / op.reducedModulus();
     if (solution != nullptr) {
-        solution->assign(x.begin(), x.end());
+        *solution = std::move(x);
     }
     return out;
 }
