@@ -17,6 +17,7 @@
 #include "roughContact/io/Units.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
+#include "roughContact/surface/SpectralMoments.hpp"
 #include "roughContact/surface/SpectralResampling.hpp"
 #include "roughContact/surface/Profile.hpp"
 #include "roughContact/surface/Roughness.hpp"
@@ -232,6 +233,9 @@ void bindSurfaces(py::module_& m)
           "sigma [m] and the mean absolute slope of a spectrum (Gaussian slopes assumed).");
     m.def("combined_roughness", &combined, py::arg("a"), py::arg("b"),
           "The equivalent roughness of two surfaces: sigma and m added in quadrature.");
+    m.def("spectral_bandwidth_ratio", &spectralBandwidthRatio, py::arg("spectrum"),
+          "W = m1/sqrt(m0 m2) of a line-scan spectrum (0 < W <= 1, 1 for a single level): the "
+          "conductance law fittedElastoPlastic's plastic spots are spaced by W m/sigma.");
 }
 
 } // namespace roughcontact_py

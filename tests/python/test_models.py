@@ -66,6 +66,28 @@ def test_pressures_equal_the_cli_pressures_option(cli, spectrum, steel):
     np.testing.assert_allclose(law.conductance_per_conductivity(P), c["h_per_k"], rtol=1e-9)
 
 
+def test_fitted_elasto_plastic_takes_the_spectrums_bandwidth_ratio(spectrum):
+    # W = m1/sqrt(m0 m2) of the line-scan spectrum: by hand from its levels (beta^2/2 weights).
+    k = 2 * np.pi * np.asarray(spectrum.frequencies)
+    w = 0.5 * np.asarray(spectrum.amplitudes) ** 2
+    W = (k * w).sum() / np.sqrt(w.sum() * (k * k * w).sum())
+    assert rc.spectral_bandwidth_ratio(spectrum) == pytest.approx(W, rel=1e-12)
+    assert 0 < W < 1
+    assert rc.spectral_bandwidth_ratio(rc.Spectrum([2e3], [1e-7], 1e-3)) == pytest.approx(1.0, rel=1e-15)
+    # The law needs the spectrum beside sigma and m, and says so without one.
+    r = rc.spectrum_roughness(spectrum)
+    with pytest.raises(rc.ParameterError, match="line-scan spectrum"):
+        rc.ConductanceLaw("fittedElastoPlastic", roughness=r, Eprime=1e11, hardness=1e9)
+    # Capped, a narrower spectrum (a larger W) of the same sigma and m conducts more.
+    broad = rc.ConductanceLaw("fittedElastoPlastic", spectrum=spectrum, roughness=r, Eprime=1e11, hardness=1e9)
+    narrow = rc.ConductanceLaw("fittedElastoPlastic", spectrum=rc.Spectrum([2e3], [1e-7], 1e-3), roughness=r,
+                               Eprime=1e11, hardness=1e9)
+    assert narrow.conductance_per_conductivity(1e8) > broad.conductance_per_conductivity(1e8)
+    elastic = [rc.ConductanceLaw("fittedElastoPlastic", spectrum=s, roughness=r, Eprime=1e11)
+               for s in (spectrum, rc.Spectrum([2e3], [1e-7], 1e-3))]
+    assert elastic[0].conductance_per_conductivity(1e8) == elastic[1].conductance_per_conductivity(1e8)
+
+
 @pytest.mark.parametrize("law_name", ["jacksonBhavnaniFerguson", "multiscaleBarber", "persson", "mikic"])
 def test_conductance_laws_equal_the_cli(cli, spectrum, steel, law_name):
     r = cli("--profile", STANDIN, "--model", "jacksonGreen", *STEEL_ARGS, "--loads", ",".join(map(repr, LOADS)),

@@ -17,6 +17,7 @@
 #include "roughContact/models/Persson.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
+#include "roughContact/surface/SpectralMoments.hpp"
 #include "roughContact/surface/SpectralResampling.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/surface/Roughness.hpp"
@@ -197,7 +198,8 @@ TEST(Cli, ConductanceColumnIsTheLibrarys)
     for (const auto& row : csv.rows) {
         const double load = std::stod(row.at(0));
         const double expected = fittedElastoPlasticConductancePerConductivity(
-            load * mat.reducedModulus(), profileRoughness(readProfile(standin)), mat.reducedModulus(), 2.84 * 0.2e9);
+            load * mat.reducedModulus(), profileRoughness(readProfile(standin)), spectralBandwidthRatio(s),
+            mat.reducedModulus(), 2.84 * 0.2e9);
         EXPECT_NEAR(std::stod(row.at(hi)), expected, 1e-9 * expected);
         EXPECT_EQ(row.at(sep), ""); // neither the multi-scale model nor the law defines a mean separation
     }

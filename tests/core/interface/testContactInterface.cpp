@@ -9,6 +9,8 @@
 #include "roughContact/io/X3pReader.hpp"
 #include "roughContact/models/ModelFactory.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
+#include "roughContact/surface/SpectralMoments.hpp"
+#include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 #include "roughContact/thermal/CooperMikicYovanovich.hpp"
@@ -58,11 +60,12 @@ TEST(ContactInterface, EqualsTheHandBuiltModel)
     // copper, which yields first; the area the multi-scale model's.
     EXPECT_EQ(defaultConductanceLaw(), "fittedElastoPlastic");
     const SurfaceRoughness r = profileRoughness(readProfile(standin));
+    const double W = spectralBandwidthRatio(Spectrum::fromProfile(readProfile(standin)));
     for (double P : {1e3, 1e5, 1e6, 1e7, 1e8}) {
         SCOPED_TRACE(P);
         const double load = P / mat.reducedModulus();
         EXPECT_NEAR(ci.areaFraction(P), m.areaFraction(load), 0.005 * m.areaFraction(load));
-        const double h = fittedElastoPlasticConductancePerConductivity(P, r, mat.reducedModulus(), 2.84 * 0.07e9);
+        const double h = fittedElastoPlasticConductancePerConductivity(P, r, W, mat.reducedModulus(), 2.84 * 0.07e9);
         EXPECT_NEAR(ci.conductancePerConductivity(P), h, 0.005 * h);
     }
     // jacksonBhavnaniFerguson by name: the multi-scale constriction sum of the same model.

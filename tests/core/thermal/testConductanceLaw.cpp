@@ -8,6 +8,7 @@
 #include "roughContact/models/MultiscaleModel.hpp"
 #include "roughContact/models/Persson.hpp"
 #include "roughContact/surface/Roughness.hpp"
+#include "roughContact/surface/SpectralMoments.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
@@ -79,7 +80,8 @@ TEST(ConductanceLaw, EveryNameBuildsAndIsTheFormulaItNames)
             } else if (name == "cooperMikicYovanovich") {
                 expected = cooperMikicYovanovichConductancePerConductivity(P, *in.roughness, 1.42e9);
             } else if (name == "fittedElastoPlastic") {
-                expected = fittedElastoPlasticConductancePerConductivity(P, *in.roughness, in.Eprime, 1.2e9);
+                expected = fittedElastoPlasticConductancePerConductivity(P, *in.roughness, spectralBandwidthRatio(s),
+                                                                         in.Eprime, 1.2e9);
             } else {
                 ADD_FAILURE() << "no expectation for the law " << name;
             }

@@ -4,6 +4,7 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -27,6 +28,19 @@ SpectralMoments spectralMoments(const Spectrum& spectrum)
         m.m4 += k2 * k2 * power;
     }
     return m;
+}
+
+double spectralBandwidthRatio(const Spectrum& spectrum)
+{
+    const SpectralMoments m = spectralMoments(spectrum);
+    double m1 = 0.0;
+    for (std::size_t i = 0; i < spectrum.size(); ++i) {
+        m1 += 2.0 * pi * spectrum.frequency(i) * 0.5 * spectrum.amplitude(i) * spectrum.amplitude(i);
+    }
+    requirePositive("spectral moment m0", m.m0);
+    requirePositive("spectral moment m2", m.m2);
+    // m1^2 <= m0 m2; rounding can put a single level's ratio a few ulps above 1.
+    return std::min(1.0, m1 / std::sqrt(m.m0 * m.m2));
 }
 
 SummitParameters mcCoolParameters(const SpectralMoments& m)

@@ -22,6 +22,16 @@ struct SpectralMoments {
 /// Levels with beta_k = 0 contribute nothing.
 SpectralMoments spectralMoments(const Spectrum& spectrum);
 
+/// The spectrum's bandwidth ratio W = m1/sqrt(m0 m2), m1 = sum_k (2 pi f_k) beta_k^2/2 the first
+/// moment (docs/theory.md §4.1): the heights' power-weighted mean wavenumber m1/m0 over the
+/// slopes' rms wavenumber sqrt(m2/m0). 0 < W <= 1 (Cauchy-Schwarz), 1 for a single level; a broad
+/// spectrum whose heights live at long wavelengths and whose slopes at short ones has a small W
+/// (0.46 for a self-affine spectrum of Hurst exponent 0.5 over 64 levels without a roll-off, 0.79
+/// for Hurst 0.8 rolled off at the 16th level). Vanmarcke's bandwidth factor is sqrt(1 - W^2).
+/// The conductance law fittedElastoPlastic takes it (FittedElastoPlastic.hpp). ParameterError
+/// when m0 or m2 is zero.
+double spectralBandwidthRatio(const Spectrum& spectrum);
+
 /// h' = sqrt(2 m2): the areal rms gradient of an isotropic surface whose line scans have the
 /// rms slope sqrt(m2) (each of the two slope components carries m2).
 double arealRmsGradient(const SpectralMoments& moments);

@@ -5,6 +5,7 @@
 #include "roughContact/Limits.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
 #include "roughContact/models/Persson.hpp"
+#include "roughContact/surface/SpectralMoments.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 #include "roughContact/thermal/CooperMikicYovanovich.hpp"
 #include "roughContact/thermal/FittedElastoPlastic.hpp"
@@ -102,19 +103,20 @@ private:
 
 class FittedElastoPlasticLaw final : public ConductanceLaw {
 public:
-    FittedElastoPlasticLaw(const SurfaceRoughness& r, double Eprime, std::optional<double> H)
-        : r_(r), Eprime_(Eprime), H_(H)
+    FittedElastoPlasticLaw(const SurfaceRoughness& r, const Spectrum& spectrum, double Eprime, std::optional<double> H)
+        : r_(r), W_(spectralBandwidthRatio(spectrum)), Eprime_(Eprime), H_(H)
     {
-        fittedElastoPlasticConductancePerConductivity(0.0, r_, Eprime_, H_); // checks the inputs once
+        fittedElastoPlasticConductancePerConductivity(0.0, r_, W_, Eprime_, H_); // checks the inputs once
     }
     std::string name() const override { return "fittedElastoPlastic"; }
     double perConductivity(double P) const override
     {
-        return fittedElastoPlasticConductancePerConductivity(P, r_, Eprime_, H_);
+        return fittedElastoPlasticConductancePerConductivity(P, r_, W_, Eprime_, H_);
     }
 
 private:
     SurfaceRoughness r_;
+    double W_;
     double Eprime_;
     std::optional<double> H_;
 };
@@ -223,7 +225,11 @@ std::unique_ptr<ConductanceLaw> makeConductanceLaw(const std::string& name, cons
         return std::make_unique<CooperMikicYovanovichLaw>(needRoughness(name, in), in.microhardness, in.vickers);
     }
     if (name == "fittedElastoPlastic") {
-        return std::make_unique<FittedElastoPlasticLaw>(needRoughness(name, in), in.Eprime, in.hardness);
+        if (in.spectrum == nullptr) {
+            throw ParameterError(name, "needs the surfaces' line-scan spectrum (its bandwidth ratio W) beside sigma "
+                                       "and m");
+        }
+        return std::make_unique<FittedElastoPlasticLaw>(needRoughness(name, in), *in.spectrum, in.Eprime, in.hardness);
     }
     std::string known;
     for (const auto& n : conductanceLawNames()) {

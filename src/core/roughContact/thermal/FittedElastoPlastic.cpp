@@ -27,14 +27,20 @@ double gaussianPlasticSpotConductance(double a)
     return std::exp(-0.5 * lambda * lambda) / (2.0 * std::sqrt(2.0 * pi) * std::pow(1.0 - std::sqrt(a), 1.5));
 }
 
-double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoughness& r, double Eprime,
-                                                     std::optional<double> H, const FittedElastoPlasticConstants& c)
+double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoughness& r, double bandwidth,
+                                                     double Eprime, std::optional<double> H,
+                                                     const FittedElastoPlasticConstants& c)
 {
     requireFinite("contact pressure P", P);
     if (P < 0.0) {
         throw ParameterError("contact pressure P", "must be >= 0, got " + std::to_string(P));
     }
     checkRoughness(r);
+    requireFinite("spectral bandwidth ratio W", bandwidth);
+    if (!(bandwidth > 0.0 && bandwidth <= 1.0)) {
+        throw ParameterError("spectral bandwidth ratio W", "must lie within (0, 1] (m1/sqrt(m0 m2) of a spectrum), got " +
+                                                             std::to_string(bandwidth));
+    }
     limits::requireInRange("reduced modulus E'", Eprime, limits::minimumReducedModulus, limits::maximumReducedModulus,
                            "Pa");
     if (H) {
@@ -64,8 +70,10 @@ double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoug
         return elastic;
     }
     const double a = P / *H;
-    const double plastic =
-        c.plasticPrefactor * (m / r.sigma) * gaussianPlasticSpotConductance(a) * std::pow(1.0 - a, -c.plasticExponent);
+    // The plastic spots' spacing follows W m/sigma (= sqrt(2/pi) m1/m0 for a spectrum's own sigma
+    // and m): a spectrum whose heights live at long wavelengths clusters its spots on them.
+    const double plastic = c.plasticPrefactor * bandwidth * (m / r.sigma) * gaussianPlasticSpotConductance(a) *
+                           std::pow(1.0 - a, -c.plasticExponent);
     if (!(plastic < std::exp(logMax))) {
         return inf;
     }
