@@ -87,9 +87,9 @@ void bindThermal(py::module_& m)
              "jacksonBhavnaniFerguson and multiscaleBarber a multi-scale Model; persson a spectrum (the "
              "model's by default) and E' [Pa] (the model's by default); mikic a SurfaceRoughness and E'; "
              "cooperMikicYovanovich a SurfaceRoughness and the microhardness H_c [Pa] or the Vickers "
-             "coefficients (c1 [Pa], c2); fittedElastoPlastic a SurfaceRoughness, a spectrum (the "
-             "model's by default: its bandwidth ratio), E' and, for its plastic branch, the cap `hardness` H [Pa] "
-             "(None: elastic). ParameterError names what is missing.")
+             "coefficients (c1 [Pa], c2); fittedElastoPlastic a SurfaceRoughness, E' and, for its plastic "
+             "branch, the cap `hardness` H [Pa] (None: elastic) and a spectrum (the model's by default: its "
+             "bandwidth ratio). ParameterError names what is missing.")
         .def_property_readonly("name", [](const Law& x) { return x.law->name(); }, "The law's name.")
         .def(
             "conductance_per_conductivity",

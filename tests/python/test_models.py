@@ -78,6 +78,10 @@ def test_fitted_elasto_plastic_takes_the_spectrums_bandwidth_ratio(spectrum):
     r = rc.spectrum_roughness(spectrum)
     with pytest.raises(rc.ParameterError, match="line-scan spectrum"):
         rc.ConductanceLaw("fittedElastoPlastic", roughness=r, Eprime=1e11, hardness=1e9)
+    # Elastic (no cap), W plays no part: no spectrum needed, the same h.
+    assert rc.ConductanceLaw("fittedElastoPlastic", roughness=r, Eprime=1e11).conductance_per_conductivity(1e8) == \
+        rc.ConductanceLaw("fittedElastoPlastic", spectrum=spectrum, roughness=r,
+                          Eprime=1e11).conductance_per_conductivity(1e8)
     # Capped, a narrower spectrum (a larger W) of the same sigma and m conducts more.
     broad = rc.ConductanceLaw("fittedElastoPlastic", spectrum=spectrum, roughness=r, Eprime=1e11, hardness=1e9)
     narrow = rc.ConductanceLaw("fittedElastoPlastic", spectrum=rc.Spectrum([2e3], [1e-7], 1e-3), roughness=r,

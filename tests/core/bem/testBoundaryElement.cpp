@@ -674,6 +674,23 @@ TEST(SpotConductance, ABondedPatchConstrictsAsAPunchOfItsShape)
     EXPECT_TRUE(std::isinf(spotConductance(periodic, std::vector<bool>(32 * 32, true)).perConductivity));
 }
 
+// The random 128^2 surface of the two patch tests below (L = 0.1 mm, rms 0.1 um), solved periodic
+// (the interface's exact answer) and as a non-periodic patch of a half-space.
+struct PeriodicAndPatch {
+    static constexpr std::size_t n = 128;
+    static constexpr double L = 1e-4;
+    std::vector<double> h = randomSurface(n, 17, 1e-7);
+    BoundaryElementModel periodic{arealOf(h, n, L, "random"), Ep, periodicOptions()};
+    BoundaryElementModel patch{arealOf(h, n, L, "random"), Ep};
+
+    static BoundaryElementOptions periodicOptions()
+    {
+        BoundaryElementOptions o;
+        o.periodic = true;
+        return o;
+    }
+};
+
 TEST(BoundaryElementModel, APatchsConductanceLessItsOwnConstrictionIsTheInterfaces)
 {
     // A periodic surface solved as a non-periodic patch: the spots' conductance includes the
@@ -682,13 +699,10 @@ TEST(BoundaryElementModel, APatchsConductanceLessItsOwnConstrictionIsTheInterfac
     // exactly. The patch loses the contacts its edges would have had from the neighbouring
     // periods, so the two differ by edge effects; measured: 0.5 % and 2.8 % at these loads
     // (without the correction the patch's h is 0.63 and 0.23 of the periodic one). Bound: 10 %.
-    const std::size_t n = 128;
-    const double L = 1e-4;
-    const std::vector<double> h = randomSurface(n, 17, 1e-7);
-    BoundaryElementOptions periodicOptions;
-    periodicOptions.periodic = true;
-    const BoundaryElementModel periodic(arealOf(h, n, L, "random"), Ep, periodicOptions);
-    const BoundaryElementModel patch(arealOf(h, n, L, "random"), Ep);
+    const PeriodicAndPatch models;
+    const BoundaryElementModel& periodic = models.periodic;
+    const BoundaryElementModel& patch = models.patch;
+    const double L = PeriodicAndPatch::L;
     EXPECT_TRUE(std::isinf(periodic.patchConductancePerConductivity()));
     // The bonded square patch: within 3 % above the disc of equal area, h A_n = 2 k_s sqrt(A_n/pi)
     // (Holm), 2/(L sqrt(pi)) = 11284 1/m, as SpotConductance's bonded square (measured 1.0185 at
@@ -721,13 +735,9 @@ TEST(BoundaryElementModel, APaddedMapSaysWhereItsPatchCorrectionIsNotToBeTrusted
     // the gain grows past patchCorrectionGainLimit and the corrected patch is far off. Measured:
     // gain 4.5 at 2e-3 (13 % contact; the corrected patch 1.05 of the periodic h_c), 184 at 2e-2
     // (72 %; 0.85) and 4213 at 5e-2 (96 %; 0.096).
-    const std::size_t n = 128;
-    const double L = 1e-4;
-    const std::vector<double> h = randomSurface(n, 17, 1e-7);
-    BoundaryElementOptions periodicOptions;
-    periodicOptions.periodic = true;
-    const BoundaryElementModel periodic(arealOf(h, n, L, "random"), Ep, periodicOptions);
-    const BoundaryElementModel patch(arealOf(h, n, L, "random"), Ep);
+    const PeriodicAndPatch models;
+    const BoundaryElementModel& periodic = models.periodic;
+    const BoundaryElementModel& patch = models.patch;
     const std::vector<double> loads{2e-3, 5e-2};
     const std::vector<BoundaryElementPoint> a = periodic.curve(loads);
     const std::vector<BoundaryElementPoint> b = patch.curve(loads);
@@ -751,7 +761,10 @@ TEST(BoundaryElementModel, APaddedMapSaysWhereItsPatchCorrectionIsNotToBeTrusted
     // is exact (a gain of 1), not a failed correction.
     BoundaryElementOptions capped;
     capped.hardness = 1e9;
-    const BoundaryElementPoint flowing = BoundaryElementModel(arealOf(h, n, L, "random"), Ep, capped).solve(1e9 / Ep);
+    const BoundaryElementPoint flowing =
+        BoundaryElementModel(arealOf(models.h, PeriodicAndPatch::n, PeriodicAndPatch::L, "random"), Ep,
+                             capped)
+            .solve(1e9 / Ep);
     EXPECT_TRUE(std::isinf(flowing.conductancePerConductivity));
     EXPECT_EQ(flowing.patchCorrectionGain, 1.0);
     EXPECT_TRUE(patchCorrectionWarning({flowing}, Ep, "mirror").empty());

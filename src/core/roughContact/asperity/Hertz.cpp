@@ -1,15 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/asperity/Hertz.hpp"
 
+#include "roughContact/Constants.hpp"
 #include "roughContact/Error.hpp"
 
 #include <cmath>
 
 namespace roughContact {
-
-namespace {
-constexpr double pi = 3.14159265358979323846;
-}
 
 Hertz::Hertz(double Eprime) : Eprime_(requirePositive("reduced modulus E'", Eprime)) {}
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/asperity/JacksonGreen.hpp"
 
+#include "roughContact/Constants.hpp"
 #include "roughContact/Error.hpp"
 
 #include <Eigen/Dense>
@@ -12,8 +13,6 @@
 namespace roughContact {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
-
 const double logElasticLimit = std::log(JacksonGreen::elasticLimit);
 // Density of the inversion's bracketing table (denser tables did not cut the evaluations per
 // inversion: measured at 1000 a decade).

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/asperity/JohnsonGreenwoodHigginson.hpp"
 
+#include "roughContact/Constants.hpp"
 #include "roughContact/Error.hpp"
 
 #include <boost/math/tools/roots.hpp>
@@ -9,10 +10,6 @@
 #include <cstdint>
 
 namespace roughContact {
-
-namespace {
-constexpr double pi = 3.14159265358979323846;
-}
 
 JohnsonGreenwoodHigginson::JohnsonGreenwoodHigginson(double Eprime, Form form)
     : Eprime_(requirePositive("reduced modulus E'", Eprime)), form_(form)

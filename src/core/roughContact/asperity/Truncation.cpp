@@ -1,14 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/asperity/Truncation.hpp"
 
+#include "roughContact/Constants.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 namespace roughContact {
-
-namespace {
-constexpr double pi = 3.14159265358979323846;
-}
 
 Truncation::Truncation(double Eprime, double nu, double Sy)
     : hertz_(Eprime), onset_(Eprime, nu, Sy), H_(hardnessCoefficient * Sy)

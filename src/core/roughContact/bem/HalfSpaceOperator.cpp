@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/bem/HalfSpaceOperator.hpp"
 
+#include "roughContact/Constants.hpp"
 #include "roughContact/Error.hpp"
 #include "roughContact/bem/GridMemory.hpp"
 #include "roughContact/parallel/Threads.hpp"
@@ -17,8 +18,6 @@
 namespace roughContact {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
-
 // x asinh(y/|x|), 0 at x = 0 (its limit).
 double term(double x, double y)
 {

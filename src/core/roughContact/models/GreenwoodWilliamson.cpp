@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/models/GreenwoodWilliamson.hpp"
 
+#include "roughContact/Constants.hpp"
 #include "roughContact/Error.hpp"
 #include "roughContact/asperity/Hertz.hpp"
 #include "roughContact/asperity/JacksonGreen.hpp"
@@ -20,8 +21,6 @@
 namespace roughContact {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
-
 // Integration cut-off: beyond t_max the Gaussian weight, relative to its largest value on
 // [0, inf), is below exp(-tailExponent) = 2e-22, far below the quadrature tolerance.
 constexpr double tailExponent = 50.0;

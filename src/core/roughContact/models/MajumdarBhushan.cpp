@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/models/MajumdarBhushan.hpp"
 
+#include "roughContact/Constants.hpp"
 #include "roughContact/Error.hpp"
 
 #include <boost/math/tools/roots.hpp>
@@ -11,10 +12,6 @@
 #include <sstream>
 
 namespace roughContact {
-
-namespace {
-constexpr double pi = 3.14159265358979323846;
-} // namespace
 
 MajumdarBhushan::MajumdarBhushan(const FractalParameters& fractal, double nominalArea,
                                  double Eprime, double Sy)

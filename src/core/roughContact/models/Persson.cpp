@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/models/Persson.hpp"
 
+#include "roughContact/Constants.hpp"
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
@@ -17,7 +18,6 @@ namespace roughContact {
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 constexpr double sqrtPi = 1.77245385090551602730;
 constexpr double eulerGamma = 0.57721566490153286061;
 constexpr double e1AtOne = 0.21938393439552027368; // E1(1)

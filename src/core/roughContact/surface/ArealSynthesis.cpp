@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/surface/ArealSynthesis.hpp"
+#include "roughContact/Constants.hpp"
 #include "roughContact/parallel/Threads.hpp"
 
 #include "roughContact/Error.hpp"
@@ -18,8 +19,6 @@
 namespace roughContact {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
-
 // Uniform in [0, 1) from the 53 high bits: defined by the standard, unlike the library's
 // distributions (as in SyntheticProfile.cpp).
 double uniform(std::mt19937_64& gen)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/surface/Roughness.hpp"
 
+#include "roughContact/Constants.hpp"
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
 #include "roughContact/surface/Profile.hpp"
@@ -15,8 +16,6 @@
 namespace roughContact {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
-
 // Sum of |z[start + (i+1) stride] - z[start + i stride]| over n - 1 differences.
 double absoluteDifferences(const std::vector<double>& z, std::size_t start, std::size_t stride, std::size_t n)
 {

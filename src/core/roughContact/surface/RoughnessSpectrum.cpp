@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/surface/RoughnessSpectrum.hpp"
 
+#include "roughContact/Constants.hpp"
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
 
@@ -11,8 +12,6 @@
 namespace roughContact {
 
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 /// (Rdq/Rq)^2 of the power law of exponent m on the levels f (b_m cancels).
 double slopeRatioSquared(const std::vector<double>& f, double m)

@@ -1,18 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/surface/SpectralMoments.hpp"
 
+#include "roughContact/Constants.hpp"
 #include "roughContact/Error.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 namespace roughContact {
-
-namespace {
-constexpr double pi = 3.14159265358979323846;
-} // namespace
 
 SpectralMoments spectralMoments(const Spectrum& spectrum)
 {
@@ -39,8 +35,10 @@ double spectralBandwidthRatio(const Spectrum& spectrum)
     }
     requirePositive("spectral moment m0", m.m0);
     requirePositive("spectral moment m2", m.m2);
-    // m1^2 <= m0 m2; rounding can put a single level's ratio a few ulps above 1.
-    return std::min(1.0, m1 / std::sqrt(m.m0 * m.m2));
+    // m1^2 <= m0 m2; rounding can put a single level's ratio a few ulps above 1. The square roots
+    // apart: m0 m2 could under- or overflow where neither does.
+    const double W = m1 / (std::sqrt(m.m0) * std::sqrt(m.m2));
+    return W > 1.0 ? 1.0 : W;
 }
 
 SummitParameters mcCoolParameters(const SpectralMoments& m)

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/surface/Spectrum.hpp"
+#include "roughContact/Constants.hpp"
 #include "roughContact/parallel/Threads.hpp"
 
 #include "roughContact/Error.hpp"
@@ -18,8 +19,6 @@
 namespace roughContact {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
-
 std::string where(const std::string& source)
 {
     return source.empty() ? std::string("spectrum") : source;

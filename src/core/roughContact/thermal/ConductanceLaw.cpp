@@ -103,8 +103,10 @@ private:
 
 class FittedElastoPlasticLaw final : public ConductanceLaw {
 public:
-    FittedElastoPlasticLaw(const SurfaceRoughness& r, const Spectrum& spectrum, double Eprime, std::optional<double> H)
-        : r_(r), W_(spectralBandwidthRatio(spectrum)), Eprime_(Eprime), H_(H)
+    // W only spaces the plastic spots: without a cap (or a spectrum) it plays no part, 1 stands in.
+    FittedElastoPlasticLaw(const SurfaceRoughness& r, const Spectrum* spectrum, double Eprime,
+                           std::optional<double> H)
+        : r_(r), W_(spectrum != nullptr ? spectralBandwidthRatio(*spectrum) : 1.0), Eprime_(Eprime), H_(H)
     {
         fittedElastoPlasticConductancePerConductivity(0.0, r_, W_, Eprime_, H_); // checks the inputs once
     }
@@ -225,11 +227,13 @@ std::unique_ptr<ConductanceLaw> makeConductanceLaw(const std::string& name, cons
         return std::make_unique<CooperMikicYovanovichLaw>(needRoughness(name, in), in.microhardness, in.vickers);
     }
     if (name == "fittedElastoPlastic") {
-        if (in.spectrum == nullptr) {
-            throw ParameterError(name, "needs the surfaces' line-scan spectrum (its bandwidth ratio W) beside sigma "
-                                       "and m");
+        if (in.hardness && in.spectrum == nullptr) {
+            throw ParameterError(
+                name, "needs the surfaces' line-scan spectrum (its bandwidth ratio W) beside sigma "
+                      "and m for its plastic branch (the cap H)");
         }
-        return std::make_unique<FittedElastoPlasticLaw>(needRoughness(name, in), *in.spectrum, in.Eprime, in.hardness);
+        return std::make_unique<FittedElastoPlasticLaw>(needRoughness(name, in), in.spectrum, in.Eprime,
+                                                        in.hardness);
     }
     std::string known;
     for (const auto& n : conductanceLawNames()) {

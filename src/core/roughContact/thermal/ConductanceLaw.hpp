@@ -19,7 +19,8 @@
 //                            H_c, given or from Vickers coefficients (Microhardness.hpp).
 //   fittedElastoPlastic      Mikic's elastic form and the CMY plastic-spot geometry, refitted to
 //                            the exact conductance and blended (FittedElastoPlastic.hpp). Needs
-//                            sigma, m, E' and, for the plastic branch, the cap H.
+//                            sigma, m, E' and, for the plastic branch, the cap H and the
+//                            line-scan spectrum (its bandwidth ratio W).
 #pragma once
 
 #include "roughContact/material/Materials.hpp"
@@ -58,7 +59,7 @@ public:
 /// naming the entry) to be built without it.
 struct ConductanceLawInputs {
     const MultiscaleModel* multiscale = nullptr; ///< jacksonBhavnaniFerguson
-    const Spectrum* spectrum = nullptr;           ///< persson: the line-scan spectrum
+    const Spectrum* spectrum = nullptr;           ///< persson, fittedElastoPlastic (with a cap): the line-scan spectrum
     std::optional<SurfaceRoughness> roughness;    ///< mikic, cooperMikicYovanovich: combined
     double Eprime = 0.0;                          ///< E' [Pa]: mikic, persson
     std::optional<double> microhardness;          ///< H_c [Pa]: cooperMikicYovanovich

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 
+#include "roughContact/Constants.hpp"
 #include "roughContact/Error.hpp"
 
 #include <algorithm>
@@ -8,10 +9,6 @@
 #include <limits>
 
 namespace roughContact {
-
-namespace {
-constexpr double pi = 3.14159265358979323846;
-}
 
 double constrictionFactor(double eps)
 {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/thermal/FittedElastoPlastic.hpp"
 
+#include "roughContact/Constants.hpp"
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
 
@@ -21,7 +22,6 @@ double gaussianPlasticSpotConductance(double a)
     if (a == 0.0) {
         return 0.0;
     }
-    const double pi = 3.14159265358979323846;
     // erfc(lambda/sqrt 2)/2 = a: the level lambda sigma above which a Gaussian surface covers a.
     const double lambda = std::sqrt(2.0) * boost::math::erfc_inv(2.0 * a);
     return std::exp(-0.5 * lambda * lambda) / (2.0 * std::sqrt(2.0 * pi) * std::pow(1.0 - std::sqrt(a), 1.5));
@@ -50,7 +50,6 @@ double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoug
         return 0.0;
     }
     const double inf = std::numeric_limits<double>::infinity();
-    const double pi = 3.14159265358979323846;
     const double m = r.meanAbsoluteSlope;
     // x = P/(E' h'), h' = sqrt(pi) m for Gaussian isotropic slopes.
     const double x = P / (std::sqrt(pi) * Eprime * m);

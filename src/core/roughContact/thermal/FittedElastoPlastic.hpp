@@ -32,7 +32,8 @@
 // elastic points, then the plastic branch and N on the capped ones, on four surfaces (three
 // synthesized, the Dektak profile's spectrum); never on the X3P map, nor on a second hold-out
 // (Hurst 0.6, roll-off at L/2, h' = 0.2), nor on six further spectra of other roll-offs and
-// Hurst exponents (docs/validation/spectralShapesReport). Measured: see
+// Hurst exponents (docs/validation/spectralShapesReport; their one-period solves chose W as the
+// variable, the constants never saw them). Measured: see
 // docs/validation/fittedElastoPlastic.md (the bands are kept there and tested). Not for x above
 // 0.1, where it extrapolates.
 #pragma once

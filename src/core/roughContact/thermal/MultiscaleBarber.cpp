@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/thermal/MultiscaleBarber.hpp"
 
+#include "roughContact/Constants.hpp"
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
 #include "roughContact/models/ContactModel.hpp"
@@ -18,7 +19,6 @@
 namespace roughContact {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
 constexpr double relativeStep = 1e-3; // of the load, for dU/d load
 // (B5)'s panels: a hundredth of a decade of load each, by adaptive Gauss-Kronrod to 1e-10
 // relative (at most 2^6 pieces: a jump of U is not smooth at any depth, and its error, the jump
