@@ -51,6 +51,12 @@ template <class T> struct GridFree {
     void operator()(T* p) const { freeGridMemory(p); }
 };
 
+// n Ts in grid memory (GridMemory.hpp: std::bad_alloc when there is none), freed with it.
+template <class T> std::unique_ptr<T, GridFree<T>> gridArray(std::size_t n)
+{
+    return std::unique_ptr<T, GridFree<T>>(static_cast<T*>(allocateGridMemory(sizeof(T) * n)));
+}
+
 std::string& wisdomPath()
 {
     static std::string path;
@@ -144,21 +150,14 @@ struct HalfSpaceOperator::Fft {
 
     Fft(std::size_t mx_, std::size_t my_) : mx(mx_), my(my_), hx(mx_ / 2 + 1)
     {
-        spectral.reset(static_cast<fftw_complex*>(allocateGridMemory(sizeof(fftw_complex) * my * hx)));
-        if (!spectral) {
-            throw std::bad_alloc();
-        }
+        spectral = gridArray<fftw_complex>(my * hx);
         const std::lock_guard<std::mutex> lock(fftwPlanner());
         const unsigned flag = planningFlag();
         blocked = flag == FFTW_ESTIMATE;
         if (blocked) {
             planFor(1);
-            const std::unique_ptr<double, GridFree<double>> row(static_cast<double*>(allocateGridMemory(sizeof(double) * mx)));
-            const std::unique_ptr<fftw_complex, GridFree<fftw_complex>> columns(
-                static_cast<fftw_complex*>(allocateGridMemory(sizeof(fftw_complex) * columnBlock * my)));
-            if (!row || !columns) {
-                throw std::bad_alloc();
-            }
+            const auto row = gridArray<double>(mx);
+            const auto columns = gridArray<fftw_complex>(columnBlock * my);
             realAlignment = fftw_alignment_of(row.get());
             const int n = static_cast<int>(mx);
             forward = fftw_plan_dft_r2c_1d(n, row.get(), spectral.get(), FFTW_ESTIMATE);
@@ -183,10 +182,7 @@ struct HalfSpaceOperator::Fft {
             }
             return;
         }
-        real.reset(static_cast<double*>(allocateGridMemory(sizeof(double) * mx * my)));
-        if (!real) {
-            throw std::bad_alloc();
-        }
+        real = gridArray<double>(mx * my);
         // FFTW's 2-D real transforms: n0 = my rows of n1 = mx (row-major, x fastest).
         planFor(threads());
         forward = fftw_plan_dft_r2c_2d(static_cast<int>(my), static_cast<int>(mx), real.get(), spectral.get(),
@@ -228,15 +224,6 @@ struct HalfSpaceOperator::Fft {
 };
 
 namespace {
-template <class T> std::unique_ptr<T, GridFree<T>> fftwArray(std::size_t n)
-{
-    std::unique_ptr<T, GridFree<T>> a(static_cast<T*>(allocateGridMemory(sizeof(T) * n)));
-    if (!a) {
-        throw std::bad_alloc();
-    }
-    return a;
-}
-
 // body(first, last, buffer) over [0, n) in one piece per thread (forRange's pieces of items of
 // `weight` values), each with its own buffer of `bufferSize` Ts from `buffers` (made there when
 // there are fewer than pieces, before the threads start: a loop's body must not throw). Which
@@ -247,7 +234,7 @@ void inPieces(std::size_t n, std::size_t weight, std::vector<std::unique_ptr<T, 
 {
     const std::size_t pieces = std::max<std::size_t>(1, std::min<std::size_t>(n, std::size_t(threads())));
     while (buffers.size() < pieces) {
-        buffers.push_back(fftwArray<T>(bufferSize));
+        buffers.push_back(gridArray<T>(bufferSize));
     }
     struct Context {
         Body& body;
@@ -413,9 +400,10 @@ private:
     }
 };
 
-HalfSpaceOperator::Dct::Dct(std::size_t nx_, std::size_t ny_) : nx(nx_), ny(ny_), grid(fftwArray<double>(nx_ * ny_))
+HalfSpaceOperator::Dct::Dct(std::size_t nx_, std::size_t ny_)
+    : nx(nx_), ny(ny_), grid(gridArray<double>(nx_ * ny_))
 {
-    const auto block = fftwArray<double>(columnBlock * ny);
+    const auto block = gridArray<double>(columnBlock * ny);
     const std::lock_guard<std::mutex> lock(fftwPlanner());
     planFor(1);
     const int m[1] = {int(ny)};
@@ -545,7 +533,7 @@ HalfSpaceOperator::HalfSpaceOperator(std::size_t nx, std::size_t ny, double dx, 
     // Non-periodic: Love's influence of one cell at every offset (i dx, j dy), |i| < nx,
     // |j| < ny, placed in wrap-around order on the padded grid; the rest (offset nx, ny) 0.
     // (Blocked transforms hold no real grid: a temporary one, freed at the end of construction.)
-    const auto temporary = fft_->blocked ? fftwArray<double>(mx_ * my_) : nullptr;
+    const auto temporary = fft_->blocked ? gridArray<double>(mx_ * my_) : nullptr;
     double* k = fft_->blocked ? temporary.get() : fft_->real.get();
     for (std::size_t jy = 0; jy < my_; ++jy) {
         for (std::size_t jx = 0; jx < mx_; ++jx) {

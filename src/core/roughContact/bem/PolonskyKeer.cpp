@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/bem/PolonskyKeer.hpp"
-#include "roughContact/bem/GridMemory.hpp"
 
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
+#include "roughContact/bem/GridMemory.hpp"
 #include "roughContact/parallel/Threads.hpp"
 
 #include <algorithm>
