@@ -214,7 +214,10 @@ void bindInterface(py::module_& m)
             "`slope` over wavelengths short_cutoff to cutoff [m] (default 2.5e-6 to 0.8e-3, ISO 3274/4288); "
             "its Hurst exponent is found from slope/Rq (docs/theory.md §1.4).")
         .def("read_spectrum", &SurfaceSpec::spectrum, "The surface's spectrum (reads the file; a Spectrum).")
-        .def("roughness", &SurfaceSpec::roughness, "Its sigma [m] and mean absolute slope.");
+        .def("roughness", &SurfaceSpec::roughness, "Its sigma [m] and mean absolute slope.")
+        .def("skewness", &SurfaceSpec::skewness,
+             "Its heights' skewness (a profile's or an areal map's, detrended), or None for a spectrum: the laws "
+             "assume 0 (Gaussian heights).");
 
     py::class_<ContactInterface>(m, "ContactInterface",
                                  "Surfaces + materials + model + conductance law -> the pressure table "

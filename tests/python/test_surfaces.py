@@ -167,3 +167,18 @@ def test_roughness():
     assert r.mean_absolute_slope == pytest.approx(np.mean(np.abs(np.diff(z))) / p.spacing, rel=1e-10)
     c = rc.combined_roughness(r, r)
     assert c.sigma == pytest.approx(math.sqrt(2) * r.sigma)
+
+
+def test_skewness_of_measured_heights():
+    # SurfaceSpec.skewness: the detrended heights' mu3/sigma^3 (independently here with numpy), the
+    # number the regime's line says; None for a spectrum, whose heights are Gaussian.
+    p = rc.read_profile(DEKTAK)
+    z = np.asarray(p.detrended().heights)
+    z = z - z.mean()
+    assert rc.SurfaceSpec.profile(DEKTAK).skewness() == pytest.approx(np.mean(z ** 3) / np.mean(z ** 2) ** 1.5, rel=1e-10)
+    h = np.asarray(rc.read_areal(X3P).detrended().heights)
+    h = h - h.mean()
+    s = rc.SurfaceSpec.areal(X3P).skewness()
+    assert s == pytest.approx(np.mean(h ** 3) / np.mean(h ** 2) ** 1.5, rel=1e-10)
+    assert s == pytest.approx(-0.379, abs=5e-4)
+    assert rc.SurfaceSpec.power_law(1e-7, 1.3, 1e3, 2e5, length=1e-3).skewness() is None

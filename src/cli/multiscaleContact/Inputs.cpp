@@ -158,6 +158,12 @@ SurfaceRoughness roughnessOf(const Options& o)
     return equivalentRoughness(surfaceSpecsOf(o));
 }
 
+// The heights' skewness of the same surfaces (equivalentSkewness): none for a spectrum.
+std::optional<double> skewnessOf(const Options& o)
+{
+    return equivalentSkewness(surfaceSpecsOf(o));
+}
+
 namespace {
 
 // How an entry of a solid is written on the command line (the reader names it so).

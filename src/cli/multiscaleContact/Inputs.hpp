@@ -48,6 +48,9 @@ Spectrum surfaceOf(const Options& o);
 // surfaceOf reads; two combined): a profile's and a map's from their heights, a spectrum's from
 // its moments (Roughness.hpp).
 SurfaceRoughness roughnessOf(const Options& o);
+// The heights' skewness of the same surfaces (equivalentSkewness): a profile's or a map's; none
+// for a spectrum (Gaussian heights). For the regime's line (InterfaceRegime::skewness).
+std::optional<double> skewnessOf(const Options& o);
 
 // The solids of --E, --nu, --Sy (one or two; one of each per --E value); ParameterError naming the
 // option otherwise.

@@ -232,9 +232,10 @@ int run(const Options& o)
             const std::string shown = law || persson == nullptr ? lawName : std::string("persson");
             const bool capped = heldToCappedReference(o.model, shown, H.has_value());
             const auto [lo, hi] = std::minmax_element(positive.begin(), positive.end());
-            const InterfaceRegime r =
-                interfaceRegime(spectrum, Ep, H, shown, persson != nullptr ? std::string("persson") : o.model, capped,
-                                *lo * Ep, *hi * Ep);
+            InterfaceRegime r =
+                interfaceRegime(spectrum, Ep, H, shown, persson != nullptr ? std::string("persson") : o.model,
+                                capped, *lo * Ep, *hi * Ep);
+            r.skewness = skewnessOf(o);
             std::cerr << "multiscaleContact: " << r.describe() << std::endl;
         }
     }

@@ -143,4 +143,39 @@ TEST(InterfaceRegime, TheInterfaceSaysItsRegimeAtTheTablesEnds)
     const ContactInterface elastic(spec);
     EXPECT_FALSE(elastic.regime().capped);
     EXPECT_TRUE(elastic.regime().low.perHardness.has_value());
+    // A surface given by its spectrum has Gaussian heights: no skewness said.
+    EXPECT_FALSE(elastic.regime().skewness.has_value());
+    EXPECT_EQ(elastic.regime().describe().find("skewness"), std::string::npos);
+}
+
+// A measured map's heights are not Gaussian, and the regime says by how much: the map's own
+// skewness (arealSkewness, -0.38 for data/x3p-2.x3p), on the line that names h'. Two surfaces:
+// that of their sum (combinedSkewness), a spectrum counting as 0.
+TEST(InterfaceRegime, SaysTheSkewnessOfMeasuredHeights)
+{
+    InterfaceSpec spec;
+    SurfaceSpec map;
+    map.kind = SurfaceSpec::Kind::areal;
+    map.file = std::string(ROUGHCONTACT_SOURCE_DIR) + "/data/x3p-2.x3p";
+    map.direction = ScanDirection::both;
+    spec.surfaces = {map};
+    spec.side1 = Material{68.9e9, 0.33, 276e6};
+    spec.side2 = Material{200e9, 0.3, 0.5e9};
+    spec.minPressure = 1e5;
+    spec.maxPressure = 1e7;
+    const InterfaceRegime r = ContactInterface(spec).regime();
+    ASSERT_TRUE(r.skewness.has_value());
+    EXPECT_NEAR(*r.skewness, -0.3787, 5e-4); // docs/validation/mapSurrogates.md: -0.38
+    EXPECT_EQ(*r.skewness, *map.skewness());
+    const std::string text = r.describe();
+    EXPECT_NE(text.substr(0, text.find('\n')).find("heights' skewness -0.379"), std::string::npos) << text;
+    SurfaceSpec gaussian;
+    gaussian.kind = SurfaceSpec::Kind::powerLaw;
+    gaussian.parameters = {1e-7 * std::pow(1e3, 1.3), 1.3, 1e3, 2e5};
+    gaussian.length = 1e-3;
+    spec.surfaces = {map, gaussian};
+    const double s2 = ContactInterface(spec).regime().skewness.value();
+    EXPECT_EQ(s2, combinedSkewness(map.roughness().sigma, *map.skewness(), gaussian.roughness().sigma, 0.0));
+    EXPECT_GT(s2, *map.skewness()); // diluted towards 0 by the Gaussian side
+    EXPECT_LT(s2, 0.0);
 }

@@ -156,6 +156,51 @@ TEST(Roughness, Combined)
     EXPECT_EQ(c.meanAbsoluteSlope, d.meanAbsoluteSlope);
 }
 
+// Skewness by hand: z = 0,0,0,3,3,0,0,0 is symmetric about its middle, so the fitted tilt is zero
+// and the deviations from the mean 0.75 are -0.75 (six), 2.25 (two): mu2 = 1.6875,
+// mu3 = 2.53125, skewness 2.53125/1.6875^1.5 = 2/sqrt 3. Upside down, -2/sqrt 3; scaled and
+// tilted, the same.
+TEST(Roughness, SkewnessOfAProfileByHand)
+{
+    const std::vector<double> z{0.0, 0.0, 0.0, 3.0, 3.0, 0.0, 0.0, 0.0};
+    EXPECT_NEAR(profileSkewness(Profile(z, 1e-6)), 2.0 / std::sqrt(3.0), 1e-14);
+    std::vector<double> down(z.size());
+    std::vector<double> tilted(z.size());
+    for (std::size_t i = 0; i < z.size(); ++i) {
+        down[i] = -z[i];
+        tilted[i] = 1e-7 * z[i] + 5e-7 + 2e-8 * static_cast<double>(i);
+    }
+    EXPECT_NEAR(profileSkewness(Profile(down, 1e-6)), -2.0 / std::sqrt(3.0), 1e-14);
+    EXPECT_NEAR(profileSkewness(Profile(tilted, 1e-6)), 2.0 / std::sqrt(3.0), 1e-9);
+}
+
+// An 8 x 8 map with a 4 x 4 plateau of 3 in its middle (symmetric: no plane to remove): a quarter
+// of the points, so deviations -0.75 (48) and 2.25 (16), mu2 = 1.6875, mu3 = 2.53125, skewness
+// 2.53125/1.6875^1.5 = 2/sqrt 3.
+TEST(Roughness, SkewnessOfAMapByHand)
+{
+    std::vector<double> z(64, 0.0);
+    for (std::size_t iy = 2; iy < 6; ++iy) {
+        for (std::size_t ix = 2; ix < 6; ++ix) {
+            z[iy * 8 + ix] = 3e-6;
+        }
+    }
+    EXPECT_NEAR(arealSkewness(ArealSurface(z, 8, 8, 1e-6, 2e-6)), 2.0 / std::sqrt(3.0), 1e-12);
+}
+
+// Third central moments add for independent sums: equal sigmas, one skewed by s, the other
+// Gaussian, give s sigma^3/(2 sigma^2)^1.5 = s/2^1.5; two equal skewnesses give s/sqrt 2.
+TEST(Roughness, CombinedSkewness)
+{
+    EXPECT_NEAR(combinedSkewness(1e-6, 0.4, 1e-6, 0.0), 0.4 / std::pow(2.0, 1.5), 1e-15);
+    EXPECT_NEAR(combinedSkewness(1e-6, 0.4, 1e-6, 0.4), 0.4 / std::sqrt(2.0), 1e-15);
+    EXPECT_NEAR(combinedSkewness(2e-6, -0.3, 0.0, 0.7), -0.3, 1e-15); // the second flat: the first's
+    EXPECT_EQ(combinedSkewness(3e-6, 0.2, 4e-6, -0.1), combinedSkewness(4e-6, -0.1, 3e-6, 0.2));
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    expectParameterError([&] { combinedSkewness(0.0, 0.1, 0.0, 0.1); }, "skewness");
+    expectParameterError([&] { combinedSkewness(1e-6, nan, 1e-6, 0.1); }, "skewness");
+}
+
 TEST(Roughness, BadInputs)
 {
     const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -171,6 +216,7 @@ TEST(Roughness, BadInputs)
     }
     // (Round-off of the fit may leave some 1e-21 m, below limits::minimumRoughness = 1e-15 m.)
     expectParameterError([&] { profileRoughness(Profile(line, 1e-6)); }, "rms roughness sigma");
+    expectParameterError([&] { profileSkewness(Profile(line, 1e-6)); }, "profile");
     expectParameterError([&] { combined({1e-16, 0.1}, {1e-6, 0.1}); }, "rms roughness sigma");
     // A spectrum of zero amplitudes.
     expectParameterError([&] { spectrumRoughness(Spectrum({1e3, 2e3}, {0.0, 0.0}, 1e-3)); }, "rms roughness sigma");

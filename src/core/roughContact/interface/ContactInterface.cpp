@@ -77,6 +77,19 @@ SurfaceRoughness SurfaceSpec::roughness() const
     }
 }
 
+std::optional<double> SurfaceSpec::skewness() const
+{
+    check();
+    switch (kind) {
+    case Kind::profile:
+        return profileSkewness(readProfile(file, profileOptions).subsampled(stride));
+    case Kind::areal:
+        return arealSkewness(readAreal(file, arealOptions));
+    default:
+        return std::nullopt;
+    }
+}
+
 namespace {
 void requireOneOrTwo(const std::vector<SurfaceSpec>& surfaces)
 {
@@ -85,6 +98,23 @@ void requireOneOrTwo(const std::vector<SurfaceSpec>& surfaces)
     }
 }
 } // namespace
+
+std::optional<double> equivalentSkewness(const std::vector<SurfaceSpec>& surfaces)
+{
+    requireOneOrTwo(surfaces);
+    std::vector<std::optional<double>> s;
+    for (const SurfaceSpec& one : surfaces) {
+        s.push_back(one.skewness());
+    }
+    if (std::none_of(s.begin(), s.end(), [](const std::optional<double>& v) { return v.has_value(); })) {
+        return std::nullopt;
+    }
+    if (surfaces.size() == 1) {
+        return s.front();
+    }
+    return combinedSkewness(surfaces[0].roughness().sigma, s[0].value_or(0.0), surfaces[1].roughness().sigma,
+                            s[1].value_or(0.0));
+}
 
 SurfaceRoughness equivalentRoughness(const std::vector<SurfaceSpec>& surfaces)
 {
@@ -204,6 +234,7 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
     const bool capped = heldToCappedReference(spec.model, conductanceLaw_, H.has_value());
     regime_ = interfaceRegime(surface_, Ep, H, conductanceLaw_, spec.model, capped, table_->pressures().front(),
                               table_->pressures().back());
+    regime_.skewness = equivalentSkewness(spec.surfaces);
     buildGap(spec);
 }
 

@@ -55,6 +55,9 @@ struct SurfaceSpec {
     /// Its rms height and mean absolute slope (Roughness.hpp): a profile's and an areal map's
     /// (along `direction`) from their heights, a spectrum's from its moments.
     SurfaceRoughness roughness() const;
+    /// Its heights' skewness (profileSkewness, arealSkewness): a profile's and an areal map's;
+    /// none for a surface given by its spectrum or parameters, whose heights are Gaussian.
+    std::optional<double> skewness() const;
 };
 
 /// The interface between two solids.
@@ -128,6 +131,10 @@ Spectrum equivalentSurface(const std::vector<SurfaceSpec>& surfaces);
 /// The equivalent roughness of the same surfaces (SurfaceSpec::roughness(); two combined:
 /// Roughness.hpp combined). ParameterError for none or more than two.
 SurfaceRoughness equivalentRoughness(const std::vector<SurfaceSpec>& surfaces);
+
+/// The heights' skewness of the equivalent surface of one or two surfaces (combinedSkewness; a
+/// surface given by its spectrum counts as Gaussian, 0); none when no surface has heights.
+std::optional<double> equivalentSkewness(const std::vector<SurfaceSpec>& surfaces);
 
 /// What a boundary condition needs at one face.
 struct FaceContact {

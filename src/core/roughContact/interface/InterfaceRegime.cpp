@@ -81,6 +81,10 @@ std::string InterfaceRegime::describe() const
     } else {
         os << ", elastic (no hardness)";
     }
+    if (skewness) {
+        os << ", heights' skewness " << *skewness
+           << " (the laws assume Gaussian heights, 0; how far that matters: docs/validation/skewness.md)";
+    }
     for (const RegimeAt* r : {&low, &high}) {
         if (r == &high && high.pressure == low.pressure) {
             break; // one pressure (a run at one load): said once

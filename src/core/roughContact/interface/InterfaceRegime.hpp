@@ -37,6 +37,9 @@ struct InterfaceRegime {
     double gradient = 0.0;                     ///< h'
     std::optional<double> hardness;            ///< H [Pa]
     std::optional<double> plasticityIndex;     ///< psi, with a hardness
+    /// The heights' skewness (equivalentSkewness: a measured profile's or map's; none for a
+    /// spectrum): every law and model here assumes 0 (Gaussian heights), and the log says so.
+    std::optional<double> skewness;
     std::string law;                           ///< the chosen law ("boundaryElement (exact)" for the exact model)
     std::string areaModel;                     ///< the area model
     bool capped = false;                       ///< compared with the capped reference

@@ -77,6 +77,52 @@ SurfaceRoughness arealRoughness(const ArealSurface& surface, ScanDirection direc
     return r;
 }
 
+namespace {
+
+double skewnessOf(const std::vector<double>& z, const char* what)
+{
+    double mean = 0.0;
+    for (double v : z) {
+        mean += v;
+    }
+    mean /= static_cast<double>(z.size());
+    double m2 = 0.0;
+    double m3 = 0.0;
+    for (double v : z) {
+        const double d = v - mean;
+        m2 += d * d;
+        m3 += d * d * d;
+    }
+    m2 /= static_cast<double>(z.size());
+    m3 /= static_cast<double>(z.size());
+    // As checkRoughness: round-off of the detrending leaves some 1e-21 m of a flat surface.
+    if (!(std::sqrt(m2) >= limits::minimumRoughness)) {
+        throw ParameterError(what, "its heights are flat (rms below 1e-15 m after detrending): no skewness");
+    }
+    return m3 / (m2 * std::sqrt(m2));
+}
+
+} // namespace
+
+double profileSkewness(const Profile& profile)
+{
+    return skewnessOf(profile.detrended().heights(), "profile");
+}
+
+double arealSkewness(const ArealSurface& surface)
+{
+    return skewnessOf(surface.detrended().heights(), "areal surface");
+}
+
+double combinedSkewness(double sigma1, double s1, double sigma2, double s2)
+{
+    const double v = sigma1 * sigma1 + sigma2 * sigma2;
+    if (!(v > 0.0) || !std::isfinite(v) || !std::isfinite(s1) || !std::isfinite(s2)) {
+        throw ParameterError("skewness", "needs finite skewnesses and rms heights, not both zero");
+    }
+    return (s1 * sigma1 * sigma1 * sigma1 + s2 * sigma2 * sigma2 * sigma2) / (v * std::sqrt(v));
+}
+
 SurfaceRoughness spectrumRoughness(const Spectrum& spectrum)
 {
     const SpectralMoments mo = spectralMoments(spectrum);

@@ -44,6 +44,23 @@ SurfaceRoughness arealRoughness(const ArealSurface& surface, ScanDirection direc
 /// (0.90 rather than 0.80 of the rms slope). ParameterError when sigma or m is zero.
 SurfaceRoughness spectrumRoughness(const Spectrum& spectrum);
 
+/// The skewness mu3/sigma^3 of a profile's heights after removing its mean and linear tilt (as
+/// profileRoughness), mu3 = <z^3> the third central moment. Every law and multi-scale model here
+/// assumes Gaussian heights, skewness 0; a measured surface's says how far it is from that (the
+/// X3P map: -0.38; elastically the exact conductance moves by tens of per cent with it,
+/// docs/validation/skewness.md). ParameterError when the heights are flat (sigma below
+/// limits::minimumRoughness, 1e-15 m, after detrending).
+double profileSkewness(const Profile& profile);
+
+/// The same of an areal surface's heights after removing its least-squares plane (as
+/// arealRoughness).
+double arealSkewness(const ArealSurface& surface);
+
+/// The skewness of the equivalent surface z1 + z2 of two independent rough surfaces of rms
+/// heights sigma1, sigma2 and skewnesses s1, s2: (s1 sigma1^3 + s2 sigma2^3) /
+/// (sigma1^2 + sigma2^2)^(3/2) (third central moments add for independent sums).
+double combinedSkewness(double sigma1, double s1, double sigma2, double s2);
+
 /// The equivalent surface of two rough surfaces in contact: sigma = sqrt(s1^2 + s2^2),
 /// m = sqrt(m1^2 + m2^2) (Yovanovich, J. Thermophys. Heat Transfer 19 (2005) 379-386, the
 /// "effective" roughness and slope of a joint; see docs/correlations.md). Both checked.
