@@ -222,6 +222,15 @@ void bindSurfaces(py::module_& m)
             return "<roughcontact.SurfaceRoughness sigma = " + number(r.sigma) +
                    " m, m = " + number(r.meanAbsoluteSlope) + ">";
         });
+    py::class_<HeightSkewness>(m, "HeightSkewness",
+                               "A surface's heights' skewness and the spread (standard deviation) Gaussian heights "
+                               "of the same autocorrelation and size give it by chance.")
+        .def_readonly("skewness", &HeightSkewness::skewness, "mu3/sigma^3 of the detrended heights")
+        .def_readonly("spread", &HeightSkewness::spread,
+                      "what chance gives Gaussian heights: sqrt((6/N) sum_k rho(k)^3)")
+        .def("__repr__", [](const HeightSkewness& h) {
+            return "<roughcontact.HeightSkewness skewness = " + number(h.skewness) + " +- " + number(h.spread) + ">";
+        });
     m.def("profile_roughness", &profileRoughness, py::arg("profile"),
           "sigma [m] and the mean absolute slope of a profile after removing its mean and tilt.");
     m.def(

@@ -171,14 +171,23 @@ def test_roughness():
 
 def test_skewness_of_measured_heights():
     # SurfaceSpec.skewness: the detrended heights' mu3/sigma^3 (independently here with numpy), the
-    # number the regime's line says; None for a spectrum, whose heights are Gaussian.
+    # number the regime's line says, with its spread by chance; None for a spectrum, whose heights
+    # are Gaussian.
     p = rc.read_profile(DEKTAK)
     z = np.asarray(p.detrended().heights)
     z = z - z.mean()
-    assert rc.SurfaceSpec.profile(DEKTAK).skewness() == pytest.approx(np.mean(z ** 3) / np.mean(z ** 2) ** 1.5, rel=1e-10)
+    d = rc.SurfaceSpec.profile(DEKTAK).skewness()
+    assert d.skewness == pytest.approx(np.mean(z ** 3) / np.mean(z ** 2) ** 1.5, rel=1e-10)
     h = np.asarray(rc.read_areal(X3P).detrended().heights)
     h = h - h.mean()
     s = rc.SurfaceSpec.areal(X3P).skewness()
-    assert s == pytest.approx(np.mean(h ** 3) / np.mean(h ** 2) ** 1.5, rel=1e-10)
-    assert s == pytest.approx(-0.379, abs=5e-4)
+    assert s.skewness == pytest.approx(np.mean(h ** 3) / np.mean(h ** 2) ** 1.5, rel=1e-10)
+    assert s.skewness == pytest.approx(-0.379, abs=5e-4)
+    # The spread: sqrt((6/N) sum_k rho(k)^3) with rho the zero-padded autocorrelation, by numpy.
+    ny, nx = h.shape
+    r = np.fft.irfft2(np.abs(np.fft.rfft2(h, (2 * ny, 2 * nx))) ** 2, (2 * ny, 2 * nx))
+    assert s.spread == pytest.approx(math.sqrt(6 / h.size * np.sum((r / r[0, 0]) ** 3)), rel=1e-9)
+    # The map's skewness is three spreads from 0; the Dektak profile's is within one.
+    assert abs(s.skewness) > 3 * s.spread
+    assert abs(d.skewness) < d.spread
     assert rc.SurfaceSpec.power_law(1e-7, 1.3, 1e3, 2e5, length=1e-3).skewness() is None

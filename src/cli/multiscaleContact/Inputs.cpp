@@ -159,7 +159,7 @@ SurfaceRoughness roughnessOf(const Options& o)
 }
 
 // The heights' skewness of the same surfaces (equivalentSkewness): none for a spectrum.
-std::optional<double> skewnessOf(const Options& o)
+std::optional<HeightSkewness> skewnessOf(const Options& o)
 {
     return equivalentSkewness(surfaceSpecsOf(o));
 }

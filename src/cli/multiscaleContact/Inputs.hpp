@@ -27,6 +27,7 @@ namespace multiscaleContact {
 using roughContact::ArealReadOptions;
 using roughContact::ArealSurface;
 using roughContact::ContactMaterials;
+using roughContact::HeightSkewness;
 using roughContact::Material;
 using roughContact::Spectrum;
 using roughContact::SurfaceRoughness;
@@ -50,7 +51,7 @@ Spectrum surfaceOf(const Options& o);
 SurfaceRoughness roughnessOf(const Options& o);
 // The heights' skewness of the same surfaces (equivalentSkewness): a profile's or a map's; none
 // for a spectrum (Gaussian heights). For the regime's line (InterfaceRegime::skewness).
-std::optional<double> skewnessOf(const Options& o);
+std::optional<HeightSkewness> skewnessOf(const Options& o);
 
 // The solids of --E, --nu, --Sy (one or two; one of each per --E value); ParameterError naming the
 // option otherwise.

@@ -163,15 +163,15 @@ TEST(Roughness, Combined)
 TEST(Roughness, SkewnessOfAProfileByHand)
 {
     const std::vector<double> z{0.0, 0.0, 0.0, 3.0, 3.0, 0.0, 0.0, 0.0};
-    EXPECT_NEAR(profileSkewness(Profile(z, 1e-6)), 2.0 / std::sqrt(3.0), 1e-14);
+    EXPECT_NEAR(profileSkewness(Profile(z, 1e-6)).skewness, 2.0 / std::sqrt(3.0), 1e-14);
     std::vector<double> down(z.size());
     std::vector<double> tilted(z.size());
     for (std::size_t i = 0; i < z.size(); ++i) {
         down[i] = -z[i];
         tilted[i] = 1e-7 * z[i] + 5e-7 + 2e-8 * static_cast<double>(i);
     }
-    EXPECT_NEAR(profileSkewness(Profile(down, 1e-6)), -2.0 / std::sqrt(3.0), 1e-14);
-    EXPECT_NEAR(profileSkewness(Profile(tilted, 1e-6)), 2.0 / std::sqrt(3.0), 1e-9);
+    EXPECT_NEAR(profileSkewness(Profile(down, 1e-6)).skewness, -2.0 / std::sqrt(3.0), 1e-14);
+    EXPECT_NEAR(profileSkewness(Profile(tilted, 1e-6)).skewness, 2.0 / std::sqrt(3.0), 1e-9);
 }
 
 // An 8 x 8 map with a 4 x 4 plateau of 3 in its middle (symmetric: no plane to remove): a quarter
@@ -185,20 +185,75 @@ TEST(Roughness, SkewnessOfAMapByHand)
             z[iy * 8 + ix] = 3e-6;
         }
     }
-    EXPECT_NEAR(arealSkewness(ArealSurface(z, 8, 8, 1e-6, 2e-6)), 2.0 / std::sqrt(3.0), 1e-12);
+    EXPECT_NEAR(arealSkewness(ArealSurface(z, 8, 8, 1e-6, 2e-6)).skewness, 2.0 / std::sqrt(3.0), 1e-12);
 }
 
 // Third central moments add for independent sums: equal sigmas, one skewed by s, the other
-// Gaussian, give s sigma^3/(2 sigma^2)^1.5 = s/2^1.5; two equal skewnesses give s/sqrt 2.
+// Gaussian, give s sigma^3/(2 sigma^2)^1.5 = s/2^1.5; two equal skewnesses give s/sqrt 2; the
+// spreads add in quadrature with the same weights.
 TEST(Roughness, CombinedSkewness)
 {
-    EXPECT_NEAR(combinedSkewness(1e-6, 0.4, 1e-6, 0.0), 0.4 / std::pow(2.0, 1.5), 1e-15);
-    EXPECT_NEAR(combinedSkewness(1e-6, 0.4, 1e-6, 0.4), 0.4 / std::sqrt(2.0), 1e-15);
-    EXPECT_NEAR(combinedSkewness(2e-6, -0.3, 0.0, 0.7), -0.3, 1e-15); // the second flat: the first's
-    EXPECT_EQ(combinedSkewness(3e-6, 0.2, 4e-6, -0.1), combinedSkewness(4e-6, -0.1, 3e-6, 0.2));
+    const HeightSkewness g{0.0, 0.0};
+    EXPECT_NEAR(combinedSkewness(1e-6, {0.4, 0.1}, 1e-6, g).skewness, 0.4 / std::pow(2.0, 1.5), 1e-15);
+    EXPECT_NEAR(combinedSkewness(1e-6, {0.4, 0.1}, 1e-6, g).spread, 0.1 / std::pow(2.0, 1.5), 1e-15);
+    EXPECT_NEAR(combinedSkewness(1e-6, {0.4, 0.1}, 1e-6, {0.4, 0.1}).skewness, 0.4 / std::sqrt(2.0), 1e-15);
+    EXPECT_NEAR(combinedSkewness(1e-6, {0.4, 0.1}, 1e-6, {0.4, 0.1}).spread, 0.1 / 2.0, 1e-15);
+    EXPECT_NEAR(combinedSkewness(2e-6, {-0.3, 0.2}, 0.0, {0.7, 0.5}).skewness, -0.3, 1e-15); // the second flat
+    EXPECT_EQ(combinedSkewness(3e-6, {0.2, 0.1}, 4e-6, {-0.1, 0.3}).skewness,
+              combinedSkewness(4e-6, {-0.1, 0.3}, 3e-6, {0.2, 0.1}).skewness);
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    expectParameterError([&] { combinedSkewness(0.0, 0.1, 0.0, 0.1); }, "skewness");
-    expectParameterError([&] { combinedSkewness(1e-6, nan, 1e-6, 0.1); }, "skewness");
+    expectParameterError([&] { combinedSkewness(0.0, {0.1, 0.1}, 0.0, {0.1, 0.1}); }, "skewness");
+    expectParameterError([&] { combinedSkewness(1e-6, {nan, 0.1}, 1e-6, {0.1, 0.1}); }, "skewness");
+}
+
+// The spread by chance, sqrt((6/N) sum_k rho(k)^3): for independent heights (rho = 1 at lag 0
+// and only noise of order 1/sqrt N elsewhere, whose cubes sum to O(1/sqrt N)) it is the classic
+// sqrt(6/N) of the sample skewness of N normal numbers; the tolerance 3 % covers that noise at
+// N = 4096. Correlated heights hold fewer independent values: a larger spread. A Monte Carlo over
+// 2000 white-noise samples of N = 512 checks that sqrt(6/N) is the sampling spread (its standard
+// error about 1.6 %, the large-N formula a few per cent high at this N: 10 %).
+TEST(Roughness, SkewnessSpreadIsWhatChanceGives)
+{
+    std::mt19937_64 rng(7);
+    std::normal_distribution<double> normal;
+    std::vector<double> white(4096);
+    for (double& v : white) {
+        v = 1e-6 * normal(rng);
+    }
+    const double n = static_cast<double>(white.size());
+    EXPECT_NEAR(profileSkewness(Profile(white, 1e-6)).spread, std::sqrt(6.0 / n), 0.03 * std::sqrt(6.0 / n));
+    std::vector<double> map(64 * 64);
+    for (double& v : map) {
+        v = 1e-6 * normal(rng);
+    }
+    EXPECT_NEAR(arealSkewness(ArealSurface(map, 64, 64, 1e-6, 1e-6)).spread, std::sqrt(6.0 / 4096.0),
+                0.03 * std::sqrt(6.0 / 4096.0));
+    // Correlated heights, an AR(1) series z_i = phi z_{i-1} + e_i: rho(k) = phi^|k|, so
+    // sum_k rho^3 = (1 + phi^3)/(1 - phi^3), 6.38 at phi = 0.9. The sample's rho carries noise of
+    // a few per cent at the lags that matter (its correlation length 10 of 4096 points): 10 %.
+    std::vector<double> ar(4096);
+    double previous = 0.0;
+    for (double& v : ar) {
+        previous = 0.9 * previous + normal(rng);
+        v = 1e-6 * previous;
+    }
+    const double phi3 = 0.9 * 0.9 * 0.9;
+    const double expected = std::sqrt(6.0 / n * (1.0 + phi3) / (1.0 - phi3));
+    EXPECT_NEAR(profileSkewness(Profile(ar, 1e-6)).spread, expected, 0.10 * expected);
+    // Monte Carlo: the standard deviation of the skewness of 2000 samples of 512 normal numbers.
+    double sum = 0.0;
+    double sum2 = 0.0;
+    std::vector<double> z(512);
+    for (int k = 0; k < 2000; ++k) {
+        for (double& v : z) {
+            v = 1e-6 * normal(rng);
+        }
+        const double s = profileSkewness(Profile(z, 1e-6)).skewness;
+        sum += s;
+        sum2 += s * s;
+    }
+    const double sd = std::sqrt(sum2 / 2000.0 - (sum / 2000.0) * (sum / 2000.0));
+    EXPECT_NEAR(profileSkewness(Profile(z, 1e-6)).spread / sd, 1.0, 0.10);
 }
 
 TEST(Roughness, BadInputs)

@@ -77,7 +77,7 @@ SurfaceRoughness SurfaceSpec::roughness() const
     }
 }
 
-std::optional<double> SurfaceSpec::skewness() const
+std::optional<HeightSkewness> SurfaceSpec::skewness() const
 {
     check();
     switch (kind) {
@@ -99,21 +99,23 @@ void requireOneOrTwo(const std::vector<SurfaceSpec>& surfaces)
 }
 } // namespace
 
-std::optional<double> equivalentSkewness(const std::vector<SurfaceSpec>& surfaces)
+std::optional<HeightSkewness> equivalentSkewness(const std::vector<SurfaceSpec>& surfaces)
 {
     requireOneOrTwo(surfaces);
-    std::vector<std::optional<double>> s;
+    std::vector<std::optional<HeightSkewness>> s;
     for (const SurfaceSpec& one : surfaces) {
         s.push_back(one.skewness());
     }
-    if (std::none_of(s.begin(), s.end(), [](const std::optional<double>& v) { return v.has_value(); })) {
+    if (std::none_of(s.begin(), s.end(),
+                     [](const std::optional<HeightSkewness>& v) { return v.has_value(); })) {
         return std::nullopt;
     }
     if (surfaces.size() == 1) {
         return s.front();
     }
-    return combinedSkewness(surfaces[0].roughness().sigma, s[0].value_or(0.0), surfaces[1].roughness().sigma,
-                            s[1].value_or(0.0));
+    const HeightSkewness gaussian{0.0, 0.0};
+    return combinedSkewness(surfaces[0].roughness().sigma, s[0].value_or(gaussian),
+                            surfaces[1].roughness().sigma, s[1].value_or(gaussian));
 }
 
 SurfaceRoughness equivalentRoughness(const std::vector<SurfaceSpec>& surfaces)

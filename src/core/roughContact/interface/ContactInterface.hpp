@@ -55,9 +55,10 @@ struct SurfaceSpec {
     /// Its rms height and mean absolute slope (Roughness.hpp): a profile's and an areal map's
     /// (along `direction`) from their heights, a spectrum's from its moments.
     SurfaceRoughness roughness() const;
-    /// Its heights' skewness (profileSkewness, arealSkewness): a profile's and an areal map's;
-    /// none for a surface given by its spectrum or parameters, whose heights are Gaussian.
-    std::optional<double> skewness() const;
+    /// Its heights' skewness and its spread by chance (profileSkewness, arealSkewness): a
+    /// profile's and an areal map's; none for a surface given by its spectrum or parameters, whose
+    /// heights are Gaussian.
+    std::optional<HeightSkewness> skewness() const;
 };
 
 /// The interface between two solids.
@@ -133,8 +134,8 @@ Spectrum equivalentSurface(const std::vector<SurfaceSpec>& surfaces);
 SurfaceRoughness equivalentRoughness(const std::vector<SurfaceSpec>& surfaces);
 
 /// The heights' skewness of the equivalent surface of one or two surfaces (combinedSkewness; a
-/// surface given by its spectrum counts as Gaussian, 0); none when no surface has heights.
-std::optional<double> equivalentSkewness(const std::vector<SurfaceSpec>& surfaces);
+/// surface given by its spectrum counts as Gaussian, {0, 0}); none when no surface has heights.
+std::optional<HeightSkewness> equivalentSkewness(const std::vector<SurfaceSpec>& surfaces);
 
 /// What a boundary condition needs at one face.
 struct FaceContact {

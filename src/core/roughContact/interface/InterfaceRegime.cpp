@@ -82,8 +82,9 @@ std::string InterfaceRegime::describe() const
         os << ", elastic (no hardness)";
     }
     if (skewness) {
-        os << ", heights' skewness " << *skewness
-           << " (the laws assume Gaussian heights, 0; how far that matters: docs/validation/skewness.md)";
+        os << ", heights' skewness " << skewness->skewness
+           << " (Gaussian heights of this spectrum and size give +-" << skewness->spread
+           << " by chance; the laws assume 0; how far it matters: docs/validation/skewness.md)";
     }
     for (const RegimeAt* r : {&low, &high}) {
         if (r == &high && high.pressure == low.pressure) {

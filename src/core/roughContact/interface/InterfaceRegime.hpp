@@ -14,6 +14,7 @@
 // beside it as the scale-free measure (the report's machined metals: 0.03 to 0.3).
 #pragma once
 
+#include "roughContact/surface/Roughness.hpp"
 #include "roughContact/thermal/MeasuredAccuracy.hpp"
 
 #include <optional>
@@ -39,7 +40,7 @@ struct InterfaceRegime {
     std::optional<double> plasticityIndex;     ///< psi, with a hardness
     /// The heights' skewness (equivalentSkewness: a measured profile's or map's; none for a
     /// spectrum): every law and model here assumes 0 (Gaussian heights), and the log says so.
-    std::optional<double> skewness;
+    std::optional<HeightSkewness> skewness;
     std::string law;                           ///< the chosen law ("boundaryElement (exact)" for the exact model)
     std::string areaModel;                     ///< the area model
     bool capped = false;                       ///< compared with the capped reference

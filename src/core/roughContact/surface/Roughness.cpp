@@ -4,12 +4,18 @@
 #include "roughContact/Constants.hpp"
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
+#include "roughContact/parallel/Threads.hpp"
 #include "roughContact/surface/Profile.hpp"
 #include "roughContact/surface/SpectralMoments.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 
+#include <fftw3.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <memory>
+#include <new>
 #include <sstream>
 #include <vector>
 
@@ -79,8 +85,50 @@ SurfaceRoughness arealRoughness(const ArealSurface& surface, ScanDirection direc
 
 namespace {
 
-double skewnessOf(const std::vector<double>& z, const char* what)
+// sqrt((6/N) sum_k rho(k)^3) of the N = nx ny heights d (mean removed; ny = 1: a profile), rho
+// their autocorrelation over the overlap at each lag: the transform of |D|^2 on a grid padded to
+// twice the size each way (no wrap-around).
+double gaussianSkewnessSpread(const std::vector<double>& d, std::size_t nx, std::size_t ny)
 {
+    const std::size_t px = 2 * nx;
+    const std::size_t py = ny == 1 ? 1 : 2 * ny;
+    const std::size_t pc = px / 2 + 1;
+    std::vector<double> in(px * py, 0.0);
+    for (std::size_t iy = 0; iy < ny; ++iy) {
+        for (std::size_t ix = 0; ix < nx; ++ix) {
+            in[iy * px + ix] = d[iy * nx + ix];
+        }
+    }
+    std::unique_ptr<fftw_complex, decltype(&fftw_free)> spec(
+        static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * pc * py)), &fftw_free);
+    if (!spec) {
+        throw std::bad_alloc();
+    }
+    const int dims[2] = {static_cast<int>(py), static_cast<int>(px)};
+    fftw_plan forward =
+        underFftwPlanner([&] { return fftw_plan_dft_r2c(2, dims, in.data(), spec.get(), FFTW_ESTIMATE); });
+    fftw_execute(forward);
+    underFftwPlanner([&] { fftw_destroy_plan(forward); });
+    for (std::size_t i = 0; i < pc * py; ++i) {
+        spec.get()[i][0] = spec.get()[i][0] * spec.get()[i][0] + spec.get()[i][1] * spec.get()[i][1];
+        spec.get()[i][1] = 0.0;
+    }
+    fftw_plan backward =
+        underFftwPlanner([&] { return fftw_plan_dft_c2r(2, dims, spec.get(), in.data(), FFTW_ESTIMATE); });
+    fftw_execute(backward);
+    underFftwPlanner([&] { fftw_destroy_plan(backward); });
+    const double r0 = in[0];
+    double sum = 0.0;
+    for (double r : in) {
+        const double rho = r / r0;
+        sum += rho * rho * rho;
+    }
+    return std::sqrt(std::max(0.0, 6.0 * sum / static_cast<double>(nx * ny)));
+}
+
+HeightSkewness skewnessOf(const std::vector<double>& z, std::size_t nx, std::size_t ny, const char* what)
+{
+    // z is detrended: z.size() == nx ny.
     double mean = 0.0;
     for (double v : z) {
         mean += v;
@@ -99,28 +147,40 @@ double skewnessOf(const std::vector<double>& z, const char* what)
     if (!(std::sqrt(m2) >= limits::minimumRoughness)) {
         throw ParameterError(what, "its heights are flat (rms below 1e-15 m after detrending): no skewness");
     }
-    return m3 / (m2 * std::sqrt(m2));
+    std::vector<double> d(z.size());
+    for (std::size_t i = 0; i < z.size(); ++i) {
+        d[i] = z[i] - mean;
+    }
+    return HeightSkewness{m3 / (m2 * std::sqrt(m2)), gaussianSkewnessSpread(d, nx, ny)};
 }
 
 } // namespace
 
-double profileSkewness(const Profile& profile)
+HeightSkewness profileSkewness(const Profile& profile)
 {
-    return skewnessOf(profile.detrended().heights(), "profile");
+    const Profile d = profile.detrended();
+    return skewnessOf(d.heights(), d.size(), 1, "profile");
 }
 
-double arealSkewness(const ArealSurface& surface)
+HeightSkewness arealSkewness(const ArealSurface& surface)
 {
-    return skewnessOf(surface.detrended().heights(), "areal surface");
+    const ArealSurface d = surface.detrended();
+    return skewnessOf(d.heights(), d.nx(), d.ny(), "areal surface");
 }
 
-double combinedSkewness(double sigma1, double s1, double sigma2, double s2)
+HeightSkewness combinedSkewness(double sigma1, const HeightSkewness& a, double sigma2,
+                                const HeightSkewness& b)
 {
     const double v = sigma1 * sigma1 + sigma2 * sigma2;
-    if (!(v > 0.0) || !std::isfinite(v) || !std::isfinite(s1) || !std::isfinite(s2)) {
+    if (!(v > 0.0) || !std::isfinite(v) || !std::isfinite(a.skewness) || !std::isfinite(b.skewness) ||
+        !std::isfinite(a.spread) || !std::isfinite(b.spread)) {
         throw ParameterError("skewness", "needs finite skewnesses and rms heights, not both zero");
     }
-    return (s1 * sigma1 * sigma1 * sigma1 + s2 * sigma2 * sigma2 * sigma2) / (v * std::sqrt(v));
+    const double c1 = sigma1 * sigma1 * sigma1;
+    const double c2 = sigma2 * sigma2 * sigma2;
+    const double v3 = v * std::sqrt(v);
+    return HeightSkewness{(a.skewness * c1 + b.skewness * c2) / v3,
+                          std::hypot(a.spread * c1, b.spread * c2) / v3};
 }
 
 SurfaceRoughness spectrumRoughness(const Spectrum& spectrum)
