@@ -240,6 +240,34 @@ TEST(Roughness, SkewnessSpreadIsWhatChanceGives)
     const double phi3 = 0.9 * 0.9 * 0.9;
     const double expected = std::sqrt(6.0 / n * (1.0 + phi3) / (1.0 - phi3));
     EXPECT_NEAR(profileSkewness(Profile(ar, 1e-6)).spread, expected, 0.10 * expected);
+    // A map beyond spreadSide a side: the spread from every second point each way. For heights
+    // correlated over many points (a 2-D AR(1), phi = 0.98: rho falls by 1/e in 50 points) it is
+    // what the full grid gives. Checked against a quarter of the map at full resolution, its
+    // spread scaled by its area to the whole (a spread goes as 1/sqrt N once a map holds many
+    // correlation lengths: 1/4): 25 %, as a quarter's rho is another sample of the field's.
+    {
+        const std::size_t side = 2 * spreadSide;
+        std::vector<double> field(side * side);
+        std::vector<double> column(side, 0.0);
+        for (std::size_t iy = 0; iy < side; ++iy) {
+            double row = 0.0;
+            for (std::size_t ix = 0; ix < side; ++ix) {
+                column[ix] = 0.98 * column[ix] + normal(rng);
+                row = 0.98 * row + column[ix];
+                field[iy * side + ix] = 1e-9 * row;
+            }
+        }
+        const HeightSkewness whole = arealSkewness(ArealSurface(field, side, side, 1e-6, 1e-6));
+        const std::size_t q = side / 4;
+        std::vector<double> quarter(q * q);
+        for (std::size_t iy = 0; iy < q; ++iy) {
+            for (std::size_t ix = 0; ix < q; ++ix) {
+                quarter[iy * q + ix] = field[iy * side + ix];
+            }
+        }
+        const double full = arealSkewness(ArealSurface(quarter, q, q, 1e-6, 1e-6)).spread;
+        EXPECT_NEAR(whole.spread, full / 4.0, 0.25 * full / 4.0);
+    }
     // Monte Carlo: the standard deviation of the skewness of 2000 samples of 512 normal numbers.
     double sum = 0.0;
     double sum2 = 0.0;

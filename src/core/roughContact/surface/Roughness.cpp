@@ -147,11 +147,18 @@ HeightSkewness skewnessOf(const std::vector<double>& z, std::size_t nx, std::siz
     if (!(std::sqrt(m2) >= limits::minimumRoughness)) {
         throw ParameterError(what, "its heights are flat (rms below 1e-15 m after detrending): no skewness");
     }
-    std::vector<double> d(z.size());
-    for (std::size_t i = 0; i < z.size(); ++i) {
-        d[i] = z[i] - mean;
+    // A map of more than spreadSide points a side: the spread from every k-th point each way
+    // (Roughness.hpp), so that its padded grid stays within (2 spreadSide)^2.
+    const std::size_t k = ny == 1 ? 1 : (std::max(nx, ny) + spreadSide - 1) / spreadSide;
+    const std::size_t sx = (nx + k - 1) / k;
+    const std::size_t sy = (ny + k - 1) / k;
+    std::vector<double> d(sx * sy);
+    for (std::size_t iy = 0; iy < sy; ++iy) {
+        for (std::size_t ix = 0; ix < sx; ++ix) {
+            d[iy * sx + ix] = z[iy * k * nx + ix * k] - mean;
+        }
     }
-    return HeightSkewness{m3 / (m2 * std::sqrt(m2)), gaussianSkewnessSpread(d, nx, ny)};
+    return HeightSkewness{m3 / (m2 * std::sqrt(m2)), gaussianSkewnessSpread(d, sx, sy)};
 }
 
 } // namespace

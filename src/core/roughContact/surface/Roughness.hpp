@@ -53,8 +53,15 @@ struct HeightSkewness {
     /// large-N variance of the sample third moment of a Gaussian process (6/N for independent
     /// heights). A profile or map that holds few of its longest wavelengths is skewed by chance:
     /// the seed's stand-in profile 0.243 against a spread of 0.322, the X3P map -0.379 against 0.125.
+    /// A map of more than spreadSide points a side gives it from every k-th point each way
+    /// (k = ceil(side/spreadSide)): the padded grid of a 4096^2 map would take 1 GB. That keeps
+    /// the long-range correlation that makes a spread large, and overstates the spread of heights
+    /// uncorrelated from point to point (by up to k: on the side of "could be chance").
     double spread;
 };
+
+/// The most points a side from which a map's skewness spread is computed (HeightSkewness).
+constexpr std::size_t spreadSide = 1024;
 
 /// The skewness of a profile's heights after removing its mean and linear tilt (as
 /// profileRoughness), with its spread. Every law and multi-scale model here assumes Gaussian
