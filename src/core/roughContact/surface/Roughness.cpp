@@ -117,7 +117,12 @@ double gaussianSkewnessSpread(const std::vector<double>& d, std::size_t nx, std:
         underFftwPlanner([&] { return fftw_plan_dft_c2r(2, dims, spec.get(), in.data(), FFTW_ESTIMATE); });
     fftw_execute(backward);
     underFftwPlanner([&] { fftw_destroy_plan(backward); });
+    // The zero-lag sum; 0 only when every sample lies on the mean (a map whose every k-th point
+    // does): nothing is known of their correlation, so the independent heights' sqrt(6/N).
     const double r0 = in[0];
+    if (!(r0 > 0.0)) {
+        return std::sqrt(6.0 / static_cast<double>(nx * ny));
+    }
     double sum = 0.0;
     for (double r : in) {
         const double rho = r / r0;

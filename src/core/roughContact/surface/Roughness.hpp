@@ -44,7 +44,7 @@ SurfaceRoughness arealRoughness(const ArealSurface& surface, ScanDirection direc
 /// (0.90 rather than 0.80 of the rms slope). ParameterError when sigma or m is zero.
 SurfaceRoughness spectrumRoughness(const Spectrum& spectrum);
 
-/// A surface's heights' skewness and how much of it chance alone would give.
+/// A surface's heights' skewness and how much of it chance alone would give (docs/theory.md §5.15).
 struct HeightSkewness {
     double skewness; ///< mu3/sigma^3 of the detrended heights, mu3 = <z^3> the third central moment
     /// The standard deviation of the skewness that Gaussian heights with the same autocorrelation
