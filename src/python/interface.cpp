@@ -217,7 +217,8 @@ void bindInterface(py::module_& m)
         .def("roughness", &SurfaceSpec::roughness, "Its sigma [m] and mean absolute slope.")
         .def("skewness", &SurfaceSpec::skewness,
              "Its heights' skewness and its spread by chance (HeightSkewness: skewness, spread; a profile's or an "
-             "areal map's, detrended), or None for a spectrum: the laws assume 0 (Gaussian heights).");
+             "areal map's, detrended), or None for a spectrum: fittedElastoPlastic takes it with chance's share out "
+             "(shrunk_skewness), the other laws assume 0 (Gaussian heights).");
 
     py::class_<ContactInterface>(m, "ContactInterface",
                                  "Surfaces + materials + model + conductance law -> the pressure table "

@@ -225,6 +225,8 @@ void bindSurfaces(py::module_& m)
     py::class_<HeightSkewness>(m, "HeightSkewness",
                                "A surface's heights' skewness and the spread (standard deviation) Gaussian heights "
                                "of the same autocorrelation and size give it by chance.")
+        .def(py::init([](double skewness, double spread) { return HeightSkewness{skewness, spread}; }),
+             py::arg("skewness"), py::arg("spread"), "HeightSkewness(skewness, spread).")
         .def_readonly("skewness", &HeightSkewness::skewness, "mu3/sigma^3 of the detrended heights")
         .def_readonly("spread", &HeightSkewness::spread,
                       "what chance gives Gaussian heights: sqrt((6/N) sum_k rho(k)^3)")
@@ -242,6 +244,9 @@ void bindSurfaces(py::module_& m)
           "sigma [m] and the mean absolute slope of a spectrum (Gaussian slopes assumed).");
     m.def("combined_roughness", &combined, py::arg("a"), py::arg("b"),
           "The equivalent roughness of two surfaces: sigma and m added in quadrature.");
+    m.def("shrunk_skewness", &shrunkSkewness, py::arg("skewness"),
+          "A HeightSkewness with chance's share taken out, s (1 - spread^2/s^2) where |s| > spread, else "
+          "0: the skewness the conductance law fittedElastoPlastic takes.");
     m.def("spectral_bandwidth_ratio", &spectralBandwidthRatio, py::arg("spectrum"),
           "W = m1/sqrt(m0 m2) of a line-scan spectrum (0 < W <= 1, 1 for a single level): the "
           "conductance law fittedElastoPlastic's plastic spots are spaced by W m/sigma.");

@@ -54,7 +54,7 @@ void bindThermal(py::module_& m)
         .def(py::init([](const std::string& name, const Model* model, const Spectrum* spectrum,
                          std::optional<double> Eprime, std::optional<SurfaceRoughness> roughness,
                          std::optional<double> microhardness, std::optional<std::pair<double, double>> vickers,
-                         std::optional<double> hardness) {
+                         std::optional<double> hardness, std::optional<HeightSkewness> skewness) {
                  Law x;
                  ConductanceLawInputs in;
                  if (model != nullptr) {
@@ -73,6 +73,7 @@ void bindThermal(py::module_& m)
                  in.roughness = roughness;
                  in.microhardness = microhardness;
                  in.hardness = hardness;
+                 in.skewness = skewness;
                  if (vickers) {
                      in.vickers = VickersCoefficients{vickers->first, vickers->second};
                  }
@@ -81,15 +82,16 @@ void bindThermal(py::module_& m)
              }),
              py::arg("name"), py::arg("model") = nullptr, py::arg("spectrum") = nullptr, py::arg("Eprime") = py::none(),
              py::arg("roughness") = py::none(), py::arg("microhardness") = py::none(), py::arg("vickers") = py::none(),
-             py::arg("hardness") = py::none(),
+             py::arg("hardness") = py::none(), py::arg("skewness") = py::none(),
              "ConductanceLaw(name, model=None, spectrum=None, Eprime=None, roughness=None, microhardness=None, "
-             "vickers=None, hardness=None): name from conductance_law_names(). What each law needs: "
+             "vickers=None, hardness=None, skewness=None): name from conductance_law_names(). What each law needs: "
              "jacksonBhavnaniFerguson and multiscaleBarber a multi-scale Model; persson a spectrum (the "
              "model's by default) and E' [Pa] (the model's by default); mikic a SurfaceRoughness and E'; "
              "cooperMikicYovanovich a SurfaceRoughness and the microhardness H_c [Pa] or the Vickers "
              "coefficients (c1 [Pa], c2); fittedElastoPlastic a SurfaceRoughness, E' and, for its plastic "
              "branch, the cap `hardness` H [Pa] (None: elastic) and a spectrum (the model's by default: its "
-             "bandwidth ratio). ParameterError names what is missing.")
+             "bandwidth ratio), and a measured surface's HeightSkewness (SurfaceSpec.skewness(); None: Gaussian "
+             "heights), taken with chance's share out (shrunk_skewness). ParameterError names what is missing.")
         .def_property_readonly("name", [](const Law& x) { return x.law->name(); }, "The law's name.")
         .def(
             "conductance_per_conductivity",

@@ -191,3 +191,30 @@ def test_skewness_of_measured_heights():
     assert abs(s.skewness) > 3 * s.spread
     assert abs(d.skewness) < d.spread
     assert rc.SurfaceSpec.power_law(1e-7, 1.3, 1e3, 2e5, length=1e-3).skewness() is None
+
+
+def test_the_default_law_takes_the_skewness_with_chances_share_out():
+    # shrunk_skewness: s (1 - e^2/s^2) where |s| > e, else 0 (by hand); the default law's elastic
+    # branch takes it through exp(s (a0 + a1 ln x) + b s^2) (FittedElastoPlastic.hpp, the constants
+    # docs/validation/skewnessReport fits), and the published laws take none.
+    x3p = rc.SurfaceSpec.areal(X3P).skewness()
+    s = rc.shrunk_skewness(x3p)
+    assert s == pytest.approx(x3p.skewness * (1 - x3p.spread ** 2 / x3p.skewness ** 2), rel=1e-14)
+    assert s == pytest.approx(-0.338, abs=1e-3)
+    assert rc.shrunk_skewness(rc.SurfaceSpec.profile(STANDIN).skewness()) == 0.0
+    assert rc.shrunk_skewness(rc.HeightSkewness(0.3, 0.3)) == 0.0
+    rough = rc.SurfaceRoughness(1e-6, 0.1 / math.sqrt(math.pi))
+    Ep = 200e9 / (2 * (1 - 0.09))
+    P = np.array([1e5, 1e6, 1e7])
+    gaussian = rc.ConductanceLaw("fittedElastoPlastic", roughness=rough, Eprime=Ep)
+    skewed = rc.ConductanceLaw("fittedElastoPlastic", roughness=rough, Eprime=Ep, skewness=x3p)
+    x = np.clip(P / (math.sqrt(math.pi) * Ep * rough.mean_absolute_slope), 1e-3, 0.1)
+    f = np.exp(s * (0.0690 + 0.1581 * np.log(x)) - 0.0537 * s * s)
+    ratio = np.asarray(skewed.conductance_per_conductivity(P)) / np.asarray(gaussian.conductance_per_conductivity(P))
+    assert ratio == pytest.approx(f, rel=1e-12)
+    assert np.all(ratio > 1.09)  # a flat top conducts more
+    mikic = [rc.ConductanceLaw("mikic", roughness=rough, Eprime=Ep, skewness=k).conductance_per_conductivity(P)
+             for k in (None, x3p)]
+    assert list(mikic[0]) == list(mikic[1])
+    with pytest.raises(rc.ParameterError):
+        rc.shrunk_skewness(rc.HeightSkewness(0.1, -1.0))

@@ -171,6 +171,9 @@ int run(const Options& o)
         in.microhardness = hardnessOf(o, materials, "--hardness-from-yield");
         // fittedElastoPlastic's cap: --hardness (or from yield), else 2.84 S_y where --Sy is given.
         in.hardness = conductanceLawHardness(in.microhardness, materials);
+        if (allLaws || lawName == "fittedElastoPlastic") {
+            in.skewness = skewnessOf(o); // a measured profile's or map's; none for a spectrum
+        }
         if (!o.vickers.empty()) {
             const std::vector<double> c = splitNumbers(o.vickers, ',', "--vickers");
             if (c.size() != 2) {

@@ -170,9 +170,12 @@ TEST(InterfaceRegime, SaysTheSkewnessOfMeasuredHeights)
     EXPECT_EQ(r.skewness->spread, map.skewness()->spread);
     const std::string text = r.describe();
     EXPECT_NE(text.substr(0, text.find('\n')).find("heights' skewness -0.379 (Gaussian heights of this spectrum and "
-                                                     "size give +-0.125 by chance"),
+                                                     "size give +-0.125 by chance; the law takes -0.338, "
+                                                     "chance's share out"),
               std::string::npos)
         << text;
+    // The default law takes the shrunk skewness: its h is the law's with that skewness.
+    EXPECT_EQ(r.law, "fittedElastoPlastic");
     SurfaceSpec gaussian;
     gaussian.kind = SurfaceSpec::Kind::powerLaw;
     gaussian.parameters = {1e-7 * std::pow(1e3, 1.3), 1.3, 1e3, 2e5};

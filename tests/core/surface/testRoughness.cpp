@@ -214,6 +214,20 @@ TEST(Roughness, CombinedSkewness)
 // N = 4096. Correlated heights hold fewer independent values: a larger spread. A Monte Carlo over
 // 2000 white-noise samples of N = 512 checks that sqrt(6/N) is the sampling spread (its standard
 // error about 1.6 %, the large-N formula a few per cent high at this N: 10 %).
+TEST(Roughness, ShrunkSkewnessTakesChancesShareOut)
+{
+    // s (1 - e^2/s^2) where |s| > e, else 0: by hand, odd in s, continuous at |s| = e.
+    EXPECT_NEAR(shrunkSkewness(HeightSkewness{-0.379, 0.125}), -0.379 + 0.125 * 0.125 / 0.379, 1e-15);
+    EXPECT_NEAR(shrunkSkewness(HeightSkewness{0.5, 0.3}), 0.5 - 0.09 / 0.5, 1e-15);
+    EXPECT_EQ(shrunkSkewness(HeightSkewness{-0.5, 0.3}), -shrunkSkewness(HeightSkewness{0.5, 0.3}));
+    EXPECT_EQ(shrunkSkewness(HeightSkewness{0.243, 0.322}), 0.0); // the stand-in profile: chance
+    EXPECT_EQ(shrunkSkewness(HeightSkewness{0.3, 0.3}), 0.0);
+    EXPECT_LT(std::abs(shrunkSkewness(HeightSkewness{0.3 * (1 + 1e-9), 0.3})), 1e-8);
+    EXPECT_EQ(shrunkSkewness(HeightSkewness{0.2, 0.0}), 0.2); // no chance: as measured
+    EXPECT_THROW(shrunkSkewness(HeightSkewness{std::nan(""), 0.1}), ParameterError);
+    EXPECT_THROW(shrunkSkewness(HeightSkewness{0.1, -0.1}), ParameterError);
+}
+
 TEST(Roughness, SkewnessSpreadIsWhatChanceGives)
 {
     std::mt19937_64 rng(7);

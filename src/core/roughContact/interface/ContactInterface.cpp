@@ -227,6 +227,9 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
     if (conductanceLawNeedsRoughness(conductanceLaw_)) {
         in.roughness = equivalentRoughness(spec.surfaces);
     }
+    // A measured profile's or map's (the regime says it too); none for a spectrum.
+    const std::optional<HeightSkewness> skewness = equivalentSkewness(spec.surfaces);
+    in.skewness = skewness;
     const std::unique_ptr<ConductanceLaw> law = makeConductanceLaw(conductanceLaw_, in);
     table_ = std::make_unique<ContactTable>(*model_, spec.minPressure.value_or(1e-9 * Ep),
                                             spec.maxPressure.value_or(Ep), spec.pointsPerDecade, law.get());
@@ -236,7 +239,7 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
     const bool capped = heldToCappedReference(spec.model, conductanceLaw_, H.has_value());
     regime_ = interfaceRegime(surface_, Ep, H, conductanceLaw_, spec.model, capped, table_->pressures().front(),
                               table_->pressures().back());
-    regime_.skewness = equivalentSkewness(spec.surfaces);
+    regime_.skewness = skewness;
     buildGap(spec);
 }
 

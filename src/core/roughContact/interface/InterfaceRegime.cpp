@@ -83,8 +83,13 @@ std::string InterfaceRegime::describe() const
     }
     if (skewness) {
         os << ", heights' skewness " << skewness->skewness
-           << " (Gaussian heights of this spectrum and size give +-" << skewness->spread
-           << " by chance; the laws assume 0; how far it matters: docs/validation/skewness.md)";
+           << " (Gaussian heights of this spectrum and size give +-" << skewness->spread << " by chance; ";
+        if (law == "fittedElastoPlastic") {
+            os << "the law takes " << shrunkSkewness(*skewness) << ", chance's share out";
+        } else {
+            os << "the law assumes 0 (fittedElastoPlastic takes " << shrunkSkewness(*skewness) << ")";
+        }
+        os << "; how far it matters: docs/validation/skewness.md)";
     }
     for (const RegimeAt* r : {&low, &high}) {
         if (r == &high && high.pressure == low.pressure) {

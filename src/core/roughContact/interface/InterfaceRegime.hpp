@@ -39,7 +39,8 @@ struct InterfaceRegime {
     std::optional<double> hardness;            ///< H [Pa]
     std::optional<double> plasticityIndex;     ///< psi, with a hardness
     /// The heights' skewness (equivalentSkewness: a measured profile's or map's; none for a
-    /// spectrum): every law and model here assumes 0 (Gaussian heights), and the log says so.
+    /// spectrum): the law fittedElastoPlastic takes it with chance's share out (shrunkSkewness),
+    /// every other law and model assumes 0 (Gaussian heights); the log says which.
     std::optional<HeightSkewness> skewness;
     std::string law;                           ///< the chosen law ("boundaryElement (exact)" for the exact model)
     std::string areaModel;                     ///< the area model

@@ -321,6 +321,10 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     in.spectrum = &*lawSpectrum;
     in.Eprime = Ep;
     in.roughness = areal ? equivalentRoughness(spec.surfaces) : spectrumRoughness(*lawSpectrum);
+    // The surfaces checked on are the map's heights, or Gaussian ones synthesized from a spectrum.
+    if (areal) {
+        in.skewness = equivalentSkewness(spec.surfaces);
+    }
     in.microhardness = spec.microhardness ? spec.microhardness : out.hardness;
     in.hardness = in.microhardness;
     in.vickers = spec.vickers;

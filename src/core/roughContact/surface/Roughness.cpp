@@ -195,6 +195,16 @@ HeightSkewness combinedSkewness(double sigma1, const HeightSkewness& a, double s
                           std::hypot(a.spread * c1, b.spread * c2) / v3};
 }
 
+double shrunkSkewness(const HeightSkewness& s)
+{
+    if (!std::isfinite(s.skewness) || !std::isfinite(s.spread) || s.spread < 0.0) {
+        throw ParameterError("skewness", "needs a finite skewness and a finite spread >= 0");
+    }
+    const double s2 = s.skewness * s.skewness;
+    const double e2 = s.spread * s.spread;
+    return s2 > e2 ? s.skewness * (1.0 - e2 / s2) : 0.0;
+}
+
 SurfaceRoughness spectrumRoughness(const Spectrum& spectrum)
 {
     const SpectralMoments mo = spectralMoments(spectrum);

@@ -104,16 +104,18 @@ private:
 class FittedElastoPlasticLaw final : public ConductanceLaw {
 public:
     // W only spaces the plastic spots: without a cap (or a spectrum) it plays no part, 1 stands in.
+    // The skewness, chance's share taken out (shrunkSkewness); none: Gaussian heights.
     FittedElastoPlasticLaw(const SurfaceRoughness& r, const Spectrum* spectrum, double Eprime,
-                           std::optional<double> H)
-        : r_(r), W_(spectrum != nullptr ? spectralBandwidthRatio(*spectrum) : 1.0), Eprime_(Eprime), H_(H)
+                           std::optional<double> H, const std::optional<HeightSkewness>& skewness)
+        : r_(r), W_(spectrum != nullptr ? spectralBandwidthRatio(*spectrum) : 1.0), Eprime_(Eprime), H_(H),
+          s_(skewness ? shrunkSkewness(*skewness) : 0.0)
     {
-        fittedElastoPlasticConductancePerConductivity(0.0, r_, W_, Eprime_, H_); // checks the inputs once
+        fittedElastoPlasticConductancePerConductivity(0.0, r_, W_, Eprime_, H_, s_); // checks the inputs once
     }
     std::string name() const override { return "fittedElastoPlastic"; }
     double perConductivity(double P) const override
     {
-        return fittedElastoPlasticConductancePerConductivity(P, r_, W_, Eprime_, H_);
+        return fittedElastoPlasticConductancePerConductivity(P, r_, W_, Eprime_, H_, s_);
     }
 
 private:
@@ -121,6 +123,7 @@ private:
     double W_;
     double Eprime_;
     std::optional<double> H_;
+    double s_;
 };
 
 class PerssonLaw final : public ConductanceLaw {
@@ -233,7 +236,7 @@ std::unique_ptr<ConductanceLaw> makeConductanceLaw(const std::string& name, cons
                       "and m for its plastic branch (the cap H)");
         }
         return std::make_unique<FittedElastoPlasticLaw>(needRoughness(name, in), in.spectrum, in.Eprime,
-                                                        in.hardness);
+                                                        in.hardness, in.skewness);
     }
     std::string known;
     for (const auto& n : conductanceLawNames()) {

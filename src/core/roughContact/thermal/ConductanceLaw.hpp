@@ -20,7 +20,8 @@
 //   fittedElastoPlastic      Mikic's elastic form and the CMY plastic-spot geometry, refitted to
 //                            the exact conductance and blended (FittedElastoPlastic.hpp). Needs
 //                            sigma, m, E' and, for the plastic branch, the cap H and the
-//                            line-scan spectrum (its bandwidth ratio W).
+//                            line-scan spectrum (its bandwidth ratio W); takes a measured
+//                            surface's heights' skewness where it is more than chance.
 #pragma once
 
 #include "roughContact/material/Materials.hpp"
@@ -67,6 +68,10 @@ struct ConductanceLawInputs {
     /// fittedElastoPlastic: the plastic cap H [Pa] (the microhardness where given, else 2.84 S_y
     /// of the yielding material); none: its elastic branch alone.
     std::optional<double> hardness;
+    /// fittedElastoPlastic: the heights' skewness with its spread (equivalentSkewness of a measured
+    /// profile or map), taken with chance's share out (shrunkSkewness); none: Gaussian heights.
+    /// The other laws assume Gaussian heights and take none.
+    std::optional<HeightSkewness> skewness;
 };
 
 /// The cap H [Pa] of the laws that take one (ConductanceLawInputs::hardness): the microhardness

@@ -7,6 +7,7 @@
 
 #include <boost/math/special_functions/erf.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -27,8 +28,34 @@ double gaussianPlasticSpotConductance(double a)
     return std::exp(-0.5 * lambda * lambda) / (2.0 * std::sqrt(2.0 * pi) * std::pow(1.0 - std::sqrt(a), 1.5));
 }
 
+namespace {
+
+void checkSkewness(double skewness)
+{
+    requireFinite("heights' skewness", skewness);
+    // The skewed surfaces the factor was fitted on reach |s| = 0.6; beyond 2 exp(b s^2) and the
+    // linear slope say nothing a measured engineering surface needs.
+    if (std::abs(skewness) > 2.0) {
+        throw ParameterError("heights' skewness", "must lie within [-2, 2], got " + std::to_string(skewness));
+    }
+}
+
+} // namespace
+
+double fittedSkewnessFactor(double skewness, double x, const FittedElastoPlasticConstants& c)
+{
+    checkSkewness(skewness);
+    requireFinite("x = P/(E' h')", x);
+    if (!(x > 0.0)) {
+        throw ParameterError("x = P/(E' h')", "must be > 0, got " + std::to_string(x));
+    }
+    const double xc = std::min(std::max(x, c.skewnessLightestLoad), c.skewnessHeaviestLoad);
+    return std::exp(skewness * (c.skewnessSlope + c.skewnessSlopeLog * std::log(xc)) +
+                    c.skewnessCurvature * skewness * skewness);
+}
+
 double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoughness& r, double bandwidth,
-                                                     double Eprime, std::optional<double> H,
+                                                     double Eprime, std::optional<double> H, double skewness,
                                                      const FittedElastoPlasticConstants& c)
 {
     requireFinite("contact pressure P", P);
@@ -46,6 +73,7 @@ double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoug
     if (H) {
         limits::requireInRange("hardness H", *H, limits::minimumHardness, limits::maximumHardness, "Pa");
     }
+    checkSkewness(skewness);
     if (P == 0.0) {
         return 0.0;
     }
@@ -60,14 +88,15 @@ double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoug
     // exceeds a double; it is +inf there (complete contact) without an overflow on the way.
     const double logElastic = std::log(c.elasticPrefactor * (m / r.sigma)) +
                               c.elasticExponent * std::log(std::sqrt(2.0) * P / (Eprime * m)) + c.elasticGrowth * x;
+    const double logSkew = std::log(fittedSkewnessFactor(skewness, x, c));
     const double logMax = 700.0 / std::max(1.0, c.blend);
     if (logElastic > logMax) {
         return inf;
     }
-    const double elastic = std::exp(logElastic);
     if (!H) {
-        return elastic;
+        return logElastic + logSkew > logMax ? inf : std::exp(logElastic + logSkew);
     }
+    const double elastic = std::exp(logElastic);
     const double a = P / *H;
     // The plastic spots' spacing follows W m/sigma (= sqrt(2/pi) m1/m0 for a spectrum's own sigma
     // and m): a spectrum whose heights live at long wavelengths clusters its spots on them.
@@ -76,7 +105,13 @@ double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoug
     if (!(plastic < std::exp(logMax))) {
         return inf;
     }
-    return std::pow(std::pow(elastic, c.blend) + std::pow(plastic, c.blend), 1.0 / c.blend);
+    // Skewed heights scale the elastic branch by f^w, w its share of the Gaussian blend: the caps
+    // flatten the tops whose distribution f is about (fitted on nothing; chosen on the capped
+    // skewed surfaces of docs/validation/skewness.md over f itself and f^(w^2)).
+    const double elasticN = std::pow(elastic, c.blend);
+    const double plasticN = std::pow(plastic, c.blend);
+    const double share = elasticN / (elasticN + plasticN);
+    return std::pow(elasticN * std::exp(c.blend * share * logSkew) + plasticN, 1.0 / c.blend);
 }
 
 } // namespace roughContact

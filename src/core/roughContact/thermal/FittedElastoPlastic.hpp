@@ -21,6 +21,20 @@
 //   h_c/k_s = (h_el^N + h_pl^N)^(1/N)                          a smooth maximum (a cap only
 //                                                              adds area); no cap: h_el.
 //
+// Skewed heights (docs/theory.md §5.7b; docs/validation/skewness.md): h_el is multiplied by
+//
+//   f(s, x) = exp(s (a_0 + a_1 ln x_c) + b s^2),   x_c = x held within [1e-3, 0.1],
+//
+// elastically, and by f^w with a cap, w = h_el^N/(h_el^N + h_pl^N) the elastic branch's share
+// of the Gaussian blend (the caps flatten the tops whose distribution f is about; w -> 1 as H
+// grows, so the capped law joins the elastic one). f is the exact elastic conductance of a
+// surface of heights' skewness s over that of the same spectrum with Gaussian heights, fitted
+// (least squares in ln f) on three self-affine spectra, four seeds, s = -0.6 to +0.6
+// (docs/validation/skewnessReport), never on the X3P map. Below x = 1e-3 and above 0.1 no
+// skewed surface was solved: f is held at its ends there. s is the
+// surface's skewness with chance's share taken out (shrunkSkewness, Roughness.hpp): 0 for a
+// spectrum, and for a profile or map whose skewness chance could give.
+//
 // m is the mean absolute profile slope (h'/sqrt(pi) for an isotropic surface with Gaussian
 // slopes, h' the areal rms gradient), sigma the rms height, both of the band of wavelengths
 // the conductance is meant to resolve; W the bandwidth ratio of the surfaces' line-scan spectrum
@@ -52,7 +66,17 @@ struct FittedElastoPlasticConstants {
     double plasticPrefactor = 0.9262; ///< C_P
     double plasticExponent = 0.3803;  ///< K
     double blend = 1.1931;            ///< N
+    double skewnessSlope = 0.0690;    ///< a_0 (docs/validation/skewnessReport fits the three)
+    double skewnessSlopeLog = 0.1581; ///< a_1
+    double skewnessCurvature = -0.0537; ///< b
+    double skewnessLightestLoad = 1e-3; ///< x_c's range: the loads the skewed surfaces were solved at
+    double skewnessHeaviestLoad = 0.1;
 };
+
+/// f(s, x) of the header: the elastic branch's factor for heights of skewness s (finite; the
+/// shrunk skewness) at x = P/(E' h') (finite, > 0). 1 at s = 0; above 1 for s < 0 (the heights
+/// reach up in broad plateaus and down in narrow pits: more of the surface is near its top).
+double fittedSkewnessFactor(double skewness, double x, const FittedElastoPlasticConstants& c = {});
 
 /// g(a) of the header: sigma h_c/(k_s m) of Gaussian plastic spots covering the area fraction a
 /// (0 <= a < 1; 0 gives 0). ParameterError outside [0, 1).
@@ -61,10 +85,11 @@ double gaussianPlasticSpotConductance(double a);
 /// h_c/k_s [1/m] of the law at the nominal pressure P [Pa] (finite, >= 0), for the combined
 /// roughness r (sigma [m], m), the bandwidth ratio W of the combined line-scan spectrum (0 < W <= 1,
 /// spectralBandwidthRatio), the reduced modulus E' [Pa] and the cap H [Pa] (none: elastic; W then
-/// plays no part); +inf at and beyond P = H, and where the elastic branch passes e^700 (x of about
-/// 700/beta). ParameterError naming the entry on bad input.
+/// plays no part), the heights' shrunk skewness s (finite, |s| <= 2; 0: Gaussian heights);
+/// +inf at and beyond P = H, and where the elastic branch passes e^700 (x of about 700/beta).
+/// ParameterError naming the entry on bad input.
 double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoughness& r, double bandwidth,
-                                                     double Eprime, std::optional<double> H,
+                                                     double Eprime, std::optional<double> H, double skewness = 0.0,
                                                      const FittedElastoPlasticConstants& c = {});
 
 } // namespace roughContact
