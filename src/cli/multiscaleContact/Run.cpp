@@ -171,8 +171,10 @@ int run(const Options& o)
         in.microhardness = hardnessOf(o, materials, "--hardness-from-yield");
         // fittedElastoPlastic's cap: --hardness (or from yield), else 2.84 S_y where --Sy is given.
         in.hardness = conductanceLawHardness(in.microhardness, materials);
-        if (allLaws || lawName == "fittedElastoPlastic") {
-            in.skewness = skewnessOf(o); // a measured profile's or map's; none for a spectrum
+        // A measured profile's or map's; none for a spectrum, nor for the Gaussian surfaces
+        // --synthesize makes from it (the exact answer beside the laws is on those).
+        if ((allLaws || lawName == "fittedElastoPlastic") && o.synthesize.empty()) {
+            in.skewness = skewnessOf(o);
         }
         if (!o.vickers.empty()) {
             const std::vector<double> c = splitNumbers(o.vickers, ',', "--vickers");

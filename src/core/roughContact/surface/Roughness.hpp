@@ -84,9 +84,11 @@ HeightSkewness combinedSkewness(double sigma1, const HeightSkewness& a, double s
 
 /// The surface's skewness with the share chance explains taken out: s (1 - e^2/s^2) where
 /// |s| > e (the spread), else 0. A sample skewness s is the surface's theta plus chance of
-/// variance e^2; with theta drawn from a zero-mean spread tau^2 the best estimate of theta is
-/// s tau^2/(tau^2 + e^2), and s^2 estimates tau^2 + e^2: the positive-part James-Stein estimate
-/// (Efron & Morris, J. Am. Stat. Assoc. 68 (1973) 117-130; docs/theory.md §5.7b). The skewness
+/// variance e^2; with theta and chance Gaussian, theta drawn from a zero-mean spread tau^2, the
+/// posterior mean of theta is s tau^2/(tau^2 + e^2) (the empirical-Bayes shrinkage of Efron &
+/// Morris, J. Am. Stat. Assoc. 68 (1973) 117-130), and s^2 estimates tau^2 + e^2: a plug-in from
+/// one observation, the positive-part form of Stein's rule without its guarantee (which needs
+/// three or more estimates; docs/theory.md §5.7b). The skewness
 /// the law fittedElastoPlastic takes: the X3P map's -0.379 +- 0.125 gives -0.338; the seed's
 /// stand-in profile's 0.243 +- 0.322 gives 0. Non-finite input: ParameterError.
 double shrunkSkewness(const HeightSkewness& s);

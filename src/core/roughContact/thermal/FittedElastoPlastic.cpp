@@ -40,6 +40,13 @@ void checkSkewness(double skewness)
     }
 }
 
+// ln f(s, x), unchecked: x may have under- or overflowed to 0 or +inf (held within the range).
+double logSkewnessFactor(double skewness, double x, const FittedElastoPlasticConstants& c)
+{
+    const double xc = std::min(std::max(x, c.skewnessLightestLoad), c.skewnessHeaviestLoad);
+    return skewness * (c.skewnessSlope + c.skewnessSlopeLog * std::log(xc)) + c.skewnessCurvature * skewness * skewness;
+}
+
 } // namespace
 
 double fittedSkewnessFactor(double skewness, double x, const FittedElastoPlasticConstants& c)
@@ -49,9 +56,7 @@ double fittedSkewnessFactor(double skewness, double x, const FittedElastoPlastic
     if (!(x > 0.0)) {
         throw ParameterError("x = P/(E' h')", "must be > 0, got " + std::to_string(x));
     }
-    const double xc = std::min(std::max(x, c.skewnessLightestLoad), c.skewnessHeaviestLoad);
-    return std::exp(skewness * (c.skewnessSlope + c.skewnessSlopeLog * std::log(xc)) +
-                    c.skewnessCurvature * skewness * skewness);
+    return std::exp(logSkewnessFactor(skewness, x, c));
 }
 
 double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoughness& r, double bandwidth,
@@ -87,8 +92,9 @@ double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoug
     // In logarithms: far beyond its range (x of hundreds) the elastic branch, or its power N,
     // exceeds a double; it is +inf there (complete contact) without an overflow on the way.
     const double logElastic = std::log(c.elasticPrefactor * (m / r.sigma)) +
-                              c.elasticExponent * std::log(std::sqrt(2.0) * P / (Eprime * m)) + c.elasticGrowth * x;
-    const double logSkew = std::log(fittedSkewnessFactor(skewness, x, c));
+                              c.elasticExponent * (std::log(std::sqrt(2.0) * P) - std::log(Eprime * m)) + c.elasticGrowth * x;
+    // Gaussian heights: no factor (the law is then bit for bit the one without a skewness).
+    const double logSkew = skewness == 0.0 ? 0.0 : logSkewnessFactor(skewness, x, c);
     const double logMax = 700.0 / std::max(1.0, c.blend);
     if (logElastic > logMax) {
         return inf;
@@ -110,7 +116,8 @@ double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoug
     // skewed surfaces of docs/validation/skewness.md over f itself and f^(w^2)).
     const double elasticN = std::pow(elastic, c.blend);
     const double plasticN = std::pow(plastic, c.blend);
-    const double share = elasticN / (elasticN + plasticN);
+    const double sum = elasticN + plasticN; // 0 only where both underflow: h = 0
+    const double share = sum > 0.0 ? elasticN / sum : 0.0;
     return std::pow(elasticN * std::exp(c.blend * share * logSkew) + plasticN, 1.0 / c.blend);
 }
 
