@@ -4,6 +4,7 @@
 // Mikic's constants), the smooth maximum, its limits, and its values against an independent
 // implementation of the same formulas.
 #include "roughContact/Error.hpp"
+#include "roughContact/Limits.hpp"
 #include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/interface/SurfaceCheck.hpp"
 #include "roughContact/surface/SpectralMoments.hpp"
@@ -190,15 +191,27 @@ TEST(FittedElastoPlastic, SkewedHeightsScaleTheElasticBranch)
     }
     EXPECT_THROW(fittedElastoPlasticConductancePerConductivity(1e6, rough, W, Ep, H, 3.0), ParameterError);
     // Where x under- or overflows the law still answers, as it did before it took a skewness: a
-    // denormal pressure (x rounds to 0) gives a finite h >= 0, a slope near the smallest double
-    // (x overflows) +inf, and both branches underflowing gives 0, not 0/0.
+    // denormal pressure (x rounds to 0) gives a finite h >= 0, capped too (the branches' powers
+    // near underflow; the share guards 0/0), and the largest pressure +inf (x would overflow).
     for (double s : {0.0, -0.4}) {
         SCOPED_TRACE(s);
         const double tiny = fittedElastoPlasticConductancePerConductivity(1e-320, rough, W, Ep, std::nullopt, s);
         EXPECT_TRUE(std::isfinite(tiny) && tiny >= 0.0);
-        EXPECT_EQ(fittedElastoPlasticConductancePerConductivity(1e-320, SurfaceRoughness{1.0, 1e-60}, W, Ep, 1e9, s),
-                  0.0);
+        const double smallest = fittedElastoPlasticConductancePerConductivity(
+            std::numeric_limits<double>::denorm_min(), SurfaceRoughness{1e3, 1e-9}, W, Ep, 1e9, s);
+        EXPECT_TRUE(std::isfinite(smallest) && smallest >= 0.0);
+        // The largest pressure a double holds on the softest solid and the flattest slope accepted
+        // (x = P/(sqrt(pi) E' m) would overflow): complete contact, without an overflow.
+        EXPECT_EQ(fittedElastoPlasticConductancePerConductivity(std::numeric_limits<double>::max(),
+                                                                SurfaceRoughness{1e-3, limits::minimumSlope}, W,
+                                                                limits::minimumReducedModulus, std::nullopt, s),
+                  std::numeric_limits<double>::infinity());
     }
+    // A slope no surface has (below 1e-9 or above 1e3) is refused, not overflowed.
+    EXPECT_THROW(fittedElastoPlasticConductancePerConductivity(1e6, SurfaceRoughness{1e-6, 1e-300}, W, Ep, std::nullopt),
+                 ParameterError);
+    EXPECT_THROW(fittedElastoPlasticConductancePerConductivity(1e6, SurfaceRoughness{1e-6, 1e4}, W, Ep, std::nullopt),
+                 ParameterError);
 
     // By name: the law takes a measured surface's skewness with chance's share out.
     ConductanceLawInputs in;

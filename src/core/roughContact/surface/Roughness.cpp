@@ -42,7 +42,9 @@ void checkRoughness(const SurfaceRoughness& r)
            << " m: a perfectly smooth surface (or a unit mistake)";
         throw ParameterError("rms roughness sigma", os.str());
     }
-    requirePositive("mean absolute slope m", r.meanAbsoluteSlope);
+    limits::requireInRange("rms roughness sigma", r.sigma, limits::minimumRoughness, limits::maximumHeight, "m");
+    // Measured slopes are 1e-3 to a few; the bounds keep m/sigma, E' m and P/(E' m) finite.
+    limits::requireInRange("mean absolute slope m", r.meanAbsoluteSlope, limits::minimumSlope, limits::maximumSlope, "");
 }
 
 SurfaceRoughness profileRoughness(const Profile& profile)

@@ -84,15 +84,20 @@ double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoug
     }
     const double inf = std::numeric_limits<double>::infinity();
     const double m = r.meanAbsoluteSlope;
-    // x = P/(E' h'), h' = sqrt(pi) m for Gaussian isotropic slopes.
-    const double x = P / (std::sqrt(pi) * Eprime * m);
     if (H && P >= *H) {
         return inf;
     }
+    // x = P/(E' h'), h' = sqrt(pi) m for Gaussian isotropic slopes. Beyond x = e^690 (a pressure
+    // near the largest double) the elastic branch e^(beta x) is complete contact: +inf, before x
+    // itself could overflow.
+    if (std::log(P) - std::log(std::sqrt(pi) * Eprime * m) > 690.0) {
+        return inf;
+    }
+    const double x = P / (std::sqrt(pi) * Eprime * m);
     // In logarithms: far beyond its range (x of hundreds) the elastic branch, or its power N,
     // exceeds a double; it is +inf there (complete contact) without an overflow on the way.
     const double logElastic = std::log(c.elasticPrefactor * (m / r.sigma)) +
-                              c.elasticExponent * (std::log(std::sqrt(2.0) * P) - std::log(Eprime * m)) + c.elasticGrowth * x;
+                              c.elasticExponent * (0.5 * std::log(2.0) + std::log(P) - std::log(Eprime * m)) + c.elasticGrowth * x;
     // Gaussian heights: no factor (the law is then bit for bit the one without a skewness).
     const double logSkew = skewness == 0.0 ? 0.0 : logSkewnessFactor(skewness, x, c);
     const double logMax = 700.0 / std::max(1.0, c.blend);
