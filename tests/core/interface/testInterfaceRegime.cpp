@@ -12,6 +12,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <unistd.h>
 
 #include <cmath>
 #include <string>
@@ -188,4 +191,44 @@ TEST(InterfaceRegime, SaysTheSkewnessOfMeasuredHeights)
     EXPECT_EQ(s2.spread, expected.spread);
     EXPECT_GT(s2.skewness, map.skewness()->skewness); // diluted towards 0 by the Gaussian side
     EXPECT_LT(s2.skewness, 0.0);
+}
+
+// A plateau-honed surface is skewed far beyond the skewness the default law's factor was fitted
+// on (|s| = 0.6): the interface is built (no error), and the line says the factor is held there.
+TEST(InterfaceRegime, SaysWhereTheSkewnessFactorIsHeld)
+{
+    const std::size_t n = 64;
+    const double pi = std::acos(-1.0);
+    const std::string file = testing::TempDir() + "/plateauMap-" + std::to_string(::getpid()) + ".txt";
+    {
+        std::ofstream out(file);
+        out.precision(17);
+        for (std::size_t iy = 0; iy < n; ++iy) {
+            for (std::size_t ix = 0; ix < n; ++ix) {
+                // Deep narrow pits in a flat plateau: -exp of a smooth field.
+                const double g = std::cos(2.0 * pi * 3.0 * double(ix) / double(n) + 0.3) +
+                                 std::cos(2.0 * pi * 5.0 * double(iy) / double(n) + 1.1) +
+                                 0.5 * std::cos(2.0 * pi * (7.0 * double(ix) + 4.0 * double(iy)) / double(n));
+                out << (ix ? " " : "") << -1e-6 * std::exp(1.5 * g);
+            }
+            out << '\n';
+        }
+    }
+    InterfaceSpec spec;
+    SurfaceSpec map;
+    map.kind = SurfaceSpec::Kind::areal;
+    map.file = file;
+    map.arealOptions.dx = 1e-4 / double(n);
+    map.direction = ScanDirection::both;
+    spec.surfaces = {map};
+    spec.side1 = Material{200e9, 0.3, 400e6};
+    spec.side2 = Material{200e9, 0.3, 400e6};
+    spec.minPressure = 1e5;
+    spec.maxPressure = 1e7;
+    const HeightSkewness s = map.skewness().value();
+    EXPECT_LT(shrunkSkewness(s), -0.6) << s.skewness << " +- " << s.spread; // the case this test is about
+    const InterfaceRegime r = ContactInterface(spec).regime();
+    const std::string line = r.describe().substr(0, r.describe().find('\n'));
+    EXPECT_NE(line.find("held at -0.6 (the largest skewness its factor was fitted on)"), std::string::npos) << line;
+    std::remove(file.c_str());
 }

@@ -167,7 +167,11 @@ TEST(FittedElastoPlastic, SkewedHeightsScaleTheElasticBranch)
     EXPECT_NEAR(fittedSkewnessFactor(-0.3, 1e-3), 1.33, 0.08);
     EXPECT_NEAR(fittedSkewnessFactor(-0.3, 0.1), 1.09, 0.08);
     EXPECT_THROW(fittedSkewnessFactor(std::nan(""), 0.01), ParameterError);
-    EXPECT_THROW(fittedSkewnessFactor(2.5, 0.01), ParameterError);
+    // Beyond the skewness the fit saw (|s| = 0.6) f is held: a plateau-honed surface (-2.5) is
+    // not extrapolated to.
+    EXPECT_EQ(fittedSkewnessFactor(2.5, 0.01), fittedSkewnessFactor(0.6, 0.01));
+    EXPECT_EQ(fittedSkewnessFactor(-2.5, 0.01), fittedSkewnessFactor(-0.6, 0.01));
+    EXPECT_GT(fittedSkewnessFactor(-0.6, 0.01), fittedSkewnessFactor(-0.5, 0.01));
     EXPECT_THROW(fittedSkewnessFactor(0.3, 0.0), ParameterError);
 
     // The law: elastically h is the Gaussian one times f; capped, the elastic branch is scaled by
@@ -189,7 +193,9 @@ TEST(FittedElastoPlastic, SkewedHeightsScaleTheElasticBranch)
         EXPECT_GT(both, both0);
         EXPECT_LT(both / both0, el / el0); // the cap dilutes the factor
     }
-    EXPECT_THROW(fittedElastoPlasticConductancePerConductivity(1e6, rough, W, Ep, H, 3.0), ParameterError);
+    EXPECT_EQ(fittedElastoPlasticConductancePerConductivity(1e6, rough, W, Ep, H, -3.0),
+              fittedElastoPlasticConductancePerConductivity(1e6, rough, W, Ep, H, -0.6));
+    EXPECT_THROW(fittedElastoPlasticConductancePerConductivity(1e6, rough, W, Ep, H, std::nan("")), ParameterError);
     // Where x under- or overflows the law still answers, as it did before it took a skewness: a
     // denormal pressure (x rounds to 0) gives a finite h >= 0, capped too (the branches' powers
     // near underflow; the share guards 0/0), and the largest pressure +inf (x would overflow).

@@ -3,6 +3,7 @@
 
 #include "roughContact/surface/SpectralMoments.hpp"
 #include "roughContact/surface/Spectrum.hpp"
+#include "roughContact/thermal/FittedElastoPlastic.hpp"
 
 #include <cmath>
 #include <iomanip>
@@ -85,7 +86,12 @@ std::string InterfaceRegime::describe() const
         os << ", heights' skewness " << skewness->skewness
            << " (Gaussian heights of this spectrum and size give +-" << skewness->spread << " by chance; ";
         if (law == "fittedElastoPlastic") {
-            os << "the law takes " << shrunkSkewness(*skewness) << ", chance's share out";
+            const double s = shrunkSkewness(*skewness);
+            os << "the law takes " << s << ", chance's share out";
+            if (std::abs(s) > FittedElastoPlasticConstants{}.skewnessLargest) {
+                os << ", held at " << (s < 0 ? "-" : "+") << FittedElastoPlasticConstants{}.skewnessLargest
+                   << " (the largest skewness its factor was fitted on)";
+            }
         } else {
             os << "the law assumes 0 (fittedElastoPlastic takes " << shrunkSkewness(*skewness) << ")";
         }

@@ -32,19 +32,17 @@ namespace {
 
 void checkSkewness(double skewness)
 {
+    // Any finite skewness: a plateau-honed surface has -2 to -3; beyond the fitted range f is held.
     requireFinite("heights' skewness", skewness);
-    // The skewed surfaces the factor was fitted on reach |s| = 0.6; beyond 2 exp(b s^2) and the
-    // linear slope say nothing a measured engineering surface needs.
-    if (std::abs(skewness) > 2.0) {
-        throw ParameterError("heights' skewness", "must lie within [-2, 2], got " + std::to_string(skewness));
-    }
 }
 
-// ln f(s, x), unchecked: x may have under- or overflowed to 0 or +inf (held within the range).
+// ln f(s, x), unchecked: x may have under- or overflowed to 0 or +inf; s and x are held within
+// the ranges the skewed surfaces were solved over.
 double logSkewnessFactor(double skewness, double x, const FittedElastoPlasticConstants& c)
 {
     const double xc = std::min(std::max(x, c.skewnessLightestLoad), c.skewnessHeaviestLoad);
-    return skewness * (c.skewnessSlope + c.skewnessSlopeLog * std::log(xc)) + c.skewnessCurvature * skewness * skewness;
+    const double s = std::min(std::max(skewness, -c.skewnessLargest), c.skewnessLargest);
+    return s * (c.skewnessSlope + c.skewnessSlopeLog * std::log(xc)) + c.skewnessCurvature * s * s;
 }
 
 } // namespace

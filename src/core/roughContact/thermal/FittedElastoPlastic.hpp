@@ -31,9 +31,8 @@
 // surface of heights' skewness s over that of the same spectrum with Gaussian heights, fitted
 // (least squares in ln f, on the solved surfaces' sample skewness) on three self-affine spectra,
 // four seeds, skewness -0.6 to +0.6 imposed (docs/validation/skewnessReport), never on the X3P
-// map. Below x = 1e-3 and above 0.1 no
-// skewed surface was solved: f is held at its ends there. s is the
-// surface's skewness with chance's share taken out (shrunkSkewness, Roughness.hpp): 0 for a
+// map. Below x = 1e-3 and above 0.1, and beyond |s| = 0.6 (a plateau-honed surface has -2 to
+// -3), no skewed surface was solved: f is held at its ends there. s is the surface's skewness with chance's share taken out (shrunkSkewness, Roughness.hpp): 0 for a
 // spectrum, and for a profile or map whose skewness chance could give.
 //
 // m is the mean absolute profile slope (h'/sqrt(pi) for an isotropic surface with Gaussian
@@ -72,10 +71,12 @@ struct FittedElastoPlasticConstants {
     double skewnessCurvature = -0.0143; ///< b
     double skewnessLightestLoad = 1e-3; ///< x_c's range: the loads the skewed surfaces were solved at
     double skewnessHeaviestLoad = 0.1;
+    double skewnessLargest = 0.6; ///< |s| the skewed surfaces reached: beyond, f is held at +-0.6
 };
 
 /// f(s, x) of the header: the elastic branch's factor for heights of skewness s (finite; the
-/// shrunk skewness) at x = P/(E' h') (finite, > 0). 1 at s = 0; above 1 for s < 0 (the heights
+/// shrunk skewness; held within [-0.6, 0.6], the skewness the fit saw) at x = P/(E' h')
+/// (finite, > 0; held within [1e-3, 0.1]). 1 at s = 0; above 1 for s < 0 (the heights
 /// reach up in broad plateaus and down in narrow pits: more of the surface is near its top).
 double fittedSkewnessFactor(double skewness, double x, const FittedElastoPlasticConstants& c = {});
 
@@ -86,7 +87,7 @@ double gaussianPlasticSpotConductance(double a);
 /// h_c/k_s [1/m] of the law at the nominal pressure P [Pa] (finite, >= 0), for the combined
 /// roughness r (sigma [m], m), the bandwidth ratio W of the combined line-scan spectrum (0 < W <= 1,
 /// spectralBandwidthRatio), the reduced modulus E' [Pa] and the cap H [Pa] (none: elastic; W then
-/// plays no part), the heights' shrunk skewness s (finite, |s| <= 2; 0: Gaussian heights);
+/// plays no part), the heights' shrunk skewness s (finite; 0: Gaussian heights; held at +-0.6);
 /// +inf at and beyond P = H, and where the elastic branch passes e^700 (x of about 700/beta).
 /// ParameterError naming the entry on bad input.
 double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoughness& r, double bandwidth,
