@@ -151,21 +151,32 @@ TEST(InterfaceRegime, TheInterfaceSaysItsRegimeAtTheTablesEnds)
     EXPECT_EQ(elastic.regime().describe().find("skewness"), std::string::npos);
 }
 
+namespace {
+// An interface on one measured map (read along both directions) between two materials, over
+// 0.1-10 MPa.
+InterfaceSpec oneMap(SurfaceSpec map, const Material& side1, const Material& side2)
+{
+    map.kind = SurfaceSpec::Kind::areal;
+    map.direction = ScanDirection::both;
+    InterfaceSpec spec;
+    spec.surfaces = {map};
+    spec.side1 = side1;
+    spec.side2 = side2;
+    spec.minPressure = 1e5;
+    spec.maxPressure = 1e7;
+    return spec;
+}
+} // namespace
+
 // A measured map's heights are not Gaussian, and the regime says by how much: the map's own
 // skewness (arealSkewness, -0.38 for data/x3p-2.x3p), on the line that names h'. Two surfaces:
 // that of their sum (combinedSkewness), a spectrum counting as 0.
 TEST(InterfaceRegime, SaysTheSkewnessOfMeasuredHeights)
 {
-    InterfaceSpec spec;
-    SurfaceSpec map;
-    map.kind = SurfaceSpec::Kind::areal;
-    map.file = std::string(ROUGHCONTACT_SOURCE_DIR) + "/data/x3p-2.x3p";
-    map.direction = ScanDirection::both;
-    spec.surfaces = {map};
-    spec.side1 = Material{68.9e9, 0.33, 276e6};
-    spec.side2 = Material{200e9, 0.3, 0.5e9};
-    spec.minPressure = 1e5;
-    spec.maxPressure = 1e7;
+    SurfaceSpec x3p;
+    x3p.file = std::string(ROUGHCONTACT_SOURCE_DIR) + "/data/x3p-2.x3p";
+    InterfaceSpec spec = oneMap(x3p, Material{68.9e9, 0.33, 276e6}, Material{200e9, 0.3, 0.5e9});
+    const SurfaceSpec map = spec.surfaces.front();
     const InterfaceRegime r = ContactInterface(spec).regime();
     ASSERT_TRUE(r.skewness.has_value());
     EXPECT_NEAR(r.skewness->skewness, -0.3787, 5e-4); // docs/validation/mapSurrogates.md: -0.38
@@ -214,18 +225,11 @@ TEST(InterfaceRegime, SaysWhereTheSkewnessFactorIsHeld)
             out << '\n';
         }
     }
-    InterfaceSpec spec;
-    SurfaceSpec map;
-    map.kind = SurfaceSpec::Kind::areal;
-    map.file = file;
-    map.arealOptions.dx = 1e-4 / double(n);
-    map.direction = ScanDirection::both;
-    spec.surfaces = {map};
-    spec.side1 = Material{200e9, 0.3, 400e6};
-    spec.side2 = Material{200e9, 0.3, 400e6};
-    spec.minPressure = 1e5;
-    spec.maxPressure = 1e7;
-    const HeightSkewness s = map.skewness().value();
+    SurfaceSpec plateau;
+    plateau.file = file;
+    plateau.arealOptions.dx = 1e-4 / double(n);
+    const InterfaceSpec spec = oneMap(plateau, Material{200e9, 0.3, 400e6}, Material{200e9, 0.3, 400e6});
+    const HeightSkewness s = spec.surfaces.front().skewness().value();
     EXPECT_LT(shrunkSkewness(s), -0.6) << s.skewness << " +- " << s.spread; // the case this test is about
     const InterfaceRegime r = ContactInterface(spec).regime();
     const std::string line = r.describe().substr(0, r.describe().find('\n'));
