@@ -193,7 +193,7 @@ void bindInterface(py::module_& m)
                 return surfaceOf(v);
             },
             py::arg("path"), py::arg("units") = py::none(), py::arg("dx") = py::none(), py::arg("dy") = py::none(),
-            py::arg("fill_invalid") = false, py::arg("direction") = "x",
+            py::arg("fill_invalid") = false, py::arg("direction") = "both",
             "An areal file (read_areal's options) and the line scans that make its spectrum.")
         .def_static(
             "from_roughness",

@@ -166,7 +166,7 @@ void bindSurfaces(py::module_& m)
             [](const ArealSurface& s, const std::string& direction) {
                 return lineScanSpectrum(s, parseScanDirection(direction));
             },
-            py::arg("direction") = "x",
+            py::arg("direction") = "both",
             "The averaged spectrum of the line scans 'x' (rows), 'y' (columns) or 'both', each detrended "
             "(multiscaleContact --areal --direction); detrend the surface first as the CLI does.")
         .def("__repr__", [](const ArealSurface& s) {
@@ -238,7 +238,7 @@ void bindSurfaces(py::module_& m)
     m.def(
         "areal_roughness",
         [](const ArealSurface& s, const std::string& direction) { return arealRoughness(s, parseScanDirection(direction)); },
-        py::arg("surface"), py::arg("direction") = "x",
+        py::arg("surface"), py::arg("direction") = "both",
         "sigma [m] and the mean absolute slope of an areal surface along 'x', 'y' or 'both'.");
     m.def("spectrum_roughness", &spectrumRoughness, py::arg("spectrum"),
           "sigma [m] and the mean absolute slope of a spectrum (Gaussian slopes assumed).");

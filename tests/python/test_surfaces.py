@@ -218,3 +218,14 @@ def test_the_default_law_takes_the_skewness_with_chances_share_out():
     assert list(mikic[0]) == list(mikic[1])
     with pytest.raises(rc.ParameterError):
         rc.shrunk_skewness(rc.HeightSkewness(0.1, -1.0))
+
+
+def test_a_map_is_read_along_both_directions_by_default():
+    # The rows and the columns together, as the engineering range measures the laws (the CLI's
+    # --direction and the dictionary's direction default to both too).
+    default = rc.SurfaceSpec.areal(X3P)
+    both = rc.SurfaceSpec.areal(X3P, direction="both")
+    rows = rc.SurfaceSpec.areal(X3P, direction="x")
+    assert default.roughness().mean_absolute_slope == both.roughness().mean_absolute_slope
+    assert default.roughness().mean_absolute_slope != rows.roughness().mean_absolute_slope
+    assert list(default.read_spectrum().amplitudes) == list(both.read_spectrum().amplitudes)

@@ -218,9 +218,13 @@ TEST(InterfaceSpecReader, WordsAreTheCoresNamesAndNamedByTheSource)
     areal.set("type", std::string("areal")).set("file", std::string("m.x3p")).set("direction", std::string("z"));
     EXPECT_NE(messageOf([&] { readSurfaceSpec(areal); }, "--direction").find("x (rows), y (columns) or both"),
               std::string::npos);
-    areal.set("direction", std::string("both")).set("fillInvalid", true).set("units", std::string("um"));
+    // Without a direction a map is read along both (the engineering range measures the laws so).
+    SpecValues plain("surface", dashed);
+    plain.set("type", std::string("areal")).set("file", std::string("m.x3p"));
+    EXPECT_EQ(readSurfaceSpec(plain).direction, ScanDirection::both);
+    areal.set("direction", std::string("x")).set("fillInvalid", true).set("units", std::string("um"));
     const SurfaceSpec s = readSurfaceSpec(areal);
-    EXPECT_EQ(s.direction, ScanDirection::both);
+    EXPECT_EQ(s.direction, ScanDirection::x);
     EXPECT_TRUE(s.arealOptions.fillInvalid);
     SpecValues c = contact();
     c.set("detrend", std::string("tilt"));
