@@ -183,17 +183,18 @@ void bindInterface(py::module_& m)
         .def_static(
             "areal",
             [](const std::string& path, std::optional<std::string> units, std::optional<double> dx,
-               std::optional<double> dy, bool fillInvalid, const std::string& direction) {
+               std::optional<double> dy, bool fillInvalid, std::optional<std::string> direction) {
                 SpecValues v = arguments("SurfaceSpec.areal");
                 v.set("type", std::string("areal")).set("file", path);
                 setIf(v, "units", units);
                 setIf(v, "dx", dx);
                 setIf(v, "dy", dy);
-                v.set("fillInvalid", fillInvalid).set("direction", direction);
+                v.set("fillInvalid", fillInvalid);
+                setIf(v, "direction", direction); // none: the core's default (defaultScanDirection)
                 return surfaceOf(v);
             },
             py::arg("path"), py::arg("units") = py::none(), py::arg("dx") = py::none(), py::arg("dy") = py::none(),
-            py::arg("fill_invalid") = false, py::arg("direction") = "both",
+            py::arg("fill_invalid") = false, py::arg("direction") = py::none(),
             "An areal file (read_areal's options) and the line scans that make its spectrum.")
         .def_static(
             "from_roughness",

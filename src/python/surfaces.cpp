@@ -163,11 +163,11 @@ void bindSurfaces(py::module_& m)
         .def("column", &ArealSurface::column, py::arg("ix"), "Column ix (along y) as a Profile.")
         .def(
             "line_scan_spectrum",
-            [](const ArealSurface& s, const std::string& direction) {
-                return lineScanSpectrum(s, parseScanDirection(direction));
+            [](const ArealSurface& s, const std::optional<std::string>& direction) {
+                return lineScanSpectrum(s, direction ? parseScanDirection(*direction) : defaultScanDirection);
             },
-            py::arg("direction") = "both",
-            "The averaged spectrum of the line scans 'x' (rows), 'y' (columns) or 'both', each detrended "
+            py::arg("direction") = py::none(),
+            "The averaged spectrum of the line scans 'x' (rows), 'y' (columns) or 'both' (None: both), each detrended "
             "(multiscaleContact --areal --direction); detrend the surface first as the CLI does.")
         .def("__repr__", [](const ArealSurface& s) {
             return "<roughcontact.ArealSurface " + std::to_string(s.nx()) + " x " + std::to_string(s.ny()) + ">";
@@ -237,9 +237,11 @@ void bindSurfaces(py::module_& m)
           "sigma [m] and the mean absolute slope of a profile after removing its mean and tilt.");
     m.def(
         "areal_roughness",
-        [](const ArealSurface& s, const std::string& direction) { return arealRoughness(s, parseScanDirection(direction)); },
-        py::arg("surface"), py::arg("direction") = "both",
-        "sigma [m] and the mean absolute slope of an areal surface along 'x', 'y' or 'both'.");
+        [](const ArealSurface& s, const std::optional<std::string>& direction) {
+            return arealRoughness(s, direction ? parseScanDirection(*direction) : defaultScanDirection);
+        },
+        py::arg("surface"), py::arg("direction") = py::none(),
+        "sigma [m] and the mean absolute slope of an areal surface along 'x', 'y' or 'both' (None: both).");
     m.def("spectrum_roughness", &spectrumRoughness, py::arg("spectrum"),
           "sigma [m] and the mean absolute slope of a spectrum (Gaussian slopes assumed).");
     m.def("combined_roughness", &combined, py::arg("a"), py::arg("b"),

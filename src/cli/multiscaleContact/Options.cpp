@@ -102,7 +102,8 @@ void addOptions(CLI::App& app, Options& o)
                    "sample spacing of one-column profiles and of --areal matrices (along x), in --units");
     app.add_option("--dy", o.dy, "spacing along y of an --areal matrix, in --units (default --dx)");
     app.add_option("--direction", o.direction,
-                   "line scans of an --areal surface: x (rows), y (columns) or both (default: the law bands are measured so)");
+                   "line scans of an --areal surface: x (rows), y (columns) or both (default, as the laws' "
+                   "accuracy bands are measured)");
     app.add_flag("--fill-invalid", o.fillInvalid,
                  "fill the invalid points of an --areal X3P file with the mean of their valid neighbours "
                  "(default: they are an error)");

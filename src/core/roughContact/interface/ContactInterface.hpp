@@ -36,10 +36,8 @@ struct SurfaceSpec {
     ProfileReadOptions profileOptions; ///< units, spacing of one-column profiles
     ArealReadOptions arealOptions;     ///< areal: units, dx, dy of a matrix; fillInvalid of an X3P
     /// areal: the line scans whose averaged spectrum stands for the surface (lineScanSpectrum
-    /// of the detrended height map): rows (x), columns (y) or both, the default (the engineering
-    /// range measures the laws so: an anisotropic map read along x alone gives another h', m and
-    /// spectrum; docs/checking.md).
-    ScanDirection direction = ScanDirection::both;
+    /// of the detrended height map): rows (x), columns (y) or both (defaultScanDirection).
+    ScanDirection direction = defaultScanDirection;
     std::size_t stride = 1;            ///< use every stride-th profile sample
     std::optional<double> length;      ///< scan length [m] of a spectrum or power law
     /// powerLaw: b_m [m], m, fmin, fmax [1/m]; fractal: D, G [m], fmin, fmax [1/m]; roughness:

@@ -72,6 +72,11 @@ private:
 /// Which line scans of an areal surface make its spectrum for the line-scan (1-D) models.
 enum class ScanDirection { x, y, both };
 
+/// The line scans a map is read along unless told otherwise (a contact entry's `direction`, the
+/// CLI's --direction, Python's direction=): both, as the engineering range measures the laws (an
+/// anisotropic map read along x alone gives another h', m and spectrum; docs/checking.md).
+constexpr ScanDirection defaultScanDirection = ScanDirection::both;
+
 /// The averaged line-scan spectrum of an areal surface: each row (x), column (y) or both is
 /// detrended and transformed as Spectrum::fromProfile does, and the power beta^2 of each level
 /// averaged over the scans; with `both` and different grids along x and y, the two averages

@@ -94,8 +94,10 @@ double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoug
     const double x = P / (std::sqrt(pi) * Eprime * m);
     // In logarithms: far beyond its range (x of hundreds) the elastic branch, or its power N,
     // exceeds a double; it is +inf there (complete contact) without an overflow on the way.
+    // ln(sqrt(2) P/(E' m)) as a sum of logarithms: the quotient of a denormal P underflows to 0.
     const double logElastic = std::log(c.elasticPrefactor * (m / r.sigma)) +
-                              c.elasticExponent * (0.5 * std::log(2.0) + std::log(P) - std::log(Eprime * m)) + c.elasticGrowth * x;
+                              c.elasticExponent * (0.5 * std::log(2.0) + std::log(P) - std::log(Eprime * m)) +
+                              c.elasticGrowth * x;
     // Gaussian heights: no factor (the law is then bit for bit the one without a skewness).
     const double logSkew = skewness == 0.0 ? 0.0 : logSkewnessFactor(skewness, x, c);
     const double logMax = 700.0 / std::max(1.0, c.blend);

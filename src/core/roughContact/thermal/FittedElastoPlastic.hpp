@@ -32,8 +32,9 @@
 // (least squares in ln f, on the solved surfaces' sample skewness) on three self-affine spectra,
 // four seeds, skewness -0.6 to +0.6 imposed (docs/validation/skewnessReport), never on the X3P
 // map. Below x = 1e-3 and above 0.1, and beyond |s| = 0.6 (a plateau-honed surface has -2 to
-// -3), no skewed surface was solved: f is held at its ends there. s is the surface's skewness with chance's share taken out (shrunkSkewness, Roughness.hpp): 0 for a
-// spectrum, and for a profile or map whose skewness chance could give.
+// -3), no skewed surface was solved: f is held at its ends there. s is the surface's skewness
+// with chance's share taken out (shrunkSkewness, Roughness.hpp): 0 for a spectrum, and for a
+// profile or map whose skewness chance could give.
 //
 // m is the mean absolute profile slope (h'/sqrt(pi) for an isotropic surface with Gaussian
 // slopes, h' the areal rms gradient), sigma the rms height, both of the band of wavelengths
@@ -66,12 +67,12 @@ struct FittedElastoPlasticConstants {
     double plasticPrefactor = 0.9262; ///< C_P
     double plasticExponent = 0.3803;  ///< K
     double blend = 1.1931;            ///< N
-    double skewnessSlope = 0.0725;    ///< a_0 (docs/validation/skewnessReport fits the three)
-    double skewnessSlopeLog = 0.1508; ///< a_1
+    double skewnessSlope = 0.0725;      ///< a_0 (docs/validation/skewnessReport fits the three)
+    double skewnessSlopeLog = 0.1508;   ///< a_1
     double skewnessCurvature = -0.0143; ///< b
     double skewnessLightestLoad = 1e-3; ///< x_c's range: the loads the skewed surfaces were solved at
     double skewnessHeaviestLoad = 0.1;
-    double skewnessLargest = 0.6; ///< |s| the skewed surfaces reached: beyond, f is held at +-0.6
+    double skewnessLargest = 0.6;       ///< |s| the skewed surfaces reached: beyond, f is held at +-0.6
 };
 
 /// f(s, x) of the header: the elastic branch's factor for heights of skewness s (finite; the
