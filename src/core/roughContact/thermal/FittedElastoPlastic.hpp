@@ -3,7 +3,7 @@
 // dimensionless form (issue 20, item 2; docs/theory.md, "The fitted elasto-plastic law";
 // docs/validation/fittedElastoPlastic.md for the data and the fit). Made dimensionless as
 // h sigma/(k_s m), the exact conductance of isotropic Gaussian surfaces is nearly one function of
-// x = P/(E' h') and c = H/(E' h') elastically (within 0.80-1.25); capped, it also depends on the
+// x = P/(E' h') and c = H/(E' h') elastically (within 0.78-1.22); capped, it also depends on the
 // spectrum's bandwidth ratio W = m1/sqrt(m0 m2) (SpectralMoments.hpp): the plastic spots cluster on
 // the long waves of a spectrum whose heights live there. This law is that function:
 //
