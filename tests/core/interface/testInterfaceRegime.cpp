@@ -66,7 +66,7 @@ TEST(MeasuredAccuracy, IsTheReportsRowForTheLawModelReferenceAndDecade)
     // decade's x = 0.1 alone says 0.83-1.01).
     const auto top = measuredAccuracy("fittedElastoPlastic", "", false, 0.1);
     ASSERT_TRUE(top.has_value());
-    EXPECT_EQ(describeAccuracy(top, 0.1), "0.83-1 of exact (5 surfaces of the engineering-range report, "
+    EXPECT_EQ(describeAccuracy(top, 0.1), "0.83-1.0 of exact (5 surfaces of the engineering-range report, "
                                           "p/(E' h') = 0.1 only, the largest measured)");
     EXPECT_FALSE(measuredAccuracy("fittedElastoPlastic", "", false, 0.2).has_value());
     EXPECT_FALSE(measuredAccuracy("fittedElastoPlastic", "", true, 0.64).has_value());

@@ -3,6 +3,8 @@
 
 #include "roughContact/thermal/MeasuredAccuracyTable.hpp"
 
+#include <cmath>
+#include <cstdio>
 #include <iomanip>
 #include <sstream>
 
@@ -21,6 +23,22 @@ std::optional<AccuracyBand> measuredAccuracy(const std::string& law, const std::
     return std::nullopt;
 }
 
+namespace {
+
+/// A band's end to two significant digits, a whole number below 10 with its ".0" (1.0, not 1).
+std::string bandEnd(double v)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2g", v);
+    std::string s(text);
+    if (s.find_first_of(".e") == std::string::npos && std::fabs(v) < 10.0) {
+        s += ".0";
+    }
+    return s;
+}
+
+} // namespace
+
 std::string describeAccuracy(const std::optional<AccuracyBand>& band, double loadPerGradient)
 {
     std::ostringstream os;
@@ -29,7 +47,7 @@ std::string describeAccuracy(const std::optional<AccuracyBand>& band, double loa
         os << "not measured at p/(E' h') = " << loadPerGradient;
         return os.str();
     }
-    os << band->low << "-" << band->high << " of exact (" << band->surfaces
+    os << bandEnd(band->low) << "-" << bandEnd(band->high) << " of exact (" << band->surfaces
        << (band->surfaces == 1 ? " surface" : " surfaces") << " of the " << band->report << ", p/(E' h') ";
     if (band->to < 1.01 * band->from) {
         os << "= " << band->from << " only, the largest measured"; // the top of the report's range
