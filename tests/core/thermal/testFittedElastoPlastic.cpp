@@ -355,19 +355,24 @@ TEST(FittedElastoPlastic, ItsRatiosToTheExactAnswerAreTheDocumentedOnes)
         ++rows;
     }
     EXPECT_GT(rows, 400U);
-    // As documented (to the printed two decimals): the training bands and the hold-outs'.
-    EXPECT_NEAR(band["training elastic"].first, 0.78, 0.006);
-    EXPECT_NEAR(band["training elastic"].second, 1.22, 0.006);
-    EXPECT_NEAR(band["training capped"].first, 0.74, 0.006);
-    EXPECT_NEAR(band["training capped"].second, 1.26, 0.006);
-    EXPECT_NEAR(band["x3p elastic"].first, 0.58, 0.006);
-    EXPECT_NEAR(band["x3p elastic"].second, 1.17, 0.006);
-    EXPECT_NEAR(band["x3p capped"].first, 0.69, 0.006);
-    EXPECT_NEAR(band["x3p capped"].second, 1.27, 0.006);
+    // As documented, to the printed two decimals (0.006: half the last digit, 0.005, and a margin
+    // for a band end printed from a ratio that exact.csv holds to four decimals): the training
+    // bands and the hold-outs' ("holdout capped": the six spectral shapes of
+    // docs/validation/spectralShapes with the other hold-outs).
+    const struct {
+        const char* group;
+        double low;
+        double high;
+    } documented[] = {{"training elastic", 0.78, 1.22},
+                      {"training capped", 0.74, 1.26},
+                      {"x3p elastic", 0.58, 1.17},
+                      {"x3p capped", 0.69, 1.27},
+                      {"holdout capped", 0.62, 1.35}};
+    for (const auto& d : documented) {
+        EXPECT_NEAR(band[d.group].first, d.low, 0.006) << d.group;
+        EXPECT_NEAR(band[d.group].second, d.high, 0.006) << d.group;
+    }
     EXPECT_NEAR(band["selfAffine06ro2 capped"].first, 0.77, 0.006);
-    // The six spectral shapes (docs/validation/spectralShapes) with the other hold-outs.
-    EXPECT_NEAR(band["holdout capped"].first, 0.62, 0.006);
-    EXPECT_NEAR(band["holdout capped"].second, 1.35, 0.006);
     EXPECT_NEAR(band["selfAffine06ro2 elastic"].second, 1.10, 0.006);
     // The counts docs/validation/fittedElastoPlastic.md quotes.
     using Count = std::pair<int, int>;
