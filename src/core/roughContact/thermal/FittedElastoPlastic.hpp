@@ -41,7 +41,7 @@
 // the conductance is meant to resolve; W the bandwidth ratio of the surfaces' line-scan spectrum
 // (the one the multi-scale model is built on); E' the reduced modulus, H the plastic cap (the
 // hardness, 2.84 S_y of the yielding material by default). Constants: FittedElastoPlasticConstants
-// below, written by docs/validation/fitFittedElastoPlastic from the engineering range's converged
+// below, written by docs/validation/fitFittedElastoPlastic from the engineering range's
 // exact values (docs/validation/engineeringRange.md: x = 1e-4 to 1e-1, elastic and capped for four
 // material pairs, c = 0.03 to 0.3): a minimax of |law/exact - 1|, the elastic branch on the
 // elastic points, then the plastic branch and N on the capped ones, on four surfaces (three
