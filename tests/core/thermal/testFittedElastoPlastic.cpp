@@ -367,7 +367,7 @@ TEST(FittedElastoPlastic, ItsRatiosToTheExactAnswerAreTheDocumentedOnes)
                       {"training capped", 0.74, 1.26},
                       {"x3p elastic", 0.58, 1.17},
                       {"x3p capped", 0.69, 1.27},
-                      {"holdout capped", 0.62, 1.35}};
+                      {"holdout capped", 0.60, 1.56}};
     for (const auto& d : documented) {
         EXPECT_NEAR(band[d.group].first, d.low, 0.006) << d.group;
         EXPECT_NEAR(band[d.group].second, d.high, 0.006) << d.group;
@@ -381,8 +381,8 @@ TEST(FittedElastoPlastic, ItsRatiosToTheExactAnswerAreTheDocumentedOnes)
     EXPECT_EQ(within["x3p elastic"].first + within["x3p capped"].first, 42); // 40 without the skewness factor
     EXPECT_EQ(within["x3p capped"], Count(34, 38));
     EXPECT_EQ(within["second elastic"].first + within["second capped"].first, 37);
-    EXPECT_EQ(within["spectra elastic"], Count(56, 60));
-    EXPECT_EQ(within["spectra capped"], Count(153, 168));
+    EXPECT_EQ(within["spectra elastic"], Count(46, 60));
+    EXPECT_EQ(within["spectra capped"], Count(140, 168));
 }
 
 TEST(FittedElastoPlastic, ATableEndsWhereTheLawConductsPerfectly)
