@@ -78,17 +78,25 @@ def test_fitted_elasto_plastic_takes_the_spectrums_bandwidth_ratio(spectrum):
     r = rc.spectrum_roughness(spectrum)
     with pytest.raises(rc.ParameterError, match="line-scan spectrum"):
         rc.ConductanceLaw("fittedElastoPlastic", roughness=r, Eprime=1e11, hardness=1e9)
-    # Elastic (no cap), W plays no part: no spectrum needed, the same h.
-    assert rc.ConductanceLaw("fittedElastoPlastic", roughness=r, Eprime=1e11).conductance_per_conductivity(1e8) == \
-        rc.ConductanceLaw("fittedElastoPlastic", spectrum=spectrum, roughness=r,
-                          Eprime=1e11).conductance_per_conductivity(1e8)
+    # Elastic (no cap), W plays no part: no spectrum needed. Above x = P/(sqrt(pi) E' m) = 0.01 the
+    # same h (here x = 0.08 at 1e9 Pa); below it the spectrum's first level's share s1 sets the
+    # light-load factor, which needs the spectrum (x = 0.008 at 1e8 Pa; this spectrum's s1 is not
+    # the pivot 0.3).
+    alone = rc.ConductanceLaw("fittedElastoPlastic", roughness=r, Eprime=1e11)
+    given = rc.ConductanceLaw("fittedElastoPlastic", spectrum=spectrum, roughness=r, Eprime=1e11)
+    assert alone.conductance_per_conductivity(1e9) == given.conductance_per_conductivity(1e9)
+    assert alone.conductance_per_conductivity(1e8) != given.conductance_per_conductivity(1e8)
+    s1 = rc.first_level_share(spectrum)
+    assert s1 == pytest.approx(spectrum.amplitudes[0] ** 2 / (np.asarray(spectrum.amplitudes) ** 2).sum(), rel=1e-12)
+    assert abs(s1 - 0.3) > 0.05
     # Capped, a narrower spectrum (a larger W) of the same sigma and m conducts more.
     broad = rc.ConductanceLaw("fittedElastoPlastic", spectrum=spectrum, roughness=r, Eprime=1e11, hardness=1e9)
     narrow = rc.ConductanceLaw("fittedElastoPlastic", spectrum=rc.Spectrum([2e3], [1e-7], 1e-3), roughness=r,
                                Eprime=1e11, hardness=1e9)
     assert narrow.conductance_per_conductivity(1e8) > broad.conductance_per_conductivity(1e8)
+    # Elastically two spectra of one s1 (1/2: two equal levels) and different W give one h.
     elastic = [rc.ConductanceLaw("fittedElastoPlastic", spectrum=s, roughness=r, Eprime=1e11)
-               for s in (spectrum, rc.Spectrum([2e3], [1e-7], 1e-3))]
+               for s in (rc.Spectrum([2e3, 6e3], [1e-7, 1e-7], 1e-3), rc.Spectrum([2e3, 2e4], [1e-7, 1e-7], 1e-3))]
     assert elastic[0].conductance_per_conductivity(1e8) == elastic[1].conductance_per_conductivity(1e8)
 
 

@@ -199,7 +199,7 @@ TEST(Cli, ConductanceColumnIsTheLibrarys)
         const double load = std::stod(row.at(0));
         const double expected = fittedElastoPlasticConductancePerConductivity(
             load * mat.reducedModulus(), profileRoughness(readProfile(standin)), spectralBandwidthRatio(s),
-            mat.reducedModulus(), 2.84 * 0.2e9);
+            mat.reducedModulus(), 2.84 * 0.2e9, 0.0, firstLevelShare(s));
         EXPECT_NEAR(std::stod(row.at(hi)), expected, 1e-9 * expected);
         EXPECT_EQ(row.at(sep), ""); // neither the multi-scale model nor the law defines a mean separation
     }

@@ -61,11 +61,13 @@ TEST(ContactInterface, EqualsTheHandBuiltModel)
     EXPECT_EQ(defaultConductanceLaw(), "fittedElastoPlastic");
     const SurfaceRoughness r = profileRoughness(readProfile(standin));
     const double W = spectralBandwidthRatio(Spectrum::fromProfile(readProfile(standin)));
+    const double s1 = firstLevelShare(Spectrum::fromProfile(readProfile(standin)));
     for (double P : {1e3, 1e5, 1e6, 1e7, 1e8}) {
         SCOPED_TRACE(P);
         const double load = P / mat.reducedModulus();
         EXPECT_NEAR(ci.areaFraction(P), m.areaFraction(load), 0.005 * m.areaFraction(load));
-        const double h = fittedElastoPlasticConductancePerConductivity(P, r, W, mat.reducedModulus(), 2.84 * 0.07e9);
+        const double h =
+            fittedElastoPlasticConductancePerConductivity(P, r, W, mat.reducedModulus(), 2.84 * 0.07e9, 0.0, s1);
         EXPECT_NEAR(ci.conductancePerConductivity(P), h, 0.005 * h);
     }
     // jacksonBhavnaniFerguson by name: the multi-scale constriction sum of the same model.

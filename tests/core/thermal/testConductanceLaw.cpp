@@ -81,7 +81,7 @@ TEST(ConductanceLaw, EveryNameBuildsAndIsTheFormulaItNames)
                 expected = cooperMikicYovanovichConductancePerConductivity(P, *in.roughness, 1.42e9);
             } else if (name == "fittedElastoPlastic") {
                 expected = fittedElastoPlasticConductancePerConductivity(P, *in.roughness, spectralBandwidthRatio(s),
-                                                                         in.Eprime, 1.2e9);
+                                                                         in.Eprime, 1.2e9, 0.0, firstLevelShare(s));
             } else {
                 ADD_FAILURE() << "no expectation for the law " << name;
             }

@@ -41,6 +41,16 @@ double spectralBandwidthRatio(const Spectrum& spectrum)
     return W > 1.0 ? 1.0 : W;
 }
 
+double firstLevelShare(const Spectrum& spectrum)
+{
+    // Every level weighted beta^2 (the 1/2 of m0 cancels); levels strictly increase, so level 0 is
+    // the longest wave.
+    const double variance = spectralMoments(spectrum).m0;
+    requirePositive("spectral moment m0", variance);
+    const double share = 0.5 * spectrum.amplitude(0) * spectrum.amplitude(0) / variance;
+    return share > 1.0 ? 1.0 : share;
+}
+
 SummitParameters mcCoolParameters(const SpectralMoments& m)
 {
     requirePositive("spectral moment m0", m.m0);

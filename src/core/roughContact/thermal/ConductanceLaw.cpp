@@ -108,14 +108,15 @@ public:
     FittedElastoPlasticLaw(const SurfaceRoughness& r, const Spectrum* spectrum, double Eprime,
                            std::optional<double> H, const std::optional<HeightSkewness>& skewness)
         : r_(r), W_(spectrum != nullptr ? spectralBandwidthRatio(*spectrum) : 1.0), Eprime_(Eprime), H_(H),
-          s_(skewness ? shrunkSkewness(*skewness) : 0.0)
+          s_(skewness ? shrunkSkewness(*skewness) : 0.0),
+          s1_(spectrum != nullptr ? std::optional<double>(firstLevelShare(*spectrum)) : std::nullopt)
     {
-        fittedElastoPlasticConductancePerConductivity(0.0, r_, W_, Eprime_, H_, s_); // checks the inputs once
+        fittedElastoPlasticConductancePerConductivity(0.0, r_, W_, Eprime_, H_, s_, s1_); // checks the inputs once
     }
     std::string name() const override { return "fittedElastoPlastic"; }
     double perConductivity(double P) const override
     {
-        return fittedElastoPlasticConductancePerConductivity(P, r_, W_, Eprime_, H_, s_);
+        return fittedElastoPlasticConductancePerConductivity(P, r_, W_, Eprime_, H_, s_, s1_);
     }
 
 private:
@@ -124,6 +125,7 @@ private:
     double Eprime_;
     std::optional<double> H_;
     double s_;
+    std::optional<double> s1_; // the spectrum's first level's share; none without a spectrum: no light-load factor
 };
 
 class PerssonLaw final : public ConductanceLaw {

@@ -45,7 +45,38 @@ double logSkewnessFactor(double skewness, double x, const FittedElastoPlasticCon
     return s * (c.skewnessSlope + c.skewnessSlopeLog * std::log(xc)) + c.skewnessCurvature * s * s;
 }
 
+void checkFirstLevelShare(double share)
+{
+    requireFinite("first level's share s1", share);
+    if (!(share > 0.0 && share <= 1.0)) {
+        throw ParameterError("first level's share s1", "must lie within (0, 1] (the first level's share of a "
+                                                       "spectrum's height variance), got " + std::to_string(share));
+    }
+}
+
+// ln l(s1, x) from ln x (finite: x itself may underflow to 0 for a denormal P, and 0 times
+// ln 0 at s1 = s1_0 would be a NaN).
+double logLightLoadFactor(double share, double logX, const FittedElastoPlasticConstants& c)
+{
+    const double below = logX - std::log(c.lightLoadEnd);
+    if (!(below < 0.0)) {
+        return 0.0;
+    }
+    const double s1 = std::min(std::max(share, c.lightLoadShareLeast), c.lightLoadShareMost);
+    return c.lightLoadShareSlope * (s1 - c.lightLoadSharePivot) * below;
+}
+
 } // namespace
+
+double fittedLightLoadFactor(double firstLevelShare, double x, const FittedElastoPlasticConstants& c)
+{
+    checkFirstLevelShare(firstLevelShare);
+    requireFinite("x = P/(E' h')", x);
+    if (!(x > 0.0)) {
+        throw ParameterError("x = P/(E' h')", "must be > 0, got " + std::to_string(x));
+    }
+    return std::exp(logLightLoadFactor(firstLevelShare, std::log(x), c));
+}
 
 double fittedSkewnessFactor(double skewness, double x, const FittedElastoPlasticConstants& c)
 {
@@ -59,6 +90,7 @@ double fittedSkewnessFactor(double skewness, double x, const FittedElastoPlastic
 
 double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoughness& r, double bandwidth,
                                                      double Eprime, std::optional<double> H, double skewness,
+                                                     std::optional<double> firstLevelShare,
                                                      const FittedElastoPlasticConstants& c)
 {
     requireFinite("contact pressure P", P);
@@ -77,6 +109,9 @@ double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoug
         limits::requireInRange("hardness H", *H, limits::minimumHardness, limits::maximumHardness, "Pa");
     }
     checkSkewness(skewness);
+    if (firstLevelShare) {
+        checkFirstLevelShare(*firstLevelShare);
+    }
     if (P == 0.0) {
         return 0.0;
     }
@@ -88,7 +123,8 @@ double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoug
     // x = P/(E' h'), h' = sqrt(pi) m for Gaussian isotropic slopes. Beyond x = e^690 (a pressure
     // near the largest double) the elastic branch e^(beta x) is complete contact: +inf, before x
     // itself could overflow.
-    if (std::log(P) - std::log(std::sqrt(pi) * Eprime * m) > 690.0) {
+    const double logX = std::log(P) - std::log(std::sqrt(pi) * Eprime * m);
+    if (logX > 690.0) {
         return inf;
     }
     const double x = P / (std::sqrt(pi) * Eprime * m);
@@ -97,7 +133,8 @@ double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoug
     // ln(sqrt(2) P/(E' m)) as a sum of logarithms: the quotient of a denormal P underflows to 0.
     const double logElastic = std::log(c.elasticPrefactor * (m / r.sigma)) +
                               c.elasticExponent * (0.5 * std::log(2.0) + std::log(P) - std::log(Eprime * m)) +
-                              c.elasticGrowth * x;
+                              c.elasticGrowth * x +
+                              (firstLevelShare ? logLightLoadFactor(*firstLevelShare, logX, c) : 0.0);
     // Gaussian heights: no factor (the law is then bit for bit the one without a skewness).
     const double logSkew = skewness == 0.0 ? 0.0 : logSkewnessFactor(skewness, x, c);
     const double logMax = 700.0 / std::max(1.0, c.blend);
