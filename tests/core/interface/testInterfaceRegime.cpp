@@ -6,6 +6,7 @@
 #include "roughContact/interface/InterfaceRegime.hpp"
 #include "roughContact/surface/SpectralMoments.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
+#include "roughContact/thermal/FittedElastoPlastic.hpp"
 #include "roughContact/thermal/MeasuredAccuracy.hpp"
 #include "roughContact/thermal/MeasuredAccuracyTable.hpp"
 
@@ -14,6 +15,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <iomanip>
+#include <sstream>
 #include <unistd.h>
 
 #include <cmath>
@@ -113,6 +116,23 @@ TEST(InterfaceRegime, FromTheDefinitions)
     EXPECT_EQ(lines(e.describe()), 2) << e.describe();
     const InterfaceRegime one = interfaceRegime(s, Ep, std::nullopt, "persson", "hertz", false, 1e6, 1e6);
     EXPECT_EQ(lines(one.describe()), 1) << one.describe();
+    // The spectrum's first level's share s1 is said for the default law, with its light-load
+    // factor at p/(E' h') = 1e-4 (FittedElastoPlastic.hpp); not for a law that does not take it.
+    ASSERT_TRUE(r.firstLevelShare.has_value());
+    EXPECT_DOUBLE_EQ(*r.firstLevelShare, firstLevelShare(s));
+    EXPECT_EQ(text.find("first level's share"), std::string::npos) << text;
+    const InterfaceRegime fitted = interfaceRegime(s, Ep, H, "fittedElastoPlastic", "jacksonGreen", true, 1e5, 1e8);
+    std::ostringstream said;
+    said << std::setprecision(3) << "first level's share s1 " << firstLevelShare(s)
+         << " (the law's growth below p/(E' h') = 0.01 follows it: a factor "
+         << fittedLightLoadFactor(firstLevelShare(s), 1e-4) << " at 1e-4;";
+    EXPECT_NE(fitted.describe().find(said.str()), std::string::npos) << fitted.describe() << "\n" << said.str();
+    // Beyond the training spectra's s1 the law holds it, and the line says so: two levels of
+    // powers 1 and 19 (s1 = 0.05).
+    const Spectrum flat({1e3, 2e3}, {1e-7, std::sqrt(19.0) * 1e-7}, 1e-3);
+    const InterfaceRegime held = interfaceRegime(flat, Ep, std::nullopt, "fittedElastoPlastic", "hertz", false, 1e5, 1e8);
+    EXPECT_NE(held.describe().find("s1 0.05 (held at 0.11, the training spectra's range; the law's growth"), std::string::npos)
+        << held.describe();
 }
 
 TEST(InterfaceRegime, TheInterfaceSaysItsRegimeAtTheTablesEnds)

@@ -5,6 +5,7 @@
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/thermal/FittedElastoPlastic.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -49,6 +50,11 @@ InterfaceRegime interfaceRegime(const Spectrum& surface, double Eprime, std::opt
     out.law = law;
     out.areaModel = areaModel;
     out.capped = capped;
+    try {
+        out.firstLevelShare = roughContact::firstLevelShare(surface);
+    } catch (const std::exception&) {
+        // An all-zero spectrum: nothing to say (the law refuses it anyway).
+    }
     if (hardness) {
         try {
             const SummitParameters s = mcCoolParameters(m);
@@ -96,6 +102,18 @@ std::string InterfaceRegime::describe() const
             os << "the law assumes 0 (fittedElastoPlastic takes " << shrunkSkewness(*skewness) << ")";
         }
         os << "; how far it matters: docs/validation/skewness.md)";
+    }
+    if (firstLevelShare && law == "fittedElastoPlastic") {
+        const FittedElastoPlasticConstants c;
+        const double s1 = *firstLevelShare;
+        os << ", first level's share s1 " << s1 << " (";
+        if (s1 < c.lightLoadShareLeast || s1 > c.lightLoadShareMost) {
+            os << "held at " << std::min(std::max(s1, c.lightLoadShareLeast), c.lightLoadShareMost)
+               << ", the training spectra's range; ";
+        }
+        os << "the law's growth below p/(E' h') = " << c.lightLoadEnd << " follows it: a factor "
+           << fittedLightLoadFactor(s1, 1e-4, c)
+           << " at 1e-4; from one profile a noisy number: docs/validation/fittedElastoPlastic.md)";
     }
     for (const RegimeAt* r : {&low, &high}) {
         if (r == &high && high.pressure == low.pressure) {
