@@ -3,7 +3,7 @@
 // dimensionless form (issue 20, item 2; docs/theory.md, "The fitted elasto-plastic law";
 // docs/validation/fittedElastoPlastic.md for the data and the fit). Made dimensionless as
 // h sigma/(k_s m), the exact conductance of isotropic Gaussian surfaces is nearly one function of
-// x = P/(E' h') and c = H/(E' h') elastically above x = 0.01 (within 0.77-1.16 of this law; at
+// x = P/(E' h') and c = H/(E' h') elastically from x = 0.01 on (within 0.84-1.15 of this law; at
 // lighter loads its growth follows the spectrum's first level's share s1, below); capped, it also
 // depends on the spectrum's bandwidth ratio W = m1/sqrt(m0 m2) (SpectralMoments.hpp): the plastic
 // spots cluster on the long waves of a spectrum whose heights live there. This law is that function:
