@@ -5,7 +5,6 @@
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/thermal/FittedElastoPlastic.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -107,9 +106,9 @@ std::string InterfaceRegime::describe() const
         const FittedElastoPlasticConstants c;
         const double s1 = *firstLevelShare;
         os << ", first level's share s1 " << s1 << " (";
-        if (s1 < c.lightLoadShareLeast || s1 > c.lightLoadShareMost) {
-            os << "held at " << std::min(std::max(s1, c.lightLoadShareLeast), c.lightLoadShareMost)
-               << ", the training spectra's range; ";
+        const double held = fittedLightLoadShare(s1, c);
+        if (held != s1) {
+            os << "held at " << held << ", the training spectra's range; ";
         }
         os << "the law's growth below p/(E' h') = " << c.lightLoadEnd << " follows it: a factor "
            << fittedLightLoadFactor(s1, 1e-4, c)

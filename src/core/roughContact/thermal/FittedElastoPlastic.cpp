@@ -62,11 +62,15 @@ double logLightLoadFactor(double share, double logX, const FittedElastoPlasticCo
     if (!(below < 0.0)) {
         return 0.0;
     }
-    const double s1 = std::min(std::max(share, c.lightLoadShareLeast), c.lightLoadShareMost);
-    return c.lightLoadShareSlope * (s1 - c.lightLoadSharePivot) * below;
+    return c.lightLoadShareSlope * (fittedLightLoadShare(share, c) - c.lightLoadSharePivot) * below;
 }
 
 } // namespace
+
+double fittedLightLoadShare(double firstLevelShare, const FittedElastoPlasticConstants& c)
+{
+    return std::min(std::max(firstLevelShare, c.lightLoadShareLeast), c.lightLoadShareMost);
+}
 
 double fittedLightLoadFactor(double firstLevelShare, double x, const FittedElastoPlasticConstants& c)
 {

@@ -97,6 +97,10 @@ struct FittedElastoPlasticConstants {
     double lightLoadShareMost = 0.86;     ///< held at its ends
 };
 
+/// s1 as l(s1, x) takes it: held within [lightLoadShareLeast, lightLoadShareMost], the training
+/// spectra's range (no check; the law and fittedLightLoadFactor check s1 first).
+double fittedLightLoadShare(double firstLevelShare, const FittedElastoPlasticConstants& c = {});
+
 /// l(s1, x) of the header: the elastic branch's factor at light loads for a spectrum whose first
 /// level carries the share s1 of the heights' variance (0 < s1 <= 1; held within [0.11, 0.86])
 /// at x = P/(E' h') (finite, > 0). 1 at and above x = 0.01 and at s1 = 0.3.
