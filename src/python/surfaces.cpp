@@ -254,7 +254,7 @@ void bindSurfaces(py::module_& m)
           "conductance law fittedElastoPlastic's plastic spots are spaced by W m/sigma.");
     m.def("first_level_share", &firstLevelShare, py::arg("spectrum"),
           "s1 = beta_1^2 / sum beta_k^2: the first (longest-wave) level's share of a line-scan spectrum's "
-          "height variance (0 < s1 <= 1, 1 for a single level): the conductance law fittedElastoPlastic's "
+          "height variance (0 <= s1 <= 1: 0 where the first amplitude is 0, 1 for a single level): the conductance law fittedElastoPlastic's "
           "light-load exponent follows it.");
 }
 

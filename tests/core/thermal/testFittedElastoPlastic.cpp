@@ -258,7 +258,9 @@ TEST(FittedElastoPlastic, TheFirstLevelsShareSetsTheLightLoadExponent)
     for (double x : {0.01, 0.1, 10.0}) {
         EXPECT_EQ(fittedLightLoadFactor(0.8, x), 1.0) << x;
     }
-    EXPECT_THROW(fittedLightLoadFactor(0.0, 1e-3), ParameterError);
+    // A spectrum whose first level has no amplitude (s1 = 0) is valid: held at the least.
+    EXPECT_EQ(fittedLightLoadFactor(0.0, 1e-3), fittedLightLoadFactor(c.lightLoadShareLeast, 1e-3));
+    EXPECT_THROW(fittedLightLoadFactor(-1e-9, 1e-3), ParameterError);
     EXPECT_THROW(fittedLightLoadFactor(1.0 + 1e-9, 1e-3), ParameterError);
     EXPECT_THROW(fittedLightLoadFactor(std::nan(""), 1e-3), ParameterError);
     EXPECT_THROW(fittedLightLoadFactor(0.5, 0.0), ParameterError);
@@ -282,12 +284,27 @@ TEST(FittedElastoPlastic, TheFirstLevelsShareSetsTheLightLoadExponent)
         const double tiny = fittedElastoPlasticConductancePerConductivity(1e-320, rough, W, Ep, 1e9, 0.0, s1);
         EXPECT_TRUE(std::isfinite(tiny) && tiny >= 0.0) << s1;
     }
-    EXPECT_THROW(fittedElastoPlasticConductancePerConductivity(1e6, rough, W, Ep, std::nullopt, 0.0, 0.0),
+    EXPECT_THROW(fittedElastoPlasticConductancePerConductivity(1e6, rough, W, Ep, std::nullopt, 0.0, -0.1),
                  ParameterError);
     EXPECT_THROW(fittedElastoPlasticConductancePerConductivity(1e6, rough, W, Ep, std::nullopt, 0.0, 1.5),
                  ParameterError);
     // The spectrum's own: two levels of amplitudes 2 and 1 (s1 = 4/5).
     EXPECT_NEAR(firstLevelShare(Spectrum({1e3, 2e3}, {2e-6, 1e-6}, 1e-3)), 0.8, 1e-15);
+    // A spectrum whose first level has no amplitude is a valid spectrum (amplitudes >= 0): s1 = 0,
+    // and the default law builds on it (it refused it once: "s1 must lie within (0, 1]") and is the
+    // law with s1 held at the least.
+    const Spectrum noFirst({1e3, 2e3, 3e3}, {0.0, 1e-6, 5e-7}, 1e-3);
+    EXPECT_EQ(firstLevelShare(noFirst), 0.0);
+    ConductanceLawInputs in;
+    in.roughness = rough;
+    in.Eprime = Ep;
+    in.hardness = 1.42e9;
+    in.spectrum = &noFirst;
+    const auto law = makeConductanceLaw("fittedElastoPlastic", in);
+    const double P = 1e6;
+    EXPECT_EQ(law->perConductivity(P),
+              fittedElastoPlasticConductancePerConductivity(P, rough, spectralBandwidthRatio(noFirst), Ep, 1.42e9, 0.0,
+                                                            c.lightLoadShareLeast));
 }
 
 TEST(FittedElastoPlastic, ValuesOfAnIndependentImplementation)

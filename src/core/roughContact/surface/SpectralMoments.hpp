@@ -34,7 +34,7 @@ double spectralBandwidthRatio(const Spectrum& spectrum);
 
 /// The first level's share s1 = beta_1^2 / sum_k beta_k^2 of the heights' variance: how much of
 /// the heights the spectrum's longest wave (its first level, 1/L for a scan of length L) carries.
-/// 0 < s1 <= 1, 1 for a single level; 0.11 for a self-affine spectrum of Hurst exponent 0.5 rolled
+/// 0 <= s1 <= 1 (0 where the first level's amplitude is 0), 1 for a single level; 0.11 for a self-affine spectrum of Hurst exponent 0.5 rolled
 /// off at the 4th level, 0.77 for Hurst 0.8 without a roll-off. Like sigma it depends on the
 /// longest wavelength the spectrum holds. The conductance law fittedElastoPlastic's light-load
 /// exponent follows it (FittedElastoPlastic.hpp). ParameterError when every amplitude is zero.

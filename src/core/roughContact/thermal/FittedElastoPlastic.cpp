@@ -48,8 +48,9 @@ double logSkewnessFactor(double skewness, double x, const FittedElastoPlasticCon
 void checkFirstLevelShare(double share)
 {
     requireFinite("first level's share s1", share);
-    if (!(share > 0.0 && share <= 1.0)) {
-        throw ParameterError("first level's share s1", "must lie within (0, 1] (the first level's share of a "
+    // 0 is a spectrum whose first level has no amplitude (a valid spectrum): held at the least.
+    if (!(share >= 0.0 && share <= 1.0)) {
+        throw ParameterError("first level's share s1", "must lie within [0, 1] (the first level's share of a "
                                                        "spectrum's height variance), got " + std::to_string(share));
     }
 }

@@ -102,7 +102,7 @@ struct FittedElastoPlasticConstants {
 double fittedLightLoadShare(double firstLevelShare, const FittedElastoPlasticConstants& c = {});
 
 /// l(s1, x) of the header: the elastic branch's factor at light loads for a spectrum whose first
-/// level carries the share s1 of the heights' variance (0 < s1 <= 1; held within [0.11, 0.86])
+/// level carries the share s1 of the heights' variance (0 <= s1 <= 1; held within [0.11, 0.86])
 /// at x = P/(E' h') (finite, > 0). 1 at and above x = 0.01 and at s1 = 0.3.
 double fittedLightLoadFactor(double firstLevelShare, double x, const FittedElastoPlasticConstants& c = {});
 
@@ -120,7 +120,7 @@ double gaussianPlasticSpotConductance(double a);
 /// roughness r (sigma [m], m), the bandwidth ratio W of the combined line-scan spectrum (0 < W <= 1,
 /// spectralBandwidthRatio), the reduced modulus E' [Pa] and the cap H [Pa] (none: elastic; W then
 /// plays no part), the heights' shrunk skewness s (finite; 0: Gaussian heights; held at +-0.6),
-/// and the first level's share s1 of the combined line-scan spectrum (0 < s1 <= 1,
+/// and the first level's share s1 of the combined line-scan spectrum (0 <= s1 <= 1,
 /// firstLevelShare; none: no light-load factor, l = 1);
 /// +inf at and beyond P = H, and where the elastic branch passes e^700 (x of about 700/beta).
 /// ParameterError naming the entry on bad input.
