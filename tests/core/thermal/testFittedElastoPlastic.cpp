@@ -241,7 +241,8 @@ TEST(FittedElastoPlastic, SkewedHeightsScaleTheElasticBranch)
 
 TEST(FittedElastoPlastic, TheFirstLevelsShareSetsTheLightLoadExponent)
 {
-    // l(s1, x) = (min(x, x_r)/x_r)^(A_s1 (s1 - s1_0)), s1 held within [0.11, 0.86]: by hand.
+    // l(s1, x) = (min(x, x_r)/x_r)^(A_s1 (s1 - s1_0)), s1 held within [0.11, 0.86]: by hand (pow
+    // against the code's exp of a log: round-off, factors of order 1, so 1e-14).
     const FittedElastoPlasticConstants c;
     EXPECT_LT(c.lightLoadShareSlope, 0.0); // the fit's sign: a dominant first level grows slower
     for (double x : {1e-6, 1e-4, 3e-3}) {
@@ -266,7 +267,9 @@ TEST(FittedElastoPlastic, TheFirstLevelsShareSetsTheLightLoadExponent)
     EXPECT_THROW(fittedLightLoadFactor(0.5, 0.0), ParameterError);
 
     // In the law: below x_r the elastic conductance's exponent in P changes by A_s1 (s1 - s1_0),
-    // elastically exactly (a power of x times the same branch); above x_r nothing changes.
+    // elastically exactly (a power of x times the same branch); above x_r nothing changes. The
+    // tolerances are round-off: logs of ratios of order 10 (1e-12), a ratio of order 1 (1e-13);
+    // across x_r = 0.01 +- 1e-9 relative the branch itself moves by about 2e-9 (1e-8).
     const double xUnit = std::sqrt(pi) * Ep * rough.meanAbsoluteSlope;
     auto h = [&](double x, std::optional<double> s1) {
         return fittedElastoPlasticConductancePerConductivity(x * xUnit, rough, W, Ep, std::nullopt, 0.0, s1);
