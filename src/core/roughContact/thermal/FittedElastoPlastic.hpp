@@ -31,7 +31,7 @@
 // 1 at and above x_r, and for s1 = s1_0 = 0.3. A_s1 < 0: a spectrum whose longest wave carries
 // most of the heights (s1 near 1: no roll-off, a large Hurst exponent, a measured profile) gains
 // contact more slowly at light loads than one rolled off (s1 near 0.1), whose exact conductance
-// grows as x^0.91-0.93 there; the measured exponent falls to 0.63-0.68 at s1 = 0.77-0.86. An
+// grows as x^0.91-0.93 there; the measured exponent falls to 0.58-0.68 at s1 = 0.70-0.86. An
 // empirical variable, not derived: W does not order that growth, s1 does (docs/validation/
 // fittedElastoPlastic.md, "The light-load exponent"). Without a spectrum (sigma and m given
 // alone) there is no s1 and l = 1.
@@ -63,9 +63,9 @@
 // training surfaces' exact answer one step further in the domain where the report solved it
 // (8 periods of 8L at x <= 1e-3: the engineering range's `further`), on four surfaces (three
 // synthesized, the Dektak profile's spectrum); never on the X3P map, nor on a second hold-out
-// (Hurst 0.6, roll-off at L/2, h' = 0.2), nor on six further spectra of other roll-offs and
-// Hurst exponents (docs/validation/spectralShapesReport; their one-period solves chose W as the
-// variable, the constants never saw them). Measured: see
+// (Hurst 0.6, roll-off at L/2, h' = 0.2), nor on eight further spectra of other roll-offs and
+// Hurst exponents (docs/validation/spectralShapesReport; six of them chose W as the variable in
+// one-period solves, the constants never saw them). Measured: see
 // docs/validation/fittedElastoPlastic.md (the bands are kept there and tested). Not for x above
 // 0.1, where it extrapolates.
 #pragma once
