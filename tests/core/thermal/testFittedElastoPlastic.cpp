@@ -60,6 +60,7 @@ TEST(FittedElastoPlastic, ElasticBranchIsMikicsFormRefitted)
     mikic.elasticPrefactor = 1.54;
     mikic.elasticExponent = 0.94;
     mikic.elasticGrowth = 0.0;
+    mikic.heavyLoadGrowth = 0.0;
     for (double P : {1e4, 1e6, 1e8}) {
         const double expected = mikicConductancePerConductivity(P, rough, Ep);
         EXPECT_NEAR(fittedElastoPlasticConductancePerConductivity(P, rough, W, Ep, std::nullopt, 0.0, std::nullopt, mikic),
@@ -67,15 +68,38 @@ TEST(FittedElastoPlastic, ElasticBranchIsMikicsFormRefitted)
                     1e-14 * expected)
             << P;
     }
-    // The fitted constants: C_E (m/sigma)(sqrt 2 P/(E' m))^A exp(beta x), x = P/(sqrt(pi) E' m).
+    // The fitted constants: C_E (m/sigma)(sqrt 2 P/(E' m))^A exp(beta x), x = P/(sqrt(pi) E' m),
+    // up to x_g = 0.1; beyond, exp(beta x_g + beta_2 (x - x_g)).
     const FittedElastoPlasticConstants c;
-    for (double P : {1e5, 1e7, 1e9}) {
-        const double m = rough.meanAbsoluteSlope;
-        const double x = P / (std::sqrt(pi) * Ep * m);
+    const double m = rough.meanAbsoluteSlope;
+    const double xUnit = std::sqrt(pi) * Ep * m; // P at x = 1
+    for (double x : {1e-4, 1e-2, 0.1, 0.3, 0.64, 3.0}) {
+        const double P = x * xUnit;
+        const double growth = x <= 0.1 ? std::exp(c.elasticGrowth * x)
+                                        : std::exp(c.elasticGrowth * 0.1 + fittedHeavyLoadGrowth(W) * (x - 0.1));
         const double expected = c.elasticPrefactor * (m / rough.sigma) *
-                                std::pow(std::sqrt(2.0) * P / (Ep * m), c.elasticExponent) * std::exp(c.elasticGrowth * x);
-        EXPECT_NEAR(fittedElastoPlasticConductancePerConductivity(P, rough, W, Ep, std::nullopt), expected, 1e-14 * expected);
+                                std::pow(std::sqrt(2.0) * P / (Ep * m), c.elasticExponent) * growth;
+        // exp and pow of the same numbers through a sum of logarithms: 1e-13.
+        EXPECT_NEAR(fittedElastoPlasticConductancePerConductivity(P, rough, W, Ep, std::nullopt), expected, 1e-13 * expected)
+            << x;
     }
+    // The heavy-load rate beta_2 acts beyond x_g only: with it changed, the law is bit for bit the
+    // same at and below x_g, and beyond it changes by exp(d beta_2 (x - x_g)).
+    FittedElastoPlasticConstants slower = c;
+    slower.heavyLoadGrowth = c.heavyLoadGrowth - 1.0;
+    for (double x : {1e-3, 0.05, 0.1}) {
+        EXPECT_EQ(fittedElastoPlasticConductancePerConductivity(x * xUnit, rough, W, Ep, std::nullopt, 0.0, 0.5, slower),
+                  fittedElastoPlasticConductancePerConductivity(x * xUnit, rough, W, Ep, std::nullopt, 0.0, 0.5))
+            << x;
+    }
+    EXPECT_NEAR(fittedElastoPlasticConductancePerConductivity(0.5 * xUnit, rough, W, Ep, std::nullopt),
+                std::exp(0.4) * fittedElastoPlasticConductancePerConductivity(0.5 * xUnit, rough, W, Ep, std::nullopt, 0.0,
+                                                                              std::nullopt, slower),
+                1e-13 * fittedElastoPlasticConductancePerConductivity(0.5 * xUnit, rough, W, Ep, std::nullopt));
+    // Continuous at x_g: the two sides 1e-9 apart in x differ by the branch's own change there.
+    const double below = fittedElastoPlasticConductancePerConductivity(0.1 * (1 - 1e-9) * xUnit, rough, W, Ep, std::nullopt);
+    const double above = fittedElastoPlasticConductancePerConductivity(0.1 * (1 + 1e-9) * xUnit, rough, W, Ep, std::nullopt);
+    EXPECT_NEAR(above / below, 1.0, 1e-8);
 }
 
 TEST(FittedElastoPlastic, TheCapOnlyAddsAndTheBlendIsASmoothMaximum)
@@ -117,14 +141,16 @@ TEST(FittedElastoPlastic, TheCapOnlyAddsAndTheBlendIsASmoothMaximum)
     EXPECT_TRUE(std::isfinite(at1));
     EXPECT_TRUE(std::isfinite(at10));
     EXPECT_GT(at10, at1);
-    EXPECT_EQ(fittedElastoPlasticConductancePerConductivity(800.0 / c.elasticGrowth * xUnit, rough, W, Ep, std::nullopt),
+    EXPECT_EQ(fittedElastoPlasticConductancePerConductivity(800.0 / fittedHeavyLoadGrowth(W) * xUnit, rough, W, Ep,
+                                                            std::nullopt),
               inf);
     EXPECT_EQ(fittedElastoPlasticConductancePerConductivity(0.0, rough, W, Ep, H), 0.0);
 }
 
 TEST(FittedElastoPlastic, TheBandwidthRatioSpacesThePlasticSpotsAndNothingElse)
 {
-    // Elastically W plays no part; capped, the plastic branch is proportional to W (the power mean
+    // Elastically W plays no part up to x_g = 0.1 (beyond, it sets the growth's rate beta_2(W):
+    // HeavyLoadsGrowAtARateThatFallsWithW); capped, the plastic branch is proportional to W (the power mean
     // with the elastic branch then moves less): where the plastic branch dominates (copper-like
     // c = H/(E' h') = 0.03, x = 0.01), halving W nearly halves h: the ratio is below 2 (the
     // elastic branch in the power mean only pulls it down) and, with the elastic branch a small
@@ -141,6 +167,39 @@ TEST(FittedElastoPlastic, TheBandwidthRatioSpacesThePlasticSpotsAndNothingElse)
     EXPECT_LT(narrow / wide, 2.0);
     const double elastic = fittedElastoPlasticConductancePerConductivity(P, rough, 0.6, Ep, std::nullopt);
     EXPECT_GT(wide, elastic); // still the smooth maximum
+}
+
+TEST(FittedElastoPlastic, HeavyLoadsGrowAtARateThatFallsWithW)
+{
+    // beta_2(W) = B_0 + B_W (W - 0.55), W held within [0.45, 0.80]: by hand, and in the law beyond
+    // x_g = 0.1 (elastically, where W did nothing before).
+    const FittedElastoPlasticConstants c;
+    EXPECT_EQ(fittedHeavyLoadGrowth(0.55), c.heavyLoadGrowth);
+    EXPECT_NEAR(fittedHeavyLoadGrowth(0.7), c.heavyLoadGrowth + c.heavyLoadGrowthSlope * 0.15, 1e-12);
+    EXPECT_EQ(fittedHeavyLoadGrowth(0.2), fittedHeavyLoadGrowth(0.45)); // held at its ends
+    EXPECT_EQ(fittedHeavyLoadGrowth(1.0), fittedHeavyLoadGrowth(0.80));
+    EXPECT_LT(c.heavyLoadGrowthSlope, 0.0);       // a narrow spectrum (W near 1) grows more slowly
+    EXPECT_GT(fittedHeavyLoadGrowth(1.0), 0.0);   // still growing at the held end
+    EXPECT_LT(fittedHeavyLoadGrowth(0.0 + 1e-9), c.elasticGrowth); // slower than within the range
+    EXPECT_THROW(fittedHeavyLoadGrowth(0.0), ParameterError);
+    EXPECT_THROW(fittedHeavyLoadGrowth(1.5), ParameterError);
+    const double xUnit = std::sqrt(pi) * Ep * rough.meanAbsoluteSlope; // P at x = 1
+    for (double x : {0.05, 0.1}) {
+        EXPECT_EQ(fittedElastoPlasticConductancePerConductivity(x * xUnit, rough, 0.5, Ep, std::nullopt),
+                  fittedElastoPlasticConductancePerConductivity(x * xUnit, rough, 0.7, Ep, std::nullopt));
+    }
+    const double x = 0.5;
+    const double wide = fittedElastoPlasticConductancePerConductivity(x * xUnit, rough, 0.5, Ep, std::nullopt);
+    const double narrow = fittedElastoPlasticConductancePerConductivity(x * xUnit, rough, 0.7, Ep, std::nullopt);
+    // exp(B_W (0.7 - 0.5) (x - x_g)): the exponentials of a sum of logarithms, 1e-13.
+    EXPECT_NEAR(narrow / wide, std::exp(c.heavyLoadGrowthSlope * 0.2 * (x - 0.1)), 1e-13);
+    // Without a spectrum (sigma and m alone) the law by name takes W = 0.55: beta_2 = B_0.
+    ConductanceLawInputs in;
+    in.roughness = rough;
+    in.Eprime = Ep;
+    const auto law = makeConductanceLaw("fittedElastoPlastic", in);
+    EXPECT_EQ(law->perConductivity(x * xUnit),
+              fittedElastoPlasticConductancePerConductivity(x * xUnit, rough, 0.55, Ep, std::nullopt));
 }
 
 TEST(FittedElastoPlastic, SkewedHeightsScaleTheElasticBranch)
@@ -450,7 +509,7 @@ TEST(FittedElastoPlastic, ItsRatiosToTheExactAnswerAreTheDocumentedOnes)
         double high;
     } documented[] = {{"training elastic", 0.77, 1.16},
                       {"training capped", 0.73, 1.23},
-                      {"x3p elastic", 0.61, 1.07},
+                      {"x3p elastic", 0.61, 0.94},
                       {"x3p capped", 0.71, 1.24},
                       {"holdout capped", 0.61, 1.48}};
     for (const auto& d : documented) {

@@ -103,11 +103,14 @@ private:
 
 class FittedElastoPlasticLaw final : public ConductanceLaw {
 public:
-    // W only spaces the plastic spots: without a cap (or a spectrum) it plays no part, 1 stands in.
+    // W spaces the plastic spots and sets the elastic growth's rate beyond x_g (beta_2(W));
+    // without a spectrum (then no cap either) the pivot stands in: beta_2 = B_0.
     // The skewness, chance's share taken out (shrunkSkewness); none: Gaussian heights.
     FittedElastoPlasticLaw(const SurfaceRoughness& r, const Spectrum* spectrum, double Eprime,
                            std::optional<double> H, const std::optional<HeightSkewness>& skewness)
-        : r_(r), W_(spectrum != nullptr ? spectralBandwidthRatio(*spectrum) : 1.0), Eprime_(Eprime), H_(H),
+        : r_(r),
+          W_(spectrum != nullptr ? spectralBandwidthRatio(*spectrum) : FittedElastoPlasticConstants{}.heavyLoadBandwidthPivot),
+          Eprime_(Eprime), H_(H),
           s_(skewness ? shrunkSkewness(*skewness) : 0.0),
           s1_(spectrum != nullptr ? std::optional<double>(firstLevelShare(*spectrum)) : std::nullopt)
     {

@@ -93,6 +93,17 @@ double fittedSkewnessFactor(double skewness, double x, const FittedElastoPlastic
     return std::exp(logSkewnessFactor(skewness, x, c));
 }
 
+double fittedHeavyLoadGrowth(double bandwidth, const FittedElastoPlasticConstants& c)
+{
+    requireFinite("spectral bandwidth ratio W", bandwidth);
+    if (!(bandwidth > 0.0 && bandwidth <= 1.0)) {
+        throw ParameterError("spectral bandwidth ratio W", "must lie within (0, 1] (m1/sqrt(m0 m2) of a spectrum), got " +
+                                                             std::to_string(bandwidth));
+    }
+    const double w = std::min(std::max(bandwidth, c.heavyLoadBandwidthLeast), c.heavyLoadBandwidthMost);
+    return c.heavyLoadGrowth + c.heavyLoadGrowthSlope * (w - c.heavyLoadBandwidthPivot);
+}
+
 double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoughness& r, double bandwidth,
                                                      double Eprime, std::optional<double> H, double skewness,
                                                      std::optional<double> firstLevelShare,
@@ -126,7 +137,7 @@ double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoug
         return inf;
     }
     // x = P/(E' h'), h' = sqrt(pi) m for Gaussian isotropic slopes. Beyond x = e^690 (a pressure
-    // near the largest double) the elastic branch e^(beta x) is complete contact: +inf, before x
+    // near the largest double) the elastic branch e^G(x) is complete contact: +inf, before x
     // itself could overflow.
     const double logX = std::log(P) - std::log(std::sqrt(pi) * Eprime * m);
     if (logX > 690.0) {
@@ -138,7 +149,8 @@ double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoug
     // ln(sqrt(2) P/(E' m)) as a sum of logarithms: the quotient of a denormal P underflows to 0.
     const double logElastic = std::log(c.elasticPrefactor * (m / r.sigma)) +
                               c.elasticExponent * (0.5 * std::log(2.0) + std::log(P) - std::log(Eprime * m)) +
-                              c.elasticGrowth * x +
+                              c.elasticGrowth * std::min(x, c.heavyLoadStart) +
+                              fittedHeavyLoadGrowth(bandwidth, c) * std::max(0.0, x - c.heavyLoadStart) +
                               (firstLevelShare ? logLightLoadFactor(*firstLevelShare, logX, c) : 0.0);
     // Gaussian heights: no factor (the law is then bit for bit the one without a skewness).
     const double logSkew = skewness == 0.0 ? 0.0 : logSkewnessFactor(skewness, x, c);

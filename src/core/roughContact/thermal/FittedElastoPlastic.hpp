@@ -8,9 +8,10 @@
 // depends on the spectrum's bandwidth ratio W = m1/sqrt(m0 m2) (SpectralMoments.hpp): the plastic
 // spots cluster on the long waves of a spectrum whose heights live there. This law is that function:
 //
-//   h_el = C_E (m/sigma) (sqrt(2) P/(E' m))^A exp(beta x)     Mikic's elastic form (Mikic.hpp)
+//   h_el = C_E (m/sigma) (sqrt(2) P/(E' m))^A exp(G(x))       Mikic's elastic form (Mikic.hpp)
 //                                                              with its constants refitted and a
-//                                                              growth towards complete contact;
+//                                                              growth towards complete contact,
+//   G(x) = beta min(x, x_g) + beta_2(W) max(0, x - x_g)        at another rate beyond x_g = 0.1;
 //   h_pl = C_P W (m/sigma) g(a) (1 - a)^-K,   a = P/H,        the Cooper-Mikic-Yovanovich
 //   g(a) = exp(-lambda^2/2) / (2 sqrt(2 pi) (1 - sqrt a)^1.5), geometry of Gaussian plastic
 //   erfc(lambda/sqrt 2)/2 = a                                  spots at their area a = P/H
@@ -35,6 +36,19 @@
 // empirical variable, not derived: W does not order that growth, s1 does (docs/validation/
 // fittedElastoPlastic.md, "The light-load exponent"). Without a spectrum (sigma and m given
 // alone) there is no s1 and l = 1.
+//
+// Heavy loads (docs/theory.md §5.7a, "beyond the fitted range"): the growth's rate beta is
+// fitted with the other constants up to x = 0.1, the end of the engineering range; beyond it the
+// exact elastic conductance keeps growing about exponentially up to A_r/A_n = 0.9 (x of about
+// 0.6-0.7), at a rate that falls with the spectrum's bandwidth ratio W (a narrow spectrum closes
+// its last gaps more slowly):
+//
+//   beta_2(W) = B_0 + B_W (W - 0.55),   W held within [0.45, 0.80] (the spectra solved there),
+//
+// fitted there on the training surfaces alone (docs/validation/heavyLoadsReport, which writes
+// B_0 and B_W; an empirical form, chosen over one rate and a rate linear in s1 on the held-out
+// spectra). Below x_g the law is unchanged by it. Without a spectrum (sigma and m given alone)
+// W = 0.55 stands in: beta_2 = B_0.
 //
 // Skewed heights (docs/theory.md §5.7b; docs/validation/skewness.md): h_el is multiplied by
 //
@@ -66,8 +80,8 @@
 // (Hurst 0.6, roll-off at L/2, h' = 0.2), nor on eight further spectra of other roll-offs and
 // Hurst exponents (docs/validation/spectralShapesReport; six of them chose W as the variable in
 // one-period solves, the constants never saw them). Measured: see
-// docs/validation/fittedElastoPlastic.md (the bands are kept there and tested). Not for x above
-// 0.1, where it extrapolates.
+// docs/validation/fittedElastoPlastic.md (the bands are kept there and tested); beyond x = 0.1,
+// elastically, docs/validation/heavyLoads.md.
 #pragma once
 
 #include "roughContact/surface/Roughness.hpp"
@@ -95,6 +109,12 @@ struct FittedElastoPlasticConstants {
     double lightLoadEnd = 0.01;           ///< x_r: l acts below it
     double lightLoadShareLeast = 0.11;    ///< s1 the training spectra span (0.112-0.860): beyond, l is
     double lightLoadShareMost = 0.86;     ///< held at its ends
+    double heavyLoadStart = 0.1;          ///< x_g: the engineering range's end; beyond it the growth's rate is beta_2(W)
+    double heavyLoadGrowth = 4.7265;      ///< B_0 (docs/validation/heavyLoadsReport fits it and B_W)
+    double heavyLoadGrowthSlope = -7.4028; ///< B_W
+    double heavyLoadBandwidthPivot = 0.55; ///< beta_2 = B_0 there (about the middle of the spectra's W)
+    double heavyLoadBandwidthLeast = 0.45; ///< W of the spectra solved beyond x_g (0.465-0.788): beyond,
+    double heavyLoadBandwidthMost = 0.80;  ///< beta_2 is held at its ends
 };
 
 /// s1 as l(s1, x) takes it: held within [lightLoadShareLeast, lightLoadShareMost], the training
@@ -112,6 +132,10 @@ double fittedLightLoadFactor(double firstLevelShare, double x, const FittedElast
 /// reach up in broad plateaus and down in narrow pits: more of the surface is near its top).
 double fittedSkewnessFactor(double skewness, double x, const FittedElastoPlasticConstants& c = {});
 
+/// beta_2(W) of the header: the elastic growth's rate beyond x_g for the bandwidth ratio W
+/// (0 < W <= 1; held within [0.45, 0.80]).
+double fittedHeavyLoadGrowth(double bandwidth, const FittedElastoPlasticConstants& c = {});
+
 /// g(a) of the header: sigma h_c/(k_s m) of Gaussian plastic spots covering the area fraction a
 /// (0 <= a < 1; 0 gives 0). ParameterError outside [0, 1).
 double gaussianPlasticSpotConductance(double a);
@@ -122,7 +146,9 @@ double gaussianPlasticSpotConductance(double a);
 /// plays no part), the heights' shrunk skewness s (finite; 0: Gaussian heights; held at +-0.6),
 /// and the first level's share s1 of the combined line-scan spectrum (0 <= s1 <= 1,
 /// firstLevelShare; none: no light-load factor, l = 1);
-/// +inf at and beyond P = H, and where the elastic branch passes e^700 (x of about 700/beta).
+/// W also sets the elastic growth's rate beyond x_g = 0.1 (beta_2(W); below x_g W is the plastic
+/// branch's alone).
+/// +inf at and beyond P = H, and where the elastic branch passes e^700 (x of about 700/beta_2).
 /// ParameterError naming the entry on bad input.
 double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoughness& r, double bandwidth,
                                                      double Eprime, std::optional<double> H, double skewness = 0.0,
