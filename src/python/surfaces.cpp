@@ -251,7 +251,8 @@ void bindSurfaces(py::module_& m)
           "0: the skewness the conductance law fittedElastoPlastic takes.");
     m.def("spectral_bandwidth_ratio", &spectralBandwidthRatio, py::arg("spectrum"),
           "W = m1/sqrt(m0 m2) of a line-scan spectrum (0 < W <= 1, 1 for a single level): the "
-          "conductance law fittedElastoPlastic's plastic spots are spaced by W m/sigma.");
+          "conductance law fittedElastoPlastic's plastic spots are spaced by W m/sigma, and beyond "
+          "p/(E' h') = 0.1 its elastic growth's rate falls with W.");
     m.def("first_level_share", &firstLevelShare, py::arg("spectrum"),
           "s1 = beta_1^2 / sum beta_k^2: the first (longest-wave) level's share of a line-scan spectrum's "
           "height variance (0 <= s1 <= 1: 0 where the first amplitude is 0, 1 for a single level): the conductance law fittedElastoPlastic's "

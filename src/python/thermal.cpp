@@ -90,7 +90,8 @@ void bindThermal(py::module_& m)
              "cooperMikicYovanovich a SurfaceRoughness and the microhardness H_c [Pa] or the Vickers "
              "coefficients (c1 [Pa], c2); fittedElastoPlastic a SurfaceRoughness, E' and, for its plastic "
              "branch, the cap `hardness` H [Pa] (None: elastic) and a spectrum (the model's by default: its "
-             "bandwidth ratio), and a measured surface's HeightSkewness (SurfaceSpec.skewness(); None: Gaussian "
+             "bandwidth ratio W, which also sets the elastic growth beyond p/(E' h') = 0.1, and its first "
+             "level's share s1; without a spectrum W = 0.55 stands in and s1 plays no part), and a measured surface's HeightSkewness (SurfaceSpec.skewness(); None: Gaussian "
              "heights), taken with chance's share out (shrunk_skewness). ParameterError names what is missing.")
         .def_property_readonly("name", [](const Law& x) { return x.law->name(); }, "The law's name.")
         .def(

@@ -78,8 +78,9 @@ def test_fitted_elasto_plastic_takes_the_spectrums_bandwidth_ratio(spectrum):
     r = rc.spectrum_roughness(spectrum)
     with pytest.raises(rc.ParameterError, match="line-scan spectrum"):
         rc.ConductanceLaw("fittedElastoPlastic", roughness=r, Eprime=1e11, hardness=1e9)
-    # Elastic (no cap), W plays no part: no spectrum needed. Above x = P/(sqrt(pi) E' m) = 0.01 the
-    # same h (here x = 0.08 at 1e9 Pa); below it the spectrum's first level's share s1 sets the
+    # Elastic (no cap): no spectrum needed. From x = P/(sqrt(pi) E' m) = 0.01 to 0.1, where neither
+    # s1 nor W acts elastically, the same h (here x = 0.08 at 1e9 Pa; beyond 0.1 W sets the growth's
+    # rate, 0.55 standing in without a spectrum); below it the spectrum's first level's share s1 sets the
     # light-load factor, which needs the spectrum (x = 0.008 at 1e8 Pa; this spectrum's s1 is not
     # the pivot 0.3).
     alone = rc.ConductanceLaw("fittedElastoPlastic", roughness=r, Eprime=1e11)

@@ -71,8 +71,16 @@ TEST(MeasuredAccuracy, IsTheReportsRowForTheLawModelReferenceAndDecade)
     ASSERT_TRUE(top.has_value());
     EXPECT_EQ(describeAccuracy(top, 0.1), "0.93-1.1 of exact (5 surfaces of the engineering-range report, "
                                           "p/(E' h') = 0.1 only, the largest measured)");
-    EXPECT_FALSE(measuredAccuracy("fittedElastoPlastic", "", false, 0.2).has_value());
+    // Beyond it, elastically, the heavy-load study's band (docs/validation/heavyLoads.md), up to its
+    // heaviest load (x = 0.64) and no further; capped, nothing.
+    const auto heavy = measuredAccuracy("fittedElastoPlastic", "", false, 0.2);
+    ASSERT_TRUE(heavy.has_value());
+    EXPECT_EQ(describeAccuracy(heavy, 0.2), "0.67-1.6 of exact (12 surfaces of the heavy-load study, p/(E' h') 0.1 to 0.64)");
+    EXPECT_EQ(measuredAccuracy("fittedElastoPlastic", "", false, 0.64)->report, std::string("heavy-load study"));
+    EXPECT_FALSE(measuredAccuracy("fittedElastoPlastic", "", false, 0.7).has_value());
+    EXPECT_FALSE(measuredAccuracy("fittedElastoPlastic", "", true, 0.2).has_value());
     EXPECT_FALSE(measuredAccuracy("fittedElastoPlastic", "", true, 0.64).has_value());
+    EXPECT_FALSE(measuredAccuracy("mikic", "", false, 0.2).has_value()); // the default law's alone
     EXPECT_TRUE(measuredAccuracy("fittedElastoPlastic", "", true, 0.09).has_value()); // the decade below: whole
 }
 

@@ -60,7 +60,8 @@ TEST(FittedElastoPlastic, ElasticBranchIsMikicsFormRefitted)
     mikic.elasticPrefactor = 1.54;
     mikic.elasticExponent = 0.94;
     mikic.elasticGrowth = 0.0;
-    mikic.heavyLoadGrowth = 0.0;
+    mikic.heavyLoadGrowth = 0.0; // no growth beyond x_g either (the loads below are short of it)
+    mikic.heavyLoadGrowthSlope = 0.0;
     for (double P : {1e4, 1e6, 1e8}) {
         const double expected = mikicConductancePerConductivity(P, rough, Ep);
         EXPECT_NEAR(fittedElastoPlasticConductancePerConductivity(P, rough, W, Ep, std::nullopt, 0.0, std::nullopt, mikic),
@@ -416,7 +417,7 @@ TEST(FittedElastoPlastic, RefusesBadInputAndIsALawByName)
     in.roughness = rough;
     in.hardness = 1.42e9;
     // The bandwidth ratio is the spectrum's: with a cap and without one the law names what it
-    // needs; without a cap W plays no part and no spectrum is needed.
+    // needs; without a cap no spectrum is needed (W = 0.55 stands in for the growth beyond x_g).
     try {
         makeConductanceLaw("fittedElastoPlastic", in);
         ADD_FAILURE() << "built without a spectrum";

@@ -37,7 +37,7 @@
 // fittedElastoPlastic.md, "The light-load exponent"). Without a spectrum (sigma and m given
 // alone) there is no s1 and l = 1.
 //
-// Heavy loads (docs/theory.md §5.7a, "beyond the fitted range"): the growth's rate beta is
+// Heavy loads (docs/theory.md §5.7a; docs/validation/heavyLoads.md): the growth's rate beta is
 // fitted with the other constants up to x = 0.1, the end of the engineering range; beyond it the
 // exact elastic conductance keeps growing about exponentially up to A_r/A_n = 0.9 (x of about
 // 0.6-0.7), at a rate that falls with the spectrum's bandwidth ratio W (a narrow spectrum closes
@@ -143,12 +143,13 @@ double gaussianPlasticSpotConductance(double a);
 /// h_c/k_s [1/m] of the law at the nominal pressure P [Pa] (finite, >= 0), for the combined
 /// roughness r (sigma [m], m), the bandwidth ratio W of the combined line-scan spectrum (0 < W <= 1,
 /// spectralBandwidthRatio), the reduced modulus E' [Pa] and the cap H [Pa] (none: elastic; W then
-/// plays no part), the heights' shrunk skewness s (finite; 0: Gaussian heights; held at +-0.6),
+/// only sets beta_2 beyond x_g), the heights' shrunk skewness s (finite; 0: Gaussian heights; held at +-0.6),
 /// and the first level's share s1 of the combined line-scan spectrum (0 <= s1 <= 1,
 /// firstLevelShare; none: no light-load factor, l = 1);
 /// W also sets the elastic growth's rate beyond x_g = 0.1 (beta_2(W); below x_g W is the plastic
 /// branch's alone).
-/// +inf at and beyond P = H, and where the elastic branch passes e^700 (x of about 700/beta_2).
+/// +inf at and beyond P = H, and where the elastic branch raised to N passes e^700 (x of about
+/// 540/beta_2).
 /// ParameterError naming the entry on bad input.
 double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoughness& r, double bandwidth,
                                                      double Eprime, std::optional<double> H, double skewness = 0.0,

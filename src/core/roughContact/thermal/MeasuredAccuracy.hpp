@@ -14,13 +14,14 @@ namespace roughContact {
 
 struct AccuracyBand {
     /// The decade of p/(E' h') [from, to) the band was measured in; `to` is below the decade's end
-    /// where the report measured less of it (its top decade: x = 0.1 only).
+    /// where the report measured less of it (its top decade: x = 0.1 only; the heavy-load study:
+    /// from just above 0.1 to its heaviest load).
     double from = 0.0;
     double to = 0.0;
     double low = 0.0;  ///< the smallest law / exact over the report's surfaces there
     double high = 0.0; ///< the largest
     int surfaces = 0;  ///< how many of the report's surfaces had a point there
-    std::string report; ///< which report measured it ("engineering-range report", "fidelity report")
+    std::string report; ///< which report measured it ("engineering-range report", "fidelity report", "heavy-load study")
 };
 
 /// The band of `law` on `areaModel` (a multi-scale model's name; ignored for the laws that take
