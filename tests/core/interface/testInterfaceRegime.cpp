@@ -77,6 +77,8 @@ TEST(MeasuredAccuracy, IsTheReportsRowForTheLawModelReferenceAndDecade)
     ASSERT_TRUE(heavy.has_value());
     EXPECT_EQ(describeAccuracy(heavy, 0.2), "0.67-1.6 of exact (12 surfaces of the heavy-load study, p/(E' h') 0.1 to 0.64)");
     EXPECT_EQ(measuredAccuracy("fittedElastoPlastic", "", false, 0.64)->report, std::string("heavy-load study"));
+    EXPECT_EQ(measuredAccuracy("fittedElastoPlastic", "", false, 0.1001)->report, std::string("heavy-load study"));
+    EXPECT_EQ(measuredAccuracy("fittedElastoPlastic", "", false, 0.1)->report, std::string("engineering-range report"));
     EXPECT_FALSE(measuredAccuracy("fittedElastoPlastic", "", false, 0.7).has_value());
     EXPECT_FALSE(measuredAccuracy("fittedElastoPlastic", "", true, 0.2).has_value());
     EXPECT_FALSE(measuredAccuracy("fittedElastoPlastic", "", true, 0.64).has_value());

@@ -81,7 +81,8 @@
 // Hurst exponents (docs/validation/spectralShapesReport; six of them chose W as the variable in
 // one-period solves, the constants never saw them). Measured: see
 // docs/validation/fittedElastoPlastic.md (the bands are kept there and tested); beyond x = 0.1,
-// elastically, docs/validation/heavyLoads.md.
+// elastically, docs/validation/heavyLoads.md; on four spectra looked at only after it was fixed
+// (a blind test), docs/validation/blindSpectra.md.
 #pragma once
 
 #include "roughContact/surface/Roughness.hpp"
