@@ -30,6 +30,22 @@ double gaussianPlasticSpotConductance(double a)
 
 namespace {
 
+void checkBandwidth(double bandwidth)
+{
+    requireFinite("spectral bandwidth ratio W", bandwidth);
+    if (!(bandwidth > 0.0 && bandwidth <= 1.0)) {
+        throw ParameterError("spectral bandwidth ratio W", "must lie within (0, 1] (m1/sqrt(m0 m2) of a spectrum), got " +
+                                                             std::to_string(bandwidth));
+    }
+}
+
+/// beta_2(W) of a checked W.
+double heavyLoadRate(double bandwidth, const FittedElastoPlasticConstants& c)
+{
+    const double w = std::min(std::max(bandwidth, c.heavyLoadBandwidthLeast), c.heavyLoadBandwidthMost);
+    return c.heavyLoadGrowth + c.heavyLoadGrowthSlope * (w - c.heavyLoadBandwidthPivot);
+}
+
 void checkSkewness(double skewness)
 {
     // Any finite skewness: a plateau-honed surface has -2 to -3; beyond the fitted range f is held.
@@ -95,13 +111,8 @@ double fittedSkewnessFactor(double skewness, double x, const FittedElastoPlastic
 
 double fittedHeavyLoadGrowth(double bandwidth, const FittedElastoPlasticConstants& c)
 {
-    requireFinite("spectral bandwidth ratio W", bandwidth);
-    if (!(bandwidth > 0.0 && bandwidth <= 1.0)) {
-        throw ParameterError("spectral bandwidth ratio W", "must lie within (0, 1] (m1/sqrt(m0 m2) of a spectrum), got " +
-                                                             std::to_string(bandwidth));
-    }
-    const double w = std::min(std::max(bandwidth, c.heavyLoadBandwidthLeast), c.heavyLoadBandwidthMost);
-    return c.heavyLoadGrowth + c.heavyLoadGrowthSlope * (w - c.heavyLoadBandwidthPivot);
+    checkBandwidth(bandwidth);
+    return heavyLoadRate(bandwidth, c);
 }
 
 double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoughness& r, double bandwidth,
@@ -114,11 +125,7 @@ double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoug
         throw ParameterError("contact pressure P", "must be >= 0, got " + std::to_string(P));
     }
     checkRoughness(r);
-    requireFinite("spectral bandwidth ratio W", bandwidth);
-    if (!(bandwidth > 0.0 && bandwidth <= 1.0)) {
-        throw ParameterError("spectral bandwidth ratio W", "must lie within (0, 1] (m1/sqrt(m0 m2) of a spectrum), got " +
-                                                             std::to_string(bandwidth));
-    }
+    checkBandwidth(bandwidth);
     limits::requireInRange("reduced modulus E'", Eprime, limits::minimumReducedModulus, limits::maximumReducedModulus,
                            "Pa");
     if (H) {
@@ -150,7 +157,7 @@ double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoug
     const double logElastic = std::log(c.elasticPrefactor * (m / r.sigma)) +
                               c.elasticExponent * (0.5 * std::log(2.0) + std::log(P) - std::log(Eprime * m)) +
                               c.elasticGrowth * std::min(x, c.heavyLoadStart) +
-                              fittedHeavyLoadGrowth(bandwidth, c) * std::max(0.0, x - c.heavyLoadStart) +
+                              heavyLoadRate(bandwidth, c) * std::max(0.0, x - c.heavyLoadStart) +
                               (firstLevelShare ? logLightLoadFactor(*firstLevelShare, logX, c) : 0.0);
     // Gaussian heights: no factor (the law is then bit for bit the one without a skewness).
     const double logSkew = skewness == 0.0 ? 0.0 : logSkewnessFactor(skewness, x, c);
