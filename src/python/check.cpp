@@ -82,6 +82,9 @@ void bindCheck(py::module_& m)
         .def_readonly("exact_warning", &SurfaceCheck::exactWarning,
                       "A map solved padded near complete contact: that its exact h_c (and the ratios) are not "
                       "to be trusted at some pressures, and to solve it mirrored; empty otherwise.")
+        .def_readonly("small_cell_note", &SurfaceCheck::smallCellNote,
+                      "A profile or spectrum checked below p/(E' h') = 1e-3: that its exact answer there is a "
+                      "small periodic cell's, which may be too high for a large joint; empty otherwise (and for a map).")
         .def_readonly("seconds", &SurfaceCheck::seconds, "How long the check took [s].")
         .def("report", &SurfaceCheck::report, "The table a terminal or a log shows.")
         .def("csv", &SurfaceCheck::csv, "The numbers as CSV (the CLI's --check).")

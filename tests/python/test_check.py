@@ -44,6 +44,11 @@ def test_check_is_the_clis(cli):
     assert "closest: " + c.closest_law in c.report()
     assert np.all(c.exact_low <= c.exact) and np.all(c.exact <= c.exact_high)
     assert c.exact_warning == ""  # synthesized surfaces are periodic: no patch correction
+    # Checked on cells one scan length on a side: below p/(E' h') = 1e-3 the check says so.
+    light = sum(p < 1e-3 * Ep * c.gradient for p in c.pressures)
+    assert light == 1, c.gradient
+    assert f"({light} of the checked pressures" in c.small_cell_note
+    assert "note: " + c.small_cell_note in c.report()
 
 
 def test_check_of_a_padded_map_near_complete_contact_warns(tmp_path):

@@ -10,6 +10,7 @@
 #include "roughContact/surface/ArealSynthesis.hpp"
 #include "roughContact/surface/SpectralMoments.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
+#include "roughContact/thermal/MeasuredAccuracy.hpp"
 
 #include <gtest/gtest.h>
 
@@ -143,6 +144,17 @@ TEST(SurfaceCheck, TheExactConductanceIsTheBoundaryElementModelsOnTheSurfacesSai
         }
         EXPECT_EQ(c.chosenLaw, defaultConductanceLaw());
         EXPECT_TRUE(c.exactWarning.empty()) << c.exactWarning; // periodic: nothing removed
+        // A spectrum is checked on cells one scan length on a side: below p/(E' h') = 1e-3 the
+        // check says its exact answer is a small cell's (engineeringRange.md, true periods of 8L).
+        std::size_t light = 0;
+        for (double P : c.pressures) {
+            light += P < smallCellLoadPerGradient * Ep * c.gradient ? 1 : 0;
+        }
+        ASSERT_GE(light, 1U); // the lightest is at p/(E' h') = 1e-4
+        EXPECT_NE(c.smallCellNote.find("(" + std::to_string(light) + " of the checked pressures"), std::string::npos)
+            << c.smallCellNote;
+        EXPECT_NE(c.smallCellNote.find("may be too high for a large joint"), std::string::npos) << c.smallCellNote;
+        EXPECT_NE(c.report().find("note: " + c.smallCellNote), std::string::npos);
         // The verdict: the chosen law's pressures outside 0.75..1.25.
         std::size_t misses = 0;
         for (double r : c.chosen().ratio) {
@@ -178,6 +190,24 @@ TEST(SurfaceCheck, CappingSpreadsTheLoadOverMoreArea)
         // Fully plastic spots carry H each: A_r/A_n >= P/H.
         EXPECT_GE(c.exactArea[i], c.pressures[i] / 2e8 * (1 - 1e-6)) << c.pressures[i];
     }
+}
+
+TEST(SurfaceCheck, SaysNothingOfSmallCellsAtHeavierLoads)
+{
+    // The note is for p/(E' h') below 1e-3 alone: checked at the heavier of the default
+    // pressures, a spectrum's check has none.
+    SurfaceCheckOptions o = small();
+    const SurfaceCheck all = checkSurface(powerLawSpec(false), o);
+    ASSERT_FALSE(all.smallCellNote.empty());
+    for (double P : all.pressures) {
+        if (P >= smallCellLoadPerGradient * all.reducedModulus * all.gradient) {
+            o.pressures.push_back(P);
+        }
+    }
+    ASSERT_FALSE(o.pressures.empty());
+    const SurfaceCheck heavy = checkSurface(powerLawSpec(false), o);
+    EXPECT_TRUE(heavy.smallCellNote.empty()) << heavy.smallCellNote;
+    EXPECT_EQ(heavy.report().find("note: "), std::string::npos) << heavy.report();
 }
 
 TEST(SurfaceCheck, RefusesWhatItCannotCheck)
@@ -275,6 +305,10 @@ TEST(SurfaceCheck, APaddedMapNearCompleteContactSaysItsExactAnswerIsNotToBeTrust
     std::printf("%s", padded.report().c_str());
     EXPECT_NE(padded.exactWarning.find("not to be trusted"), std::string::npos) << padded.exactWarning;
     EXPECT_NE(padded.report().find("warning: " + padded.exactWarning), std::string::npos);
+    // A map is solved as it is, not as a cell of a spectrum: no small-cell note, though its
+    // lightest pressure is at p/(E' h') = 1e-4.
+    EXPECT_LT(padded.pressures.front(), smallCellLoadPerGradient * padded.reducedModulus * padded.gradient);
+    EXPECT_TRUE(padded.smallCellNote.empty()) << padded.smallCellNote;
     in.mirror = true;
     const SurfaceCheck mirrored = checkSurface(in, o);
     std::printf("%s", mirrored.report().c_str());

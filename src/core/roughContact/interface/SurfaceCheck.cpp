@@ -10,6 +10,7 @@
 #include "roughContact/models/MultiscaleModel.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
 #include "roughContact/surface/SpectralMoments.hpp"
+#include "roughContact/thermal/MeasuredAccuracy.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
 
 #include <algorithm>
@@ -130,6 +131,9 @@ std::string SurfaceCheck::report() const
     os << " (" << number(seconds) << " s)\n";
     if (!exactWarning.empty()) {
         os << "  warning: " << exactWarning << "\n";
+    }
+    if (!smallCellNote.empty()) {
+        os << "  note: " << smallCellNote << "\n";
     }
     return os.str();
 }
@@ -308,6 +312,28 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
         const std::size_t k = options.pressureCount;
         for (std::size_t i = 0; i < k; ++i) {
             out.pressures.push_back(k == 1 ? std::sqrt(lo * hi) : lo * std::pow(hi / lo, double(i) / double(k - 1)));
+        }
+    }
+
+    if (!areal) {
+        std::size_t light = 0;
+        double heaviest = 0.0;
+        for (double P : out.pressures) {
+            if (P < smallCellLoadPerGradient * Ep * out.gradient) {
+                ++light;
+                heaviest = P;
+            }
+        }
+        if (light > 0) {
+            std::ostringstream os;
+            os << "below p/(E' h') = " << smallCellLoadPerGradient << " (" << light << " of the checked pressures, up to "
+               << number(heaviest) << " Pa) the exact answer is a periodic cell one scan length on a side, which "
+               << "may conduct more than a large joint of this finish (on periods of 8 scan lengths the exact answer "
+               << "at p/(E' h') = 1e-4 was down to about a quarter of it where the longest wave holds most of the heights, "
+               << "about the same where the spectrum rolls off well below it; little by 1e-3): there the exact "
+               << "answer, and the laws fitted on such cells (the default among them), may be too high for a large "
+               << "joint (docs/checking.md)";
+            out.smallCellNote = os.str();
         }
     }
 

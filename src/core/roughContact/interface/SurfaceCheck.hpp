@@ -89,6 +89,10 @@ struct SurfaceCheck {
     /// A map solved padded near complete contact: that its exact h_c is not to be trusted at
     /// some pressures (patchCorrectionWarning) and the ratios there neither; empty otherwise.
     std::string exactWarning;
+    /// A profile or spectrum checked at p/(E' h') below smallCellLoadPerGradient (MeasuredAccuracy.hpp):
+    /// that its exact answer there is a small periodic cell's, which may be too high for a large
+    /// joint (and so may laws fitted on such cells); empty otherwise (and for a map).
+    std::string smallCellNote;
     double seconds = 0.0;                ///< the time the check took
 
     /// The chosen law's entry (ParameterError when it is not among laws).

@@ -75,7 +75,9 @@
 // material pairs, c = 0.03 to 0.3): a minimax of |law/exact - 1|, the elastic branch on the
 // elastic points (with A_s1), then the plastic branch and N on the capped ones, against the
 // training surfaces' exact answer one step further in the domain where the report solved it
-// (8 periods of 8L at x <= 1e-3: the engineering range's `further`), on four surfaces (three
+// (8 periods meant as 8L at x <= 1e-3, solved as 2L: the engineering range's `further`; on true
+// larger periods the light-load answer is lower, docs/validation/engineeringRange.md, "The periods
+// called 4L and 8L were 2L"), on four surfaces (three
 // synthesized, the Dektak profile's spectrum); never on the X3P map, nor on a second hold-out
 // (Hurst 0.6, roll-off at L/2, h' = 0.2), nor on eight further spectra of other roll-offs and
 // Hurst exponents (docs/validation/spectralShapesReport; six of them chose W as the variable in

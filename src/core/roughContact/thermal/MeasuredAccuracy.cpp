@@ -55,6 +55,10 @@ std::string describeAccuracy(const std::optional<AccuracyBand>& band, double loa
         os << band->from << " to " << band->to;
     }
     os << ")";
+    if (band->to <= smallCellLoadPerGradient * (1.0 + 1e-9)) {
+        os << "; measured against periodic cells, which may conduct more than a large joint at these loads "
+              "(docs/checking.md)";
+    }
     return os.str();
 }
 

@@ -12,6 +12,15 @@
 
 namespace roughContact {
 
+/// Below this p/(E' h') a periodic cell may conduct more than a large joint of the same finish: on
+/// true periods of 8L the exact answer at 1e-4 was well below the engineering range's 2L
+/// references and one period L's where the longest wave holds most of the heights, about the same
+/// where the spectrum rolls off well below it, and little changed by 1e-3
+/// (docs/validation/engineeringRange.md, "The periods called 4L and 8L were 2L"). The bands
+/// measured below it say so (describeAccuracy; a band is [from, to), so the one that starts at
+/// 1e-3 does not), and so does the check of a profile or a spectrum (SurfaceCheck::smallCellNote).
+inline constexpr double smallCellLoadPerGradient = 1e-3;
+
 struct AccuracyBand {
     /// The decade of p/(E' h') [from, to) the band was measured in; `to` is below the decade's end
     /// where the report measured less of it (its top decade: x = 0.1 only; the heavy-load study:
@@ -33,7 +42,8 @@ std::optional<AccuracyBand> measuredAccuracy(const std::string& law, const std::
 
 /// One line: "0.30-0.86 of exact (4 surfaces of the engineering-range report, p/(E' h') 0.0001 to
 /// 0.001)" or "not measured at
-/// p/(E' h') = ...".
+/// p/(E' h') = ...". A band below smallCellLoadPerGradient adds that it was measured against
+/// periodic cells, which conduct more than a large joint there.
 std::string describeAccuracy(const std::optional<AccuracyBand>& band, double loadPerGradient);
 
 } // namespace roughContact
