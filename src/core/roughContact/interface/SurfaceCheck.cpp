@@ -10,8 +10,8 @@
 #include "roughContact/models/MultiscaleModel.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
 #include "roughContact/surface/SpectralMoments.hpp"
-#include "roughContact/thermal/MeasuredAccuracy.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
+#include "roughContact/thermal/MeasuredAccuracy.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -43,7 +43,7 @@ std::optional<AccuracyBand> measuredAccuracy(const std::string& law, const std::
 /// One line: "0.30-0.86 of exact (4 surfaces of the engineering-range report, p/(E' h') 0.0001 to
 /// 0.001)" or "not measured at
 /// p/(E' h') = ...". A band below smallCellLoadPerGradient adds that it was measured against
-/// periodic cells, which conduct more than a large joint there.
+/// periodic cells, which may conduct more than a large joint there.
 std::string describeAccuracy(const std::optional<AccuracyBand>& band, double loadPerGradient);
 
 } // namespace roughContact
