@@ -181,7 +181,8 @@ TEST(FittedElastoPlastic, HeavyLoadsGrowAtARateThatFallsWithW)
     EXPECT_EQ(fittedHeavyLoadGrowth(1.0), fittedHeavyLoadGrowth(0.80));
     EXPECT_LT(c.heavyLoadGrowthSlope, 0.0);       // a narrow spectrum (W near 1) grows more slowly
     EXPECT_GT(fittedHeavyLoadGrowth(1.0), 0.0);   // still growing at the held end
-    EXPECT_LT(fittedHeavyLoadGrowth(0.0 + 1e-9), c.elasticGrowth); // slower than within the range
+    // (beta_2 is not below beta at every W: fitted on true periods, beta = 5.31 and beta_2 = 5.48 at
+    // the broadest W; the law is continuous at x_g whatever the two rates, below.)
     EXPECT_THROW(fittedHeavyLoadGrowth(0.0), ParameterError);
     EXPECT_THROW(fittedHeavyLoadGrowth(1.5), ParameterError);
     const double xUnit = std::sqrt(pi) * Ep * rough.meanAbsoluteSlope; // P at x = 1
@@ -304,14 +305,18 @@ TEST(FittedElastoPlastic, TheFirstLevelsShareSetsTheLightLoadExponent)
     // l(s1, x) = (min(x, x_r)/x_r)^(A_s1 (s1 - s1_0)), s1 held within [0.11, 0.86]: by hand (pow
     // against the code's exp of a log: round-off, factors of order 1, so 1e-14).
     const FittedElastoPlasticConstants c;
-    EXPECT_LT(c.lightLoadShareSlope, 0.0); // the fit's sign: a dominant first level grows slower
+    // The slope's sign is the fit's (negative on the 2L cells, near 0 and positive on true periods
+    // of 8L: docs/validation/fittedElastoPlastic.md); the side of 1 the factor lies on follows it.
+    ASSERT_NE(c.lightLoadShareSlope, 0.0);
+    const bool belowAboveThePivot = c.lightLoadShareSlope > 0.0; // x/x_r < 1 to a positive power
     for (double x : {1e-6, 1e-4, 3e-3}) {
         SCOPED_TRACE(x);
         EXPECT_NEAR(fittedLightLoadFactor(0.8, x),
                     std::pow(x / c.lightLoadEnd, c.lightLoadShareSlope * (0.8 - c.lightLoadSharePivot)), 1e-14);
         EXPECT_EQ(fittedLightLoadFactor(c.lightLoadSharePivot, x), 1.0);
-        EXPECT_GT(fittedLightLoadFactor(0.8, x), 1.0);
-        EXPECT_LT(fittedLightLoadFactor(0.15, x), 1.0);
+        EXPECT_EQ(fittedLightLoadFactor(0.8, x) < 1.0, belowAboveThePivot);
+        EXPECT_EQ(fittedLightLoadFactor(0.15, x) > 1.0, belowAboveThePivot);
+        EXPECT_NE(fittedLightLoadFactor(0.8, x), 1.0);
         // Held at the training spectra's range.
         EXPECT_EQ(fittedLightLoadFactor(1.0, x), fittedLightLoadFactor(c.lightLoadShareMost, x));
         EXPECT_EQ(fittedLightLoadFactor(0.01, x), fittedLightLoadFactor(c.lightLoadShareLeast, x));
@@ -381,14 +386,14 @@ TEST(FittedElastoPlastic, ValuesOfAnIndependentImplementation)
         std::optional<double> H;
         std::optional<double> s1;
         double h;
-    } cases[] = {{1e6, std::nullopt, std::nullopt, 36.06793944504406},
-                 {1e7, std::nullopt, std::nullopt, 242.62897242625536},
-                 {1e6, 1.42e9, std::nullopt, 64.19328845923935},
-                 {1e8, 1.42e9, std::nullopt, 4437.33481957616},
-                 {1e6, std::nullopt, 0.8, 50.75735967550452},
-                 {1e6, std::nullopt, 0.05, 31.67654521162624},
-                 {1e8, 1.42e9, 0.8, 4446.353425873484},
-                 {1e9, 1.42e9, 0.8, 141357.97916714064}};
+    } cases[] = {{1e6, std::nullopt, std::nullopt, 32.80577910661433},
+                 {1e7, std::nullopt, std::nullopt, 239.51926064791684},
+                 {1e6, 1.42e9, std::nullopt, 60.55074907365286},
+                 {1e8, 1.42e9, std::nullopt, 4337.84971058938},
+                 {1e6, std::nullopt, 0.8, 31.03609301195156},
+                 {1e6, std::nullopt, 0.05, 33.50441309539095},
+                 {1e8, 1.42e9, 0.8, 4336.033578138838},
+                 {1e9, 1.42e9, 0.8, 141947.2869293938}};
     for (const auto& k : cases) {
         EXPECT_NEAR(fittedElastoPlasticConductancePerConductivity(k.P, rough, W, Ep, k.H, 0.0, k.s1), k.h, 1e-12 * k.h)
             << k.P;
@@ -508,26 +513,26 @@ TEST(FittedElastoPlastic, ItsRatiosToTheExactAnswerAreTheDocumentedOnes)
         const char* group;
         double low;
         double high;
-    } documented[] = {{"training elastic", 0.77, 1.16},
-                      {"training capped", 0.73, 1.23},
-                      {"x3p elastic", 0.61, 0.94},
-                      {"x3p capped", 0.71, 1.24},
-                      {"holdout capped", 0.61, 1.48}};
+    } documented[] = {{"training elastic", 0.88, 1.12},
+                      {"training capped", 0.79, 1.21},
+                      {"x3p elastic", 0.63, 1.00},
+                      {"x3p capped", 0.69, 1.15},
+                      {"holdout capped", 0.48, 1.45}};
     for (const auto& d : documented) {
         EXPECT_NEAR(band[d.group].first, d.low, 0.006) << d.group;
         EXPECT_NEAR(band[d.group].second, d.high, 0.006) << d.group;
     }
-    EXPECT_NEAR(band["selfAffine06ro2 capped"].first, 0.72, 0.006);
-    EXPECT_NEAR(band["selfAffine06ro2 elastic"].second, 1.08, 0.006);
+    EXPECT_NEAR(band["selfAffine06ro2 capped"].first, 0.65, 0.006);
+    EXPECT_NEAR(band["selfAffine06ro2 elastic"].second, 1.05, 0.006);
     // The counts docs/validation/fittedElastoPlastic.md quotes.
     using Count = std::pair<int, int>;
     EXPECT_EQ(within["training elastic"], Count(40, 40));
-    EXPECT_EQ(within["training capped"], Count(151, 154));
+    EXPECT_EQ(within["training capped"], Count(154, 154));
     EXPECT_EQ(within["x3p elastic"].first + within["x3p capped"].first, 43);
     EXPECT_EQ(within["x3p capped"], Count(35, 38));
-    EXPECT_EQ(within["second elastic"].first + within["second capped"].first, 35);
-    EXPECT_EQ(within["spectra elastic"], Count(73, 80));
-    EXPECT_EQ(within["spectra capped"], Count(198, 224));
+    EXPECT_EQ(within["second elastic"].first + within["second capped"].first, 34);
+    EXPECT_EQ(within["spectra elastic"], Count(69, 80));
+    EXPECT_EQ(within["spectra capped"], Count(194, 224));
 }
 
 TEST(FittedElastoPlastic, ATableEndsWhereTheLawConductsPerfectly)

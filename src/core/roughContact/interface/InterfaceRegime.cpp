@@ -110,7 +110,7 @@ std::string InterfaceRegime::describe() const
         if (held != s1) {
             os << "held at " << held << ", the training spectra's range; ";
         }
-        os << "the law's growth below p/(E' h') = " << c.lightLoadEnd << " follows it: a factor "
+        os << "the law's light-load factor below p/(E' h') = " << c.lightLoadEnd << " takes it: "
            << fittedLightLoadFactor(s1, 1e-4, c)
            << " at 1e-4; from one profile a noisy number: docs/validation/fittedElastoPlastic.md)";
     }

@@ -43,8 +43,8 @@ struct InterfaceRegime {
     /// every other law and model assumes 0 (Gaussian heights); the log says which.
     std::optional<HeightSkewness> skewness;
     /// The spectrum's first level's share s1 of the heights' variance (firstLevelShare): the law
-    /// fittedElastoPlastic's growth below p/(E' h') = 0.01 follows it; the log says it, with the
-    /// factor it gives at p/(E' h') = 1e-4, for that law.
+    /// fittedElastoPlastic's light-load factor below p/(E' h') = 0.01 takes it; the log says it,
+    /// with the factor it gives at p/(E' h') = 1e-4, for that law.
     std::optional<double> firstLevelShare;
     std::string law;                           ///< the chosen law ("boundaryElement (exact)" for the exact model)
     std::string areaModel;                     ///< the area model

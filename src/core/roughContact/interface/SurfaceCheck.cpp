@@ -330,9 +330,9 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
                << number(heaviest) << " Pa) the exact answer is a periodic cell one scan length on a side, which "
                << "may conduct more than a large joint of this finish (on periods of 8 scan lengths the exact answer "
                << "at p/(E' h') = 1e-4 was down to about a quarter of it where the longest wave holds most of the heights, "
-               << "about the same where the spectrum rolls off well below it; little by 1e-3): there the exact "
-               << "answer, and the laws fitted on such cells (the default among them), may be too high for a large "
-               << "joint (docs/checking.md)";
+               << "about the same where the spectrum rolls off well below it; less apart by 1e-3): there the exact "
+               << "answer below may be too high for a large joint, and the laws' ratios to it too low (the default "
+               << "law is fitted on periods of 8 scan lengths; docs/checking.md)";
             out.smallCellNote = os.str();
         }
     }

@@ -12,11 +12,11 @@
 
 namespace roughContact {
 
-/// Below this p/(E' h') a periodic cell may conduct more than a large joint of the same finish: on
-/// true periods of 8L the exact answer at 1e-4 was well below the engineering range's 2L
-/// references and one period L's where the longest wave holds most of the heights, about the same
-/// where the spectrum rolls off well below it, and little changed by 1e-3
-/// (docs/validation/engineeringRange.md, "The periods called 4L and 8L were 2L"). The bands
+/// Below this p/(E' h') a periodic cell may conduct more than a large joint of the same finish: the
+/// exact answer at 1e-4 on periods of 8L was well below one period L's where the longest wave
+/// holds most of the heights (down to a quarter), about the same where the spectrum rolls off well
+/// below it, and not yet converged (8L within 10 % of 4L) on the spectra without a roll-off
+/// (docs/validation/engineeringRange.md, "Light loads: how large a period"). The bands
 /// measured below it say so (describeAccuracy; a band is [from, to), so the one that starts at
 /// 1e-3 does not), and so does the check of a profile or a spectrum (SurfaceCheck::smallCellNote).
 inline constexpr double smallCellLoadPerGradient = 1e-3;
