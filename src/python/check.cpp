@@ -39,6 +39,10 @@ void bindCheck(py::module_& m)
         .def_readonly("gradient", &SurfaceCheck::gradient, "h': the areal rms gradient of the checked surface.")
         .def_readonly("levels_kept", &SurfaceCheck::levelsKept, "Levels of the spectrum in the check.")
         .def_readonly("levels_given", &SurfaceCheck::levelsGiven, "Levels of the spectrum given.")
+        .def_readonly("light_load_periods", &SurfaceCheck::lightLoadPeriods,
+                      "The period [scan lengths] of the pressures below p/(E' h') = 1e-3 (1: none on a longer one).")
+        .def_readonly("light_levels_kept", &SurfaceCheck::lightLevelsKept,
+                      "Levels of the spectrum on that period in the check (0: none).")
         .def_property_readonly("pressures", [](const SurfaceCheck& c) { return toArray(c.pressures); },
                                "The checked pressures [Pa].")
         .def_property_readonly("dropped", [](const SurfaceCheck& c) { return toArray(c.dropped); },
@@ -120,7 +124,7 @@ void bindCheck(py::module_& m)
            std::optional<double> maxPressure, std::optional<bool> periodic, std::optional<double> hardness,
            bool hardnessFromYield, std::optional<std::string> detrend, const std::vector<double>& pressures,
            std::size_t grid, const std::vector<std::uint64_t>& seeds, std::size_t count, const py::object& progress,
-           const py::object& threads, std::optional<bool> mirror) {
+           const py::object& threads, std::optional<bool> mirror, std::size_t lightLoadPeriods) {
             const InterfaceSpec spec = interfaceSpec(surfaces, side1, side2, model, conductance, microhardness, vickers,
                                                      minPressure, maxPressure, 40, std::nullopt, 1, periodic, hardness,
                                                      hardnessFromYield, 6, std::nullopt, detrend, mirror);
@@ -129,6 +133,7 @@ void bindCheck(py::module_& m)
             o.seeds = seeds;
             o.pressureCount = count;
             o.pressures = pressures;
+            o.lightLoadPeriods = lightLoadPeriods;
             if (!progress.is_none() && !PyCallable_Check(progress.ptr())) {
                 throw py::type_error("progress: expected a callable or None");
             }
@@ -152,11 +157,11 @@ void bindCheck(py::module_& m)
         py::arg("hardness") = py::none(), py::arg("hardness_from_yield") = false, py::arg("detrend") = py::none(),
         py::arg("pressures") = std::vector<double>{}, py::arg("grid") = 512,
         py::arg("seeds") = std::vector<std::uint64_t>{1, 2, 3}, py::arg("count") = 4, py::arg("progress") = py::none(),
-        py::arg("threads") = py::none(), py::arg("mirror") = py::none(),
+        py::arg("threads") = py::none(), py::arg("mirror") = py::none(), py::arg("light_load_periods") = 2,
         "check(*, surfaces, side1, side2, model='jacksonGreen', conductance='', ..., pressures=[], grid=512, "
-        "seeds=[1, 2, 3], count=4, progress=None, threads=None, mirror=None): the exact model (boundaryElement) on the user's "
+        "seeds=[1, 2, 3], count=4, progress=None, threads=None, mirror=None, light_load_periods=2): the exact model (boundaryElement) on the user's "
         "own surface (an areal map as it is, or mirror=True: mirrored about its edges into a periodic surface; a 1-D description as `seeds` surfaces of grid x grid synthesized from its "
-        "spectrum, cut at grid/8 levels) at `pressures` [Pa] (at most 5) or `count` pressures across "
+        "spectrum, cut at grid/8 levels, below p/(E' h') = 1e-3 on periods of light_load_periods scan lengths) at `pressures` [Pa] (at most 5) or `count` pressures across "
         "[min_pressure, max_pressure], within p/(E' h') 1e-4 to 1e-1; capped at H where hardness, "
         "hardness_from_yield or S_y say, elastic otherwise; every law's ratio to it. The interface's keyword "
         "arguments are ContactInterface's. progress: a callable given a line after each solve. threads: the "

@@ -87,8 +87,20 @@ TEST(SurfaceCheck, TheExactConductanceIsTheBoundaryElementModelsOnTheSurfacesSai
         EXPECT_NEAR(c.pressures[0], lo, 1e-12 * lo);
         EXPECT_NEAR(c.pressures[1], std::sqrt(lo * hi), 1e-12 * hi);
         EXPECT_NEAR(c.pressures[2], hi, 1e-12 * hi);
+        // Below p/(E' h') = 1e-3 (the lightest pressure, at 1e-4) the check solves periods of 2L
+        // (SurfaceCheckOptions::lightLoadPeriods): the spectrum on 2L cut at 32/8 = 4 of its
+        // levels, j/(2L) up to 4/(2L). The others on one period L.
+        ASSERT_EQ(c.lightLoadPeriods, 2U);
+        const Spectrum cut2 = given.onPeriod(2).truncated(4.0 / 2e-3 * (1 + 1e-9));
+        ASSERT_EQ(cut2.size(), 4U);
+        EXPECT_EQ(c.lightLevelsKept, 4U);
+        std::vector<bool> light;
+        for (double P : c.pressures) {
+            light.push_back(P < smallCellLoadPerGradient * Ep * c.gradient);
+        }
+        ASSERT_EQ(light, (std::vector<bool>{true, false, false}));
         // The exact conductance: the model solved here on the same two seeds (identical
-        // arithmetic, so to round-off: 1e-12).
+        // arithmetic, so to round-off: 1e-12), on the light pressure's period and the others'.
         std::vector<double> loads;
         for (double P : c.pressures) {
             loads.push_back(P / Ep);
@@ -98,7 +110,11 @@ TEST(SurfaceCheck, TheExactConductanceIsTheBoundaryElementModelsOnTheSurfacesSai
         bo.hardness = c.hardness;
         std::vector<std::vector<BoundaryElementPoint>> curves;
         for (std::uint64_t seed : {1u, 2u}) {
-            curves.push_back(BoundaryElementModel(synthesizeIsotropic(cut, 32, seed), Ep, bo).curve(loads));
+            const auto one = BoundaryElementModel(synthesizeIsotropic(cut, 32, seed), Ep, bo).curve(
+                std::vector<double>(loads.begin() + 1, loads.end()));
+            const auto two =
+                BoundaryElementModel(synthesizeIsotropic(cut2, 32, seed), Ep, bo).curve({loads.front()});
+            curves.push_back({two[0], one[0], one[1]});
         }
         for (std::size_t i = 0; i < 3; ++i) {
             const double h1 = curves[0][i].conductancePerConductivity;
@@ -108,9 +124,10 @@ TEST(SurfaceCheck, TheExactConductanceIsTheBoundaryElementModelsOnTheSurfacesSai
             EXPECT_DOUBLE_EQ(c.exactHPerKHigh[i], std::max(h1, h2));
             EXPECT_NEAR(c.exactArea[i], 0.5 * (curves[0][i].areaFraction + curves[1][i].areaFraction), 1e-15);
         }
-        // Every law on the same cut spectrum, its ratio its own h over the exact one; the
-        // closest the smallest worst factor.
+        // Every law on the same cut spectrum as the exact answer at each pressure, its ratio its
+        // own h over the exact one; the closest the smallest worst factor.
         const MultiscaleModel ms(cut, Ep, makeAsperityModel(spec.model, materials));
+        const MultiscaleModel ms2(cut2, Ep, makeAsperityModel(spec.model, materials));
         ConductanceLawInputs in;
         in.multiscale = &ms;
         in.spectrum = &cut;
@@ -118,6 +135,10 @@ TEST(SurfaceCheck, TheExactConductanceIsTheBoundaryElementModelsOnTheSurfacesSai
         in.roughness = spectrumRoughness(cut);
         in.microhardness = c.hardness;
         in.hardness = c.hardness; // fittedElastoPlastic's cap: the check's
+        ConductanceLawInputs in2 = in;
+        in2.multiscale = &ms2;
+        in2.spectrum = &cut2;
+        in2.roughness = spectrumRoughness(cut2);
         ASSERT_EQ(c.laws.size(), conductanceLawNames().size());
         double best = 1e300;
         for (const CheckedLaw& l : c.laws) {
@@ -128,9 +149,10 @@ TEST(SurfaceCheck, TheExactConductanceIsTheBoundaryElementModelsOnTheSurfacesSai
             }
             ASSERT_TRUE(l.unavailable.empty()) << l.unavailable;
             const auto law = makeConductanceLaw(l.name, in);
+            const auto law2 = makeConductanceLaw(l.name, in2);
             double worst = 1.0;
             for (std::size_t i = 0; i < 3; ++i) {
-                EXPECT_DOUBLE_EQ(l.hPerK[i], law->perConductivity(c.pressures[i]));
+                EXPECT_DOUBLE_EQ(l.hPerK[i], (light[i] ? law2 : law)->perConductivity(c.pressures[i]));
                 EXPECT_DOUBLE_EQ(l.ratio[i], l.hPerK[i] / c.exactHPerK[i]);
                 worst = std::max(worst, std::max(l.ratio[i], 1.0 / l.ratio[i]));
             }
@@ -144,14 +166,11 @@ TEST(SurfaceCheck, TheExactConductanceIsTheBoundaryElementModelsOnTheSurfacesSai
         }
         EXPECT_EQ(c.chosenLaw, defaultConductanceLaw());
         EXPECT_TRUE(c.exactWarning.empty()) << c.exactWarning; // periodic: nothing removed
-        // A spectrum is checked on cells one scan length on a side: below p/(E' h') = 1e-3 the
-        // check says its exact answer is a small cell's (engineeringRange.md, true periods of 8L).
-        std::size_t light = 0;
-        for (double P : c.pressures) {
-            light += P < smallCellLoadPerGradient * Ep * c.gradient ? 1 : 0;
-        }
-        ASSERT_GE(light, 1U); // the lightest is at p/(E' h') = 1e-4
-        EXPECT_NE(c.smallCellNote.find("(" + std::to_string(light) + " of the checked pressures"), std::string::npos)
+        // Below p/(E' h') = 1e-3 the check says its exact answer is a periodic cell's, of 2 scan
+        // lengths, which may still conduct more than a large joint (engineeringRange.md, true
+        // periods of 8L).
+        EXPECT_NE(c.smallCellNote.find("(1 of the checked pressures"), std::string::npos) << c.smallCellNote;
+        EXPECT_NE(c.smallCellNote.find("a periodic cell 2 scan lengths on a side"), std::string::npos)
             << c.smallCellNote;
         EXPECT_NE(c.smallCellNote.find("may be too high for a large joint"), std::string::npos) << c.smallCellNote;
         EXPECT_NE(c.report().find("note: " + c.smallCellNote), std::string::npos);
@@ -166,6 +185,11 @@ TEST(SurfaceCheck, TheExactConductanceIsTheBoundaryElementModelsOnTheSurfacesSai
         EXPECT_NE(text.find(yielding ? "capped at H = 1.42e+09 Pa" : "elastic"), std::string::npos) << text;
         EXPECT_NE(text.find("closest: " + c.closestLaw), std::string::npos) << text;
         EXPECT_NE(text.find("4 longest levels of " + std::to_string(given.size())), std::string::npos) << text;
+        EXPECT_NE(text.find("solves periods of 2 scan lengths on the same grid: the surface's 4 longest levels"),
+                  std::string::npos)
+            << text;
+        EXPECT_NE(c.surface.find("(below p/(E' h') = 0.001 on periods of 2 scan lengths)"), std::string::npos)
+            << c.surface;
         EXPECT_EQ(c.csv().rfind("nominal_pressure,nominal_pressure_per_Eprime,area_exact,h_per_k_exact,"
                                 "h_per_k_exact_min,h_per_k_exact_max,ratio_",
                                 0),
@@ -208,6 +232,56 @@ TEST(SurfaceCheck, SaysNothingOfSmallCellsAtHeavierLoads)
     const SurfaceCheck heavy = checkSurface(powerLawSpec(false), o);
     EXPECT_TRUE(heavy.smallCellNote.empty()) << heavy.smallCellNote;
     EXPECT_EQ(heavy.report().find("note: "), std::string::npos) << heavy.report();
+}
+
+TEST(SurfaceCheck, OnePeriodAtEveryLoadWhenAsked)
+{
+    // lightLoadPeriods = 1: every pressure on one scan length, the light one as the others'
+    // spectrum gives it; the heavier pressures are the same either way (the same surfaces).
+    SurfaceCheckOptions o = small();
+    const SurfaceCheck two = checkSurface(powerLawSpec(false), o);
+    o.lightLoadPeriods = 1;
+    const SurfaceCheck one = checkSurface(powerLawSpec(false), o);
+    ASSERT_EQ(one.pressures, two.pressures);
+    EXPECT_EQ(one.lightLoadPeriods, 1U);
+    EXPECT_EQ(one.lightLevelsKept, 0U);
+    EXPECT_NE(one.smallCellNote.find("a periodic cell one scan length on a side"), std::string::npos)
+        << one.smallCellNote;
+    EXPECT_EQ(one.report().find("solves periods of"), std::string::npos);
+    EXPECT_NE(one.exactHPerK[0], two.exactHPerK[0]);
+    // The curve warm-starts each load from the previous one's solution, so the same surface at
+    // the same load agrees to the solver's convergence (1e-6 relative here), not bit for bit.
+    for (std::size_t i = 1; i < one.pressures.size(); ++i) {
+        EXPECT_NEAR(one.exactHPerK[i], two.exactHPerK[i], 1e-6 * two.exactHPerK[i]);
+    }
+    o.lightLoadPeriods = 0;
+    EXPECT_THROW(checkSurface(powerLawSpec(false), o), ParameterError);
+}
+
+TEST(SurfaceCheck, ALongSpectrumIsCheckedOnTheLongerPeriodToo)
+{
+    // A spectrum of 600,000 levels (a profile of 1.2 million points): on a period of 2L all of
+    // them would be 1.2 million levels, over the core's cap; the check takes only the levels its
+    // grid holds there (and three beyond), so it runs, and the light pressure's surface is the
+    // same as from the whole spectrum.
+    InterfaceSpec spec = powerLawSpec(false);
+    spec.surfaces[0].parameters[3] = 6e8; // levels i/L up to 600,000/L
+    SurfaceCheckOptions o = small();
+    o.seeds = {1};
+    o.pressureCount = 1;
+    const SurfaceCheck c = checkSurface(spec, o);
+    ASSERT_EQ(c.levelsGiven, 600000U);
+    o.pressures = {1e-4 * c.reducedModulus * c.gradient * 1.01}; // a light pressure
+    const SurfaceCheck light = checkSurface(spec, o);
+    EXPECT_EQ(light.lightLoadPeriods, 2U);
+    EXPECT_EQ(light.lightLevelsKept, 4U);
+    const Spectrum cut2 = spec.surfaces[0].spectrum().truncated(10.0 / 1e-3).onPeriod(2).truncated(4.0 / 2e-3 * (1 + 1e-9));
+    BoundaryElementOptions bo;
+    bo.periodic = true;
+    const double h = BoundaryElementModel(synthesizeIsotropic(cut2, 32, 1), light.reducedModulus, bo)
+                         .curve({light.pressures[0] / light.reducedModulus})[0]
+                         .conductancePerConductivity;
+    EXPECT_NEAR(light.exactHPerK[0], h, 1e-12 * h);
 }
 
 TEST(SurfaceCheck, RefusesWhatItCannotCheck)

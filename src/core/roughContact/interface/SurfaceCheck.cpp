@@ -71,6 +71,11 @@ std::string SurfaceCheck::report() const
            << " (the finest a " << "grid resolves with 8 cells a wavelength); the laws are held to "
               "the exact answer on that surface\n";
     }
+    if (lightLoadPeriods > 1) {
+        os << "  below p/(E' h') = " << smallCellLoadPerGradient << " the check solves periods of " << lightLoadPeriods
+           << " scan lengths on the same grid: the surface's " << lightLevelsKept
+           << " longest levels on that period (wavelengths down to 8 cells), the laws held to them there\n";
+    }
     if (!dropped.empty()) {
         os << "  not checked:";
         for (double P : dropped) {
@@ -224,27 +229,38 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     }
     out.regime = out.hardness ? "capped at H = " + number(*out.hardness) + " Pa" : std::string("elastic");
 
-    // The surfaces solved, and the spectrum the laws see.
+    // The surfaces solved, and the spectrum the laws see: one part, or for a 1-D description two
+    // (the pressures at p/(E' h') >= smallCellLoadPerGradient on periods of one scan length, the
+    // lighter ones on periods of options.lightLoadPeriods scan lengths).
+    struct Part {
+        Spectrum lawSpectrum;
+        std::vector<ArealSurface> solved;
+        std::vector<std::size_t> at; // indices into out.pressures
+    };
     const Spectrum given = equivalentSurface(spec.surfaces);
     out.levelsGiven = given.size();
     const bool areal = spec.surfaces.front().kind == SurfaceSpec::Kind::areal;
-    std::vector<ArealSurface> solved;
-    std::optional<Spectrum> lawSpectrum;
+    std::vector<Part> parts;
     bool periodic = true;
     bool mirrored = false;
     std::optional<Detrend> detrend = spec.detrend;
+    const std::size_t n = options.gridSize;
+    // The shortest wavelength 8 cells (SurfaceCheck.hpp); the lowest level always stays.
+    const auto cut = [n](const Spectrum& s) {
+        return s.truncated(std::max(double(n / 8) / s.length(), s.frequencies().front()) * (1.0 + 1e-12));
+    };
     if (areal) {
         for (const SurfaceSpec& s : spec.surfaces) {
             if (s.kind != SurfaceSpec::Kind::areal) {
                 throw ParameterError("surfaces", "check two areal maps or two 1-D descriptions, not one of each");
             }
         }
-        solved.push_back(arealComposite(spec.surfaces)); // as the boundaryElement model reads it
+        parts.push_back({given, {arealComposite(spec.surfaces)}, {}}); // as the boundaryElement model reads it
         periodic = spec.periodic.value_or(false);
         mirrored = spec.mirror.value_or(false);
-        lawSpectrum = given;
+        const ArealSurface& map = parts[0].solved[0];
         std::ostringstream os;
-        os << "the map " << solved[0].source() << " (" << solved[0].nx() << " x " << solved[0].ny()
+        os << "the map " << map.source() << " (" << map.nx() << " x " << map.ny()
            << (mirrored ? ", mirrored)" : periodic ? ", periodic)" : ", non-periodic)");
         out.surface = os.str();
     } else {
@@ -252,21 +268,15 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
             throw ParameterError("mirror", "is for areal maps; a surface synthesized from a 1-D description is "
                                            "periodic already");
         }
-        const std::size_t n = options.gridSize;
         limits::requireSynthesisSize("check grid", n);
-        // The shortest wavelength 8 cells (SurfaceCheck.hpp); the lowest level always stays.
-        const double cutoff = std::max(double(n / 8) / given.length(), given.frequencies().front());
-        lawSpectrum = given.truncated(cutoff * (1.0 + 1e-12));
-        for (std::uint64_t seed : options.seeds) {
-            solved.push_back(synthesizeIsotropic(*lawSpectrum, n, seed, "synthesized from " + given.source()));
+        if (options.lightLoadPeriods < 1 || options.lightLoadPeriods > 64) {
+            throw ParameterError("check light-load periods", "1 to 64 scan lengths, not " +
+                                                                 std::to_string(options.lightLoadPeriods));
         }
-        std::ostringstream os;
-        os << options.seeds.size() << (options.seeds.size() == 1 ? " seed" : " seeds") << " of " << n << " x " << n
-           << " synthesized from " << given.source();
-        out.surface = os.str();
+        parts.push_back({cut(given), {}, {}});
     }
-    out.levelsKept = lawSpectrum->size();
-    out.gradient = arealRmsGradient(spectralMoments(*lawSpectrum));
+    out.levelsKept = parts[0].lawSpectrum.size();
+    out.gradient = arealRmsGradient(spectralMoments(parts[0].lawSpectrum));
 
     // The pressures: the table's range clipped to where the exact model and the laws are compared.
     double lo = spec.minPressure;
@@ -315,70 +325,113 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
         }
     }
 
+    // The parts' pressures and surfaces: a profile's or spectrum's lighter pressures on periods
+    // of lightLoadPeriods scan lengths (the same grid, so the levels cut at that period's
+    // gridSize/8; Spectrum::onPeriod).
+    const std::size_t periods = areal ? 1 : options.lightLoadPeriods;
+    std::vector<std::size_t> light;
+    for (std::size_t i = 0; i < out.pressures.size(); ++i) {
+        // Below the threshold by more than rounding: a pressure spaced onto p/(E' h') = 1e-3 itself
+        // (4 across 1e-4 to 1e-1) is a heavy one whatever its last digit.
+        const bool isLight =
+            !areal && out.pressures[i] < smallCellLoadPerGradient * Ep * out.gradient * (1.0 - 1e-9);
+        (isLight ? light : parts[0].at).push_back(i);
+    }
+    if (!light.empty() && periods > 1) {
+        // Only the levels up to the longer period's cut are needed, and three beyond it so that the
+        // bins and the interpolation up to the cut are the whole spectrum's (a long profile's
+        // spectrum on a longer period would otherwise hold `periods` times all its levels).
+        const std::vector<double>& f = given.frequencies();
+        const double top = double(n / 8) / (given.length() * double(periods));
+        const std::size_t needed =
+            static_cast<std::size_t>(std::upper_bound(f.begin(), f.end(), top * (1.0 + 1e-12)) - f.begin()) + 3;
+        const Spectrum levels = needed < f.size() ? given.truncated(f[needed - 1]) : given;
+        parts.push_back({cut(levels.onPeriod(periods)), {}, light});
+        out.lightLoadPeriods = periods;
+        out.lightLevelsKept = parts.back().lawSpectrum.size();
+    } else {
+        parts[0].at.insert(parts[0].at.end(), light.begin(), light.end());
+        std::sort(parts[0].at.begin(), parts[0].at.end());
+    }
+    if (parts[0].at.empty()) {
+        parts.erase(parts.begin());
+    }
     if (!areal) {
-        std::size_t light = 0;
-        double heaviest = 0.0;
-        for (double P : out.pressures) {
-            if (P < smallCellLoadPerGradient * Ep * out.gradient) {
-                ++light;
-                heaviest = P;
+        for (Part& part : parts) {
+            for (std::uint64_t seed : options.seeds) {
+                part.solved.push_back(synthesizeIsotropic(part.lawSpectrum, n, seed, "synthesized from " + given.source()));
             }
         }
-        if (light > 0) {
-            std::ostringstream os;
-            os << "below p/(E' h') = " << smallCellLoadPerGradient << " (" << light << " of the checked pressures, up to "
-               << number(heaviest) << " Pa) the exact answer is a periodic cell one scan length on a side, which "
-               << "may conduct more than a large joint of this finish (on periods of 8 scan lengths the exact answer "
-               << "at p/(E' h') = 1e-4 was down to about a quarter of it where the longest wave holds most of the heights, "
-               << "about the same where the spectrum rolls off well below it; less apart by 1e-3): there the exact "
-               << "answer below may be too high for a large joint, and the laws' ratios to it too low (the default "
-               << "law is fitted on periods of 8 scan lengths; docs/checking.md)";
-            out.smallCellNote = os.str();
+        std::ostringstream os;
+        os << options.seeds.size() << (options.seeds.size() == 1 ? " seed" : " seeds") << " of " << n << " x " << n
+           << " synthesized from " << given.source();
+        if (out.lightLoadPeriods > 1) {
+            os << " (below p/(E' h') = " << smallCellLoadPerGradient << " on periods of " << out.lightLoadPeriods
+               << " scan lengths)";
         }
+        out.surface = os.str();
     }
 
-    // Every law on the checked spectrum: the spec's multi-scale model's area, or the default
+    if (!light.empty()) {
+        double heaviest = 0.0;
+        for (std::size_t i : light) {
+            heaviest = std::max(heaviest, out.pressures[i]);
+        }
+        std::ostringstream os;
+        os << "below p/(E' h') = " << smallCellLoadPerGradient << " (" << light.size()
+           << " of the checked pressures, up to " << number(heaviest) << " Pa) the exact answer is a periodic cell "
+           << (out.lightLoadPeriods > 1 ? std::to_string(out.lightLoadPeriods) + " scan lengths" : std::string("one scan length"))
+           << " on a side, which may conduct more than a large joint of this finish (on periods of 8 scan lengths the "
+              "exact answer at p/(E' h') = 1e-4 was down to about a quarter of one scan length's where the longest "
+              "wave holds most of the heights, about the same where the spectrum rolls off well below it; less apart "
+              "by 1e-3): there the exact answer below may be too high for a large joint, and the laws' ratios to it "
+              "too low (the default law is fitted on periods of 8 scan lengths; docs/checking.md)";
+        out.smallCellNote = os.str();
+    }
+
+    // Every law on each part's spectrum: the spec's multi-scale model's area, or the default
     // elasto-plastic (capped) or elastic one.
     const std::string areaModel =
         isMultiscaleModel(spec.model) ? spec.model : (out.hardness ? std::string("jacksonGreen") : std::string("hertz"));
-    const MultiscaleModel multiscale(*lawSpectrum, Ep, makeAsperityModel(areaModel, materials));
-    ConductanceLawInputs in;
-    in.multiscale = &multiscale;
-    in.spectrum = &*lawSpectrum;
-    in.Eprime = Ep;
-    in.roughness = areal ? equivalentRoughness(spec.surfaces) : spectrumRoughness(*lawSpectrum);
-    // The surfaces checked on are the map's heights, or Gaussian ones synthesized from a spectrum.
-    if (areal) {
-        in.skewness = equivalentSkewness(spec.surfaces);
-    }
-    in.microhardness = spec.microhardness ? spec.microhardness : out.hardness;
-    in.hardness = in.microhardness;
-    in.vickers = spec.vickers;
     out.chosenLaw = spec.conductanceLaw.empty() ? defaultConductanceLaw() : spec.conductanceLaw;
     if (!isConductanceLaw(out.chosenLaw)) {
         throw ParameterError("conductance", "unknown law '" + out.chosenLaw + "'");
     }
     // Every law built before the minutes of solving (a law that cannot be built here is named
-    // then, and the chosen one must be buildable).
-    std::vector<std::pair<std::string, std::unique_ptr<ConductanceLaw>>> laws;
-    for (const std::string& name : conductanceLawNames()) {
-        if (name == "cooperMikicYovanovich" && !in.microhardness && !in.vickers) {
-            if (name == out.chosenLaw) {
-                throw ParameterError("conductance", "the chosen law cooperMikicYovanovich needs a microhardness "
-                                                    "(or Vickers coefficients), and the materials here give no "
-                                                    "hardness: give one, or choose another law");
-            }
-            laws.emplace_back(name, nullptr);
-            continue;
+    // then, and the chosen one must be buildable). The laws hold pointers into their inputs.
+    const std::optional<double> microhardness = spec.microhardness ? spec.microhardness : out.hardness;
+    std::vector<std::unique_ptr<MultiscaleModel>> multiscales;
+    std::vector<std::vector<std::pair<std::string, std::unique_ptr<ConductanceLaw>>>> laws(parts.size());
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        multiscales.push_back(std::make_unique<MultiscaleModel>(parts[k].lawSpectrum, Ep,
+                                                                makeAsperityModel(areaModel, materials)));
+        ConductanceLawInputs in;
+        in.multiscale = multiscales.back().get();
+        in.spectrum = &parts[k].lawSpectrum;
+        in.Eprime = Ep;
+        in.roughness = areal ? equivalentRoughness(spec.surfaces) : spectrumRoughness(parts[k].lawSpectrum);
+        // The surfaces checked on are the map's heights, or Gaussian ones synthesized from a spectrum.
+        if (areal) {
+            in.skewness = equivalentSkewness(spec.surfaces);
         }
-        laws.emplace_back(name, makeConductanceLaw(name, in));
+        in.microhardness = microhardness;
+        in.hardness = in.microhardness;
+        in.vickers = spec.vickers;
+        for (const std::string& name : conductanceLawNames()) {
+            if (name == "cooperMikicYovanovich" && !in.microhardness && !in.vickers) {
+                if (name == out.chosenLaw) {
+                    throw ParameterError("conductance", "the chosen law cooperMikicYovanovich needs a microhardness "
+                                                        "(or Vickers coefficients), and the materials here give no "
+                                                        "hardness: give one, or choose another law");
+                }
+                laws[k].emplace_back(name, nullptr);
+                continue;
+            }
+            laws[k].emplace_back(name, makeConductanceLaw(name, in));
+        }
     }
 
     // The exact conductance on every solved surface.
-    std::vector<double> loads;
-    for (double P : out.pressures) {
-        loads.push_back(checkLoad(P / Ep));
-    }
     BoundaryElementOptions bo;
     bo.periodic = periodic;
     bo.mirrored = mirrored;
@@ -387,6 +440,7 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     const std::size_t count = out.pressures.size();
     std::vector<double> logSum(count, 0.0);
     std::vector<double> areaSum(count, 0.0);
+    std::vector<double> solvedOn(count, 0.0);
     out.exactHPerKLow.assign(count, std::numeric_limits<double>::infinity());
     out.exactHPerKHigh.assign(count, 0.0);
     log("check: the exact model on " + out.surface + ", " + out.regime + ", at " + std::to_string(count) +
@@ -394,65 +448,87 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     const auto seconds = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
-    for (std::size_t s = 0; s < solved.size(); ++s) {
-        const BoundaryElementModel model(solved[s], Ep, bo);
-        const std::vector<BoundaryElementPoint> points =
-            model.curve(loads, [&](std::size_t done, std::size_t total, const BoundaryElementPoint& p) {
-                std::ostringstream os;
-                os << "check: surface " << s + 1 << " of " << solved.size() << ", pressure " << done << " of " << total
-                   << ": A_r/A_n = " << number(p.areaFraction) << ", h_c/k_s = " << number(p.conductancePerConductivity)
-                   << " 1/m; " << number(seconds()) << " s";
-                log(os.str());
-            });
-        if (const std::string warning =
-                patchCorrectionWarning(points, Ep, "mirror true; in the contact entry, --mirror with --check, "
-                                               "mirror=True in Python");
-            !warning.empty()) {
-            out.exactWarning = warning + "; nor are the laws' ratios there";
+    std::size_t surfaces = 0;
+    for (const Part& part : parts) {
+        surfaces += part.solved.size();
+    }
+    std::size_t done = 0;
+    for (const Part& part : parts) {
+        std::vector<double> loads;
+        for (std::size_t i : part.at) {
+            loads.push_back(checkLoad(out.pressures[i] / Ep));
         }
-        for (std::size_t i = 0; i < count; ++i) {
-            const double h = points[i].conductancePerConductivity;
-            if (!(h > 0.0) || !std::isfinite(h)) {
-                // A padded map's spots conducting as the bonded map (h infinite below complete
-                // contact) is the patch correction's failure, which the warning says.
-                const bool patch = points[i].patchCorrectionGain > patchCorrectionGainLimit;
-                throw ParameterError("check", "the exact conductance at " + number(out.pressures[i]) + " Pa is " +
-                                                  number(h) + " 1/m (" +
-                                                  (patch ? out.exactWarning : std::string("no contact, or complete contact")) +
-                                                  "): check other pressures");
+        for (const ArealSurface& surface : part.solved) {
+            ++done;
+            const BoundaryElementModel model(surface, Ep, bo);
+            const std::vector<BoundaryElementPoint> points =
+                model.curve(loads, [&](std::size_t k, std::size_t total, const BoundaryElementPoint& p) {
+                    std::ostringstream os;
+                    os << "check: surface " << done << " of " << surfaces << ", pressure " << k << " of " << total
+                       << ": A_r/A_n = " << number(p.areaFraction)
+                       << ", h_c/k_s = " << number(p.conductancePerConductivity) << " 1/m; " << number(seconds())
+                       << " s";
+                    log(os.str());
+                });
+            if (const std::string warning =
+                    patchCorrectionWarning(points, Ep, "mirror true; in the contact entry, --mirror with --check, "
+                                                   "mirror=True in Python");
+                !warning.empty()) {
+                out.exactWarning = warning + "; nor are the laws' ratios there";
             }
-            logSum[i] += std::log(h);
-            areaSum[i] += points[i].areaFraction;
-            out.exactHPerKLow[i] = std::min(out.exactHPerKLow[i], h);
-            out.exactHPerKHigh[i] = std::max(out.exactHPerKHigh[i], h);
+            for (std::size_t j = 0; j < part.at.size(); ++j) {
+                const std::size_t i = part.at[j];
+                const double h = points[j].conductancePerConductivity;
+                if (!(h > 0.0) || !std::isfinite(h)) {
+                    // A padded map's spots conducting as the bonded map (h infinite below complete
+                    // contact) is the patch correction's failure, which the warning says.
+                    const bool patch = points[j].patchCorrectionGain > patchCorrectionGainLimit;
+                    throw ParameterError("check", "the exact conductance at " + number(out.pressures[i]) + " Pa is " +
+                                                      number(h) + " 1/m (" +
+                                                      (patch ? out.exactWarning
+                                                             : std::string("no contact, or complete contact")) +
+                                                      "): check other pressures");
+                }
+                logSum[i] += std::log(h);
+                areaSum[i] += points[j].areaFraction;
+                solvedOn[i] += 1.0;
+                out.exactHPerKLow[i] = std::min(out.exactHPerKLow[i], h);
+                out.exactHPerKHigh[i] = std::max(out.exactHPerKHigh[i], h);
+            }
         }
     }
     for (std::size_t i = 0; i < count; ++i) {
-        out.exactHPerK.push_back(std::exp(logSum[i] / double(solved.size())));
-        out.exactArea.push_back(areaSum[i] / double(solved.size()));
+        out.exactHPerK.push_back(std::exp(logSum[i] / solvedOn[i]));
+        out.exactArea.push_back(areaSum[i] / solvedOn[i]);
     }
 
     double best = std::numeric_limits<double>::infinity();
-    for (const auto& [name, law] : laws) {
-        CheckedLaw l;
-        l.name = name;
-        if (!law) {
-            l.unavailable = "needs a microhardness; the surfaces here stay elastic";
-            out.laws.push_back(l);
+    for (std::size_t l = 0; l < conductanceLawNames().size(); ++l) {
+        CheckedLaw checked;
+        checked.name = laws[0][l].first;
+        if (!laws[0][l].second) {
+            checked.unavailable = "needs a microhardness; the surfaces here stay elastic";
+            out.laws.push_back(checked);
             continue;
         }
-        for (std::size_t i = 0; i < count; ++i) {
-            const double h = law->perConductivity(out.pressures[i]);
-            l.hPerK.push_back(h);
-            l.ratio.push_back(h / out.exactHPerK[i]);
-            const double factor = l.ratio.back() >= 1.0 ? l.ratio.back() : 1.0 / l.ratio.back();
-            l.worstFactor = std::max(l.worstFactor, std::isnan(factor) ? std::numeric_limits<double>::infinity() : factor);
+        checked.hPerK.assign(count, 0.0);
+        checked.ratio.assign(count, 0.0);
+        for (std::size_t k = 0; k < parts.size(); ++k) {
+            for (std::size_t i : parts[k].at) {
+                checked.hPerK[i] = laws[k][l].second->perConductivity(out.pressures[i]);
+                checked.ratio[i] = checked.hPerK[i] / out.exactHPerK[i];
+            }
         }
-        if (l.worstFactor < best) {
-            best = l.worstFactor;
-            out.closestLaw = name;
+        for (double r : checked.ratio) {
+            const double factor = r >= 1.0 ? r : 1.0 / r;
+            checked.worstFactor =
+                std::max(checked.worstFactor, std::isnan(factor) ? std::numeric_limits<double>::infinity() : factor);
         }
-        out.laws.push_back(l);
+        if (checked.worstFactor < best) {
+            best = checked.worstFactor;
+            out.closestLaw = checked.name;
+        }
+        out.laws.push_back(checked);
     }
     out.seconds = seconds();
     return out;

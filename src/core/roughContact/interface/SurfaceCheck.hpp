@@ -13,6 +13,14 @@
 // from p/E' of about 1e-3 on). The laws are built on the same cut spectrum, so law and exact
 // see one surface; what the cut leaves out is said (levels kept of levels given).
 //
+// At light loads a larger period. A profile's or spectrum's pressures below p/(E' h') =
+// smallCellLoadPerGradient (MeasuredAccuracy.hpp) are solved on periods of lightLoadPeriods scan
+// lengths (default 2) on the same grid: the spectrum on that period (Spectrum::onPeriod) cut at
+// its gridSize/8 levels, so the same cost with wavelengths down to 8 cells of the longer period,
+// and the laws on that cut spectrum there. A cell of one scan length holds few contact spots at
+// those loads and may conduct far more than a large joint (docs/checking.md gives what two scan
+// lengths gained against periods of 8 on the report's spectra).
+//
 // Elastic or capped as the materials say: the cap p <= H where the spec gives a hardness (or
 // hardnessFromYield) or the yielding material has S_y (H = 2.84 S_y), elastic otherwise.
 //
@@ -49,6 +57,9 @@ struct SurfaceCheckOptions {
     /// Pressures [Pa] to check instead of the spec's range (each within the clipped range is
     /// kept; none left is a ParameterError).
     std::vector<double> pressures;
+    /// A profile's or spectrum's pressures below p/(E' h') = smallCellLoadPerGradient are solved
+    /// on periods of this many scan lengths (1 to 64; 1: one scan length at every pressure).
+    std::size_t lightLoadPeriods = 2;
     /// A line for a log, at the start and after each solve.
     std::function<void(const std::string&)> log;
 };
@@ -74,6 +85,10 @@ struct SurfaceCheck {
     double gradient = 0.0;     ///< h': areal rms gradient of the checked surface
     std::size_t levelsKept = 0;  ///< levels of the spectrum in the check (the laws')
     std::size_t levelsGiven = 0; ///< levels of the spectrum given
+    /// The period [scan lengths] of the pressures below p/(E' h') = smallCellLoadPerGradient (1:
+    /// none solved on a longer one), and the levels of the spectrum on it that the check holds.
+    std::size_t lightLoadPeriods = 1;
+    std::size_t lightLevelsKept = 0;
     std::vector<double> pressures;       ///< [Pa]
     /// Pressures asked for (SurfaceCheckOptions::pressures) outside the checked range [Pa].
     std::vector<double> dropped;
@@ -90,8 +105,8 @@ struct SurfaceCheck {
     /// some pressures (patchCorrectionWarning) and the ratios there neither; empty otherwise.
     std::string exactWarning;
     /// A profile or spectrum checked at p/(E' h') below smallCellLoadPerGradient (MeasuredAccuracy.hpp):
-    /// that its exact answer there is a small periodic cell's, which may be too high for a large
-    /// joint (and so may laws fitted on such cells); empty otherwise (and for a map).
+    /// that its exact answer there is a periodic cell's (lightLoadPeriods scan lengths), which may
+    /// still be too high for a large joint; empty otherwise (and for a map).
     std::string smallCellNote;
     double seconds = 0.0;                ///< the time the check took
 

@@ -215,6 +215,60 @@ Spectrum Spectrum::truncated(double fmax) const
     return s;
 }
 
+Spectrum Spectrum::onPeriod(std::size_t multiple) const
+{
+    if (multiple < 1 || multiple > 64) {
+        throw ParameterError("period multiple", "a period of 1 to 64 scan lengths, not " + std::to_string(multiple));
+    }
+    if (multiple == 1) {
+        return *this;
+    }
+    const std::size_t m = f_.size();
+    // The bins and densities as IsotropicSpectrum takes them (ArealSynthesis.cpp).
+    std::vector<double> density(m);
+    std::vector<double> width(m);
+    for (std::size_t i = 0; i < m; ++i) {
+        width[i] = m == 1          ? 1.0 / length_
+                   : i == 0        ? f_[1] - f_[0]
+                   : i + 1 == m    ? f_[i] - f_[i - 1]
+                                   : 0.5 * (f_[i + 1] - f_[i - 1]);
+        const bool nyquistLevel = nyquist_ && i + 1 == m;
+        density[i] = beta_[i] * beta_[i] / ((nyquistLevel ? 1.0 : 4.0) * width[i]);
+    }
+    const double low = std::max(f_[0] - 0.5 * width[0], 0.5 * f_[0]);
+    const double high = nyquist_ ? f_[m - 1] : f_[m - 1] + 0.5 * width[m - 1];
+    const double L = length_ * static_cast<double>(multiple);
+    const double step = 1.0 / L;
+    limits::requireLevelCount(source_.empty() ? std::string("spectrum on a longer period") : source_, high * L + 1.0,
+                              "a period of " + std::to_string(multiple) + " scan lengths holds " +
+                                  std::to_string(multiple) + " times the levels");
+    std::vector<double> f;
+    std::vector<double> beta;
+    std::size_t i = 0; // the segment [f_i, f_{i+1}] holding the level
+    for (std::size_t j = 1; (static_cast<double>(j) - 0.5) * step < high; ++j) {
+        const double fj = static_cast<double>(j) * step;
+        const double inside = std::min(fj + 0.5 * step, high) - std::max(fj - 0.5 * step, low);
+        if (!(inside > 1e-9 * step)) { // outside the band, or touching it by rounding
+            continue;
+        }
+        double c = 0.0;
+        if (fj <= f_[0]) {
+            c = density[0];
+        } else if (fj >= f_[m - 1]) {
+            c = density[m - 1];
+        } else {
+            while (f_[i + 1] < fj) {
+                ++i;
+            }
+            const double t = (fj - f_[i]) / (f_[i + 1] - f_[i]);
+            c = (1.0 - t) * density[i] + t * density[i + 1];
+        }
+        f.push_back(fj);
+        beta.push_back(std::sqrt(4.0 * c * inside));
+    }
+    return Spectrum(std::move(f), std::move(beta), L, source_);
+}
+
 namespace {
 // A level's power spread evenly over its frequency bin, for re-binning.
 struct Bin {

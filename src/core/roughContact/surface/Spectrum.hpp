@@ -64,6 +64,18 @@ public:
     /// The levels with f <= fmax only.
     Spectrum truncated(double fmax) const;
 
+    /// The same line-scan spectrum on a period of `multiple` times its length (1 to 64): its
+    /// two-sided density C1 = beta_i^2/(4 w_i) (w_i a level's bin as IsotropicSpectrum takes it; a
+    /// Nyquist level's beta^2/w; not pooled to a non-increasing density, which the synthesis
+    /// does after) linear between the levels and flat beyond the first and the last, sampled at
+    /// the levels j/(multiple L), each level's power C1 times the part of its bin inside the band
+    /// [max(f_1 - w_1/2, f_1/2), f_n + w_n/2] (ending at a Nyquist level): the variance is kept
+    /// to the linear interpolation's error (docs/validation/engineeringRangeReport's
+    /// domain_spectrum, for levels i/L). A periodic surface synthesized from it is a
+    /// period `multiple` times as long of a surface of the same finish (the check's light loads,
+    /// SurfaceCheck.hpp). Levels that would number more than the limit: ParameterError.
+    Spectrum onPeriod(std::size_t multiple) const;
+
 private:
     std::vector<double> f_;
     std::vector<double> beta_;
