@@ -157,7 +157,7 @@ void bindCheck(py::module_& m)
         py::arg("hardness") = py::none(), py::arg("hardness_from_yield") = false, py::arg("detrend") = py::none(),
         py::arg("pressures") = std::vector<double>{}, py::arg("grid") = 512,
         py::arg("seeds") = std::vector<std::uint64_t>{1, 2, 3}, py::arg("count") = 4, py::arg("progress") = py::none(),
-        py::arg("threads") = py::none(), py::arg("mirror") = py::none(), py::arg("light_load_periods") = 2,
+        py::arg("threads") = py::none(), py::arg("mirror") = py::none(), py::arg("light_load_periods") = SurfaceCheckOptions{}.lightLoadPeriods,
         "check(*, surfaces, side1, side2, model='jacksonGreen', conductance='', ..., pressures=[], grid=512, "
         "seeds=[1, 2, 3], count=4, progress=None, threads=None, mirror=None, light_load_periods=2): the exact model (boundaryElement) on the user's "
         "own surface (an areal map as it is, or mirror=True: mirrored about its edges into a periodic surface; a 1-D description as `seeds` surfaces of grid x grid synthesized from its "

@@ -4,6 +4,7 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
 #include "roughContact/io/Numbers.hpp"
+#include "roughContact/interface/SurfaceCheck.hpp"
 #include "roughContact/io/Units.hpp"
 #include "roughContact/models/ModelFactory.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
@@ -252,7 +253,10 @@ void addOptions(CLI::App& app, Options& o)
     app.add_flag("--check", o.check,
                  "check the laws on this surface: the exact model (boundaryElement) on the --areal map, or on "
                  "3 surfaces of 512 x 512 (--synthesize N) synthesized from the profile or spectrum (below "
-                 "p/(E' h') = 1e-3 on periods of 2 scan lengths), at the given pressures (up to 5) or 4 across their range, within p/(E' h') 1e-4 to 1e-1; capped at "
+                 "p/(E' h') = 1e-3 on periods of " +
+                     std::to_string(roughContact::SurfaceCheckOptions{}.lightLoadPeriods) +
+                     " scan lengths), at the given pressures (up to 5) or 4 across their range, within p/(E' h') "
+                     "1e-4 to 1e-1; capped at "
                  "H where --Sy, --hardness or --hardness-from-yield say, elastic otherwise. Prints every law's "
                  "ratio to the exact h_c/k_s, the closest, and whether the chosen law (--conductance-law, "
                  "default " + defaultConductanceLaw() + ") is within 25 %");

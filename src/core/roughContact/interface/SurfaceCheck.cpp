@@ -269,9 +269,10 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
                                            "periodic already");
         }
         limits::requireSynthesisSize("check grid", n);
-        if (options.lightLoadPeriods < 1 || options.lightLoadPeriods > 64) {
-            throw ParameterError("check light-load periods", "1 to 64 scan lengths, not " +
-                                                                 std::to_string(options.lightLoadPeriods));
+        if (options.lightLoadPeriods < 1 || options.lightLoadPeriods > Spectrum::maximumPeriodMultiple) {
+            throw ParameterError("check light-load periods",
+                                 "1 to " + std::to_string(Spectrum::maximumPeriodMultiple) + " scan lengths, not " +
+                                     std::to_string(options.lightLoadPeriods));
         }
         parts.push_back({cut(given), {}, {}});
     }
@@ -440,7 +441,6 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     const std::size_t count = out.pressures.size();
     std::vector<double> logSum(count, 0.0);
     std::vector<double> areaSum(count, 0.0);
-    std::vector<double> solvedOn(count, 0.0);
     out.exactHPerKLow.assign(count, std::numeric_limits<double>::infinity());
     out.exactHPerKHigh.assign(count, 0.0);
     log("check: the exact model on " + out.surface + ", " + out.regime + ", at " + std::to_string(count) +
@@ -491,15 +491,19 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
                 }
                 logSum[i] += std::log(h);
                 areaSum[i] += points[j].areaFraction;
-                solvedOn[i] += 1.0;
                 out.exactHPerKLow[i] = std::min(out.exactHPerKLow[i], h);
                 out.exactHPerKHigh[i] = std::max(out.exactHPerKHigh[i], h);
             }
         }
     }
-    for (std::size_t i = 0; i < count; ++i) {
-        out.exactHPerK.push_back(std::exp(logSum[i] / solvedOn[i]));
-        out.exactArea.push_back(areaSum[i] / solvedOn[i]);
+    out.exactHPerK.assign(count, 0.0);
+    out.exactArea.assign(count, 0.0);
+    for (const Part& part : parts) { // every pressure is in one part, solved on its surfaces (>= 1 seed)
+        const double solved = double(part.solved.size());
+        for (std::size_t i : part.at) {
+            out.exactHPerK[i] = std::exp(logSum[i] / solved);
+            out.exactArea[i] = areaSum[i] / solved;
+        }
     }
 
     double best = std::numeric_limits<double>::infinity();

@@ -217,8 +217,9 @@ Spectrum Spectrum::truncated(double fmax) const
 
 Spectrum Spectrum::onPeriod(std::size_t multiple) const
 {
-    if (multiple < 1 || multiple > 64) {
-        throw ParameterError("period multiple", "a period of 1 to 64 scan lengths, not " + std::to_string(multiple));
+    if (multiple < 1 || multiple > maximumPeriodMultiple) {
+        throw ParameterError("period multiple", "a period of 1 to " + std::to_string(maximumPeriodMultiple) +
+                                                    " scan lengths, not " + std::to_string(multiple));
     }
     if (multiple == 1) {
         return *this;

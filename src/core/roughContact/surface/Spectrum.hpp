@@ -75,6 +75,8 @@ public:
     /// period `multiple` times as long of a surface of the same finish (the check's light loads,
     /// SurfaceCheck.hpp). Levels that would number more than the limit: ParameterError.
     Spectrum onPeriod(std::size_t multiple) const;
+    /// The longest period onPeriod takes, in scan lengths.
+    static constexpr std::size_t maximumPeriodMultiple = 64;
 
 private:
     std::vector<double> f_;
