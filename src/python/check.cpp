@@ -116,6 +116,19 @@ void bindCheck(py::module_& m)
         "reference, in the decade of p/(E' h') holding load_per_gradient: a dict (low, high, from, to, surfaces, "
         "report), or None where nothing was measured.");
 
+    // The signature's default light-load period is the core's (one place for it).
+    static const std::string checkDoc =
+        "check(*, surfaces, side1, side2, model='jacksonGreen', conductance='', ..., pressures=[], grid=512, "
+        "seeds=[1, 2, 3], count=4, progress=None, threads=None, mirror=None, light_load_periods=" +
+        std::to_string(SurfaceCheckOptions{}.lightLoadPeriods) +
+        "): the exact model (boundaryElement) on the user's "
+        "own surface (an areal map as it is, or mirror=True: mirrored about its edges into a periodic surface; a 1-D description as `seeds` surfaces of grid x grid synthesized from its "
+        "spectrum, cut at grid/8 levels, below p/(E' h') = 1e-3 on periods of light_load_periods scan lengths) at `pressures` [Pa] (at most 5) or `count` pressures across "
+        "[min_pressure, max_pressure], within p/(E' h') 1e-4 to 1e-1; capped at H where hardness, "
+        "hardness_from_yield or S_y say, elastic otherwise; every law's ratio to it. The interface's keyword "
+        "arguments are ContactInterface's. progress: a callable given a line after each solve. threads: the "
+        "process's threads of the solves (set_threads; None: as they are). About 0.5 s "
+        "a pressure and seed at 512^2.";
     m.def(
         "check",
         [](const std::vector<SurfaceSpec>& surfaces, const Material& side1, const Material& side2,
@@ -158,15 +171,7 @@ void bindCheck(py::module_& m)
         py::arg("pressures") = std::vector<double>{}, py::arg("grid") = 512,
         py::arg("seeds") = std::vector<std::uint64_t>{1, 2, 3}, py::arg("count") = 4, py::arg("progress") = py::none(),
         py::arg("threads") = py::none(), py::arg("mirror") = py::none(), py::arg("light_load_periods") = SurfaceCheckOptions{}.lightLoadPeriods,
-        "check(*, surfaces, side1, side2, model='jacksonGreen', conductance='', ..., pressures=[], grid=512, "
-        "seeds=[1, 2, 3], count=4, progress=None, threads=None, mirror=None, light_load_periods=2): the exact model (boundaryElement) on the user's "
-        "own surface (an areal map as it is, or mirror=True: mirrored about its edges into a periodic surface; a 1-D description as `seeds` surfaces of grid x grid synthesized from its "
-        "spectrum, cut at grid/8 levels, below p/(E' h') = 1e-3 on periods of light_load_periods scan lengths) at `pressures` [Pa] (at most 5) or `count` pressures across "
-        "[min_pressure, max_pressure], within p/(E' h') 1e-4 to 1e-1; capped at H where hardness, "
-        "hardness_from_yield or S_y say, elastic otherwise; every law's ratio to it. The interface's keyword "
-        "arguments are ContactInterface's. progress: a callable given a line after each solve. threads: the "
-        "process's threads of the solves (set_threads; None: as they are). About 0.5 s "
-        "a pressure and seed at 512^2.");
+        checkDoc.c_str());
 }
 
 } // namespace roughcontact_py

@@ -38,15 +38,15 @@ def test_check_is_the_clis(cli):
     # Capped at 2.84 S_y (the materials yield), three seeds of 32^2, a progress line per solve.
     assert c.hardness == pytest.approx(2.84 * 0.2e9, rel=1e-15)
     assert c.surface.startswith("3 seeds of 32 x 32")
-    # The light pressure on periods of two scan lengths, the other on one: 3 + 3 surfaces.
-    assert c.light_load_periods == 2 and c.light_levels_kept == 4
+    # The light pressure on periods of four scan lengths (the default), the other on one: 3 + 3 surfaces.
+    assert c.light_load_periods == 4 and c.light_levels_kept == 3  # j/(4L) from 2/(4L) to 4/(4L)
     assert len(lines) == 1 + 3 * 2 and lines[-1].startswith("check: surface 6 of 6, pressure 1 of 1")
     assert c.chosen_law == rc.default_conductance_law()
     assert c.closest_law in c.ratios
     assert "closest: " + c.closest_law in c.report()
     assert np.all(c.exact_low <= c.exact) and np.all(c.exact <= c.exact_high)
     assert c.exact_warning == ""  # synthesized surfaces are periodic: no patch correction
-    # Below p/(E' h') = 1e-3 the exact answer is a periodic cell's (two scan lengths): the check says so.
+    # Below p/(E' h') = 1e-3 the exact answer is a periodic cell's (four scan lengths): the check says so.
     light = sum(p < 1e-3 * Ep * c.gradient for p in c.pressures)
     assert light == 1, c.gradient
     assert f"({light} of the checked pressures" in c.small_cell_note

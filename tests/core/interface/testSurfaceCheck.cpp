@@ -87,13 +87,17 @@ TEST(SurfaceCheck, TheExactConductanceIsTheBoundaryElementModelsOnTheSurfacesSai
         EXPECT_NEAR(c.pressures[0], lo, 1e-12 * lo);
         EXPECT_NEAR(c.pressures[1], std::sqrt(lo * hi), 1e-12 * hi);
         EXPECT_NEAR(c.pressures[2], hi, 1e-12 * hi);
-        // Below p/(E' h') = 1e-3 (the lightest pressure, at 1e-4) the check solves periods of 2L
-        // (SurfaceCheckOptions::lightLoadPeriods): the spectrum on 2L cut at 32/8 = 4 of its
-        // levels, j/(2L) up to 4/(2L). The others on one period L.
-        ASSERT_EQ(c.lightLoadPeriods, 2U);
-        const Spectrum cut2 = given.onPeriod(2).truncated(4.0 / 2e-3 * (1 + 1e-9));
-        ASSERT_EQ(cut2.size(), 4U);
-        EXPECT_EQ(c.lightLevelsKept, 4U);
+        // Below p/(E' h') = 1e-3 (the lightest pressure, at 1e-4) the check solves periods of kL
+        // (SurfaceCheckOptions::lightLoadPeriods, 4 by default as docs/checking.md says): the
+        // spectrum on kL cut at 32/8 = 4 of its levels' frequencies, j/(kL) up to 4/(kL): 3 levels,
+        // since onPeriod's band begins at half the first level, 1/(2L) (as the reports' periods).
+        // The others on one period L.
+        const std::size_t k = SurfaceCheckOptions{}.lightLoadPeriods;
+        ASSERT_EQ(k, 4U);
+        ASSERT_EQ(c.lightLoadPeriods, k);
+        const Spectrum cut2 = given.onPeriod(k).truncated(4.0 / (double(k) * 1e-3) * (1 + 1e-9));
+        ASSERT_EQ(cut2.size(), 3U);
+        EXPECT_EQ(c.lightLevelsKept, 3U);
         std::vector<bool> light;
         for (double P : c.pressures) {
             light.push_back(P < smallCellLoadPerGradient * Ep * c.gradient);
@@ -166,11 +170,12 @@ TEST(SurfaceCheck, TheExactConductanceIsTheBoundaryElementModelsOnTheSurfacesSai
         }
         EXPECT_EQ(c.chosenLaw, defaultConductanceLaw());
         EXPECT_TRUE(c.exactWarning.empty()) << c.exactWarning; // periodic: nothing removed
-        // Below p/(E' h') = 1e-3 the check says its exact answer is a periodic cell's, of 2 scan
+        // Below p/(E' h') = 1e-3 the check says its exact answer is a periodic cell's, of k scan
         // lengths, which may still conduct more than a large joint (engineeringRange.md, true
         // periods of 8L).
         EXPECT_NE(c.smallCellNote.find("(1 of the checked pressures"), std::string::npos) << c.smallCellNote;
-        EXPECT_NE(c.smallCellNote.find("a periodic cell 2 scan lengths on a side"), std::string::npos)
+        EXPECT_NE(c.smallCellNote.find("a periodic cell " + std::to_string(k) + " scan lengths on a side"),
+                  std::string::npos)
             << c.smallCellNote;
         EXPECT_NE(c.smallCellNote.find("may be too high for a large joint"), std::string::npos) << c.smallCellNote;
         EXPECT_NE(c.report().find("note: " + c.smallCellNote), std::string::npos);
@@ -185,10 +190,12 @@ TEST(SurfaceCheck, TheExactConductanceIsTheBoundaryElementModelsOnTheSurfacesSai
         EXPECT_NE(text.find(yielding ? "capped at H = 1.42e+09 Pa" : "elastic"), std::string::npos) << text;
         EXPECT_NE(text.find("closest: " + c.closestLaw), std::string::npos) << text;
         EXPECT_NE(text.find("4 longest levels of " + std::to_string(given.size())), std::string::npos) << text;
-        EXPECT_NE(text.find("solves periods of 2 scan lengths on the same grid: the surface's 4 longest levels"),
+        EXPECT_NE(text.find("solves periods of " + std::to_string(k) +
+                            " scan lengths on the same grid: the surface's 3 longest levels"),
                   std::string::npos)
             << text;
-        EXPECT_NE(c.surface.find("(below p/(E' h') = 0.001 on periods of 2 scan lengths)"), std::string::npos)
+        EXPECT_NE(c.surface.find("(below p/(E' h') = 0.001 on periods of " + std::to_string(k) + " scan lengths)"),
+                  std::string::npos)
             << c.surface;
         EXPECT_EQ(c.csv().rfind("nominal_pressure,nominal_pressure_per_Eprime,area_exact,h_per_k_exact,"
                                 "h_per_k_exact_min,h_per_k_exact_max,ratio_",
@@ -260,8 +267,8 @@ TEST(SurfaceCheck, OnePeriodAtEveryLoadWhenAsked)
 
 TEST(SurfaceCheck, ALongSpectrumIsCheckedOnTheLongerPeriodToo)
 {
-    // A spectrum of 600,000 levels (a profile of 1.2 million points): on a period of 2L all of
-    // them would be 1.2 million levels, over the core's cap; the check takes only the levels its
+    // A spectrum of 600,000 levels (a profile of 1.2 million points): on a period of 4L (the default) all of
+    // them would be 2.4 million levels, over the core's cap; the check takes only the levels its
     // grid holds there (and three beyond), so it runs, and the light pressure's surface is the
     // same as from the whole spectrum.
     InterfaceSpec spec = powerLawSpec(false);
@@ -273,9 +280,11 @@ TEST(SurfaceCheck, ALongSpectrumIsCheckedOnTheLongerPeriodToo)
     ASSERT_EQ(c.levelsGiven, 600000U);
     o.pressures = {1e-4 * c.reducedModulus * c.gradient * 1.01}; // a light pressure
     const SurfaceCheck light = checkSurface(spec, o);
-    EXPECT_EQ(light.lightLoadPeriods, 2U);
-    EXPECT_EQ(light.lightLevelsKept, 4U);
-    const Spectrum cut2 = spec.surfaces[0].spectrum().truncated(10.0 / 1e-3).onPeriod(2).truncated(4.0 / 2e-3 * (1 + 1e-9));
+    const std::size_t k = SurfaceCheckOptions{}.lightLoadPeriods;
+    EXPECT_EQ(light.lightLoadPeriods, k);
+    EXPECT_EQ(light.lightLevelsKept, 3U); // j/(4L) from 2/(4L) to 4/(4L)
+    const Spectrum cut2 =
+        spec.surfaces[0].spectrum().truncated(10.0 / 1e-3).onPeriod(k).truncated(4.0 / (double(k) * 1e-3) * (1 + 1e-9));
     BoundaryElementOptions bo;
     bo.periodic = true;
     const double h = BoundaryElementModel(synthesizeIsotropic(cut2, 32, 1), light.reducedModulus, bo)

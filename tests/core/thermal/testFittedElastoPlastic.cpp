@@ -386,14 +386,14 @@ TEST(FittedElastoPlastic, ValuesOfAnIndependentImplementation)
         std::optional<double> H;
         std::optional<double> s1;
         double h;
-    } cases[] = {{1e6, std::nullopt, std::nullopt, 32.80577910661433},
-                 {1e7, std::nullopt, std::nullopt, 239.51926064791684},
-                 {1e6, 1.42e9, std::nullopt, 60.55074907365286},
-                 {1e8, 1.42e9, std::nullopt, 4337.84971058938},
-                 {1e6, std::nullopt, 0.8, 31.03609301195156},
-                 {1e6, std::nullopt, 0.05, 33.50441309539095},
-                 {1e8, 1.42e9, 0.8, 4336.033578138838},
-                 {1e9, 1.42e9, 0.8, 141947.2869293938}};
+    } cases[] = {{1e6, std::nullopt, std::nullopt, 32.203330488370796},
+                 {1e7, std::nullopt, std::nullopt, 240.44590621447372},
+                 {1e6, 1.42e9, std::nullopt, 58.618705557328},
+                 {1e8, 1.42e9, std::nullopt, 4278.336586155383},
+                 {1e6, std::nullopt, 0.8, 25.7847809851624},
+                 {1e6, std::nullopt, 0.05, 35.04168481714527},
+                 {1e8, 1.42e9, 0.8, 4271.1686546924475},
+                 {1e9, 1.42e9, 0.8, 141104.2697495507}};
     for (const auto& k : cases) {
         EXPECT_NEAR(fittedElastoPlasticConductancePerConductivity(k.P, rough, W, Ep, k.H, 0.0, k.s1), k.h, 1e-12 * k.h)
             << k.P;
@@ -507,32 +507,34 @@ TEST(FittedElastoPlastic, ItsRatiosToTheExactAnswerAreTheDocumentedOnes)
     EXPECT_GT(rows, 400U);
     // As documented, to the printed two decimals (0.006: half the last digit, 0.005, and a margin
     // for a band end printed from a ratio that exact.csv holds to four decimals): the training
-    // bands and the hold-outs' ("holdout capped": the eight spectral shapes of
-    // docs/validation/spectralShapes with the other hold-outs).
+    // bands, the hold-outs' ("holdout capped": the map and the second hold-out) and the eight
+    // spectral shapes' of docs/validation/spectralShapes ("slope": the light-load slope A_s1 alone
+    // is fitted on them too).
     const struct {
         const char* group;
         double low;
         double high;
-    } documented[] = {{"training elastic", 0.88, 1.12},
-                      {"training capped", 0.79, 1.21},
-                      {"x3p elastic", 0.63, 1.00},
-                      {"x3p capped", 0.69, 1.15},
-                      {"holdout capped", 0.63, 1.45}};
+    } documented[] = {{"training elastic", 0.84, 1.16},
+                      {"training capped", 0.78, 1.22},
+                      {"x3p elastic", 0.63, 1.04},
+                      {"x3p capped", 0.68, 1.14},
+                      {"holdout capped", 0.64, 1.18},
+                      {"slope capped", 0.62, 1.42}};
     for (const auto& d : documented) {
         EXPECT_NEAR(band[d.group].first, d.low, 0.006) << d.group;
         EXPECT_NEAR(band[d.group].second, d.high, 0.006) << d.group;
     }
-    EXPECT_NEAR(band["selfAffine06ro2 capped"].first, 0.65, 0.006);
-    EXPECT_NEAR(band["selfAffine06ro2 elastic"].second, 1.05, 0.006);
+    EXPECT_NEAR(band["selfAffine06ro2 capped"].first, 0.64, 0.006);
+    EXPECT_NEAR(band["selfAffine06ro2 elastic"].second, 1.07, 0.006);
     // The counts docs/validation/fittedElastoPlastic.md quotes.
     using Count = std::pair<int, int>;
     EXPECT_EQ(within["training elastic"], Count(40, 40));
     EXPECT_EQ(within["training capped"], Count(154, 154));
     EXPECT_EQ(within["x3p elastic"].first + within["x3p capped"].first, 43);
     EXPECT_EQ(within["x3p capped"], Count(35, 38));
-    EXPECT_EQ(within["second elastic"].first + within["second capped"].first, 34);
-    EXPECT_EQ(within["spectra elastic"], Count(78, 80));
-    EXPECT_EQ(within["spectra capped"], Count(206, 224));
+    EXPECT_EQ(within["second elastic"].first + within["second capped"].first, 32);
+    EXPECT_EQ(within["spectra elastic"], Count(79, 80));
+    EXPECT_EQ(within["spectra capped"], Count(216, 224));
 }
 
 TEST(FittedElastoPlastic, ATableEndsWhereTheLawConductsPerfectly)

@@ -3,7 +3,7 @@
 // dimensionless form (issue 20, item 2; docs/theory.md, "The fitted elasto-plastic law";
 // docs/validation/fittedElastoPlastic.md for the data and the fit). Made dimensionless as
 // h sigma/(k_s m), the exact conductance of isotropic Gaussian surfaces is nearly one function of
-// x = P/(E' h') and c = H/(E' h') elastically (within 0.88-1.12 of this law on the four training
+// x = P/(E' h') and c = H/(E' h') elastically (within 0.84-1.16 of this law on the four training
 // spectra, x = 1e-4 to 0.1, periods of 8L at light loads); capped, it also
 // depends on the spectrum's bandwidth ratio W = m1/sqrt(m0 m2) (SpectralMoments.hpp): the plastic
 // spots cluster on the long waves of a spectrum whose heights live there. This law is that function:
@@ -32,10 +32,13 @@
 // 1 at and above x_r, and for s1 = s1_0 = 0.3. On periodic cells of 2L the exact growth from
 // x = 1e-4 to 1e-3 fell with s1 (x^0.91-0.93 rolled off, x^0.58-0.68 at s1 = 0.70-0.86) and the
 // fit gave A_s1 = -0.145; on true periods of 8L the four training spectra grow alike
-// (x^0.85-0.96), and the fit gives a slope near 0: l moves the law by less than 6 % at x = 1e-4.
-// Kept, with its fitted slope, until the held-out spectra of high s1 are solved on true periods
-// (docs/validation/fittedElastoPlastic.md, "The light-load exponent"). Without a spectrum (sigma
-// and m given alone) there is no s1 and l = 1.
+// (x^0.85-0.96) and their fit alone gives a slope near 0 (0.024). The eight spectra of
+// docs/validation/spectralShapes, solved on true periods too, want a positive one: with it, the
+// law was up to 1.29 times exact on the high-s1 ones at light loads. So A_s1 alone is fitted on
+// the twelve spectra's light loads (x <= x_r), in turn with the branches on the four until
+// neither moves (docs/validation/fittedElastoPlastic.md, "The light-load exponent"): l is 0.78
+// at s1 = 0.86 and 1.09 at s1 = 0.11 at x = 1e-4. Without a spectrum (sigma and m given alone)
+// there is no s1 and l = 1.
 //
 // Heavy loads (docs/theory.md §5.7a; docs/validation/heavyLoads.md): the growth's rate beta is
 // fitted with the other constants up to x = 0.1, the end of the engineering range; beyond it the
@@ -73,14 +76,16 @@
 // below, written by docs/validation/fitFittedElastoPlastic from the engineering range's
 // exact values (docs/validation/engineeringRange.md: x = 1e-4 to 1e-1, elastic and capped for four
 // material pairs, c = 0.03 to 0.3): a minimax of |law/exact - 1|, the elastic branch on the
-// elastic points (with A_s1), then the plastic branch and N on the capped ones, against the
+// elastic points, then the plastic branch and N on the capped ones, then A_s1 alone on the
+// light loads of these four and of the eight spectra below, in turn until settled, against the
 // report's reference (periods of 8L at x <= 1e-3, 2L up to 1e-2, L above; until 2026-11-29 the
 // light loads were periodic cells of 2L, docs/validation/engineeringRange.md, "Light loads: how
 // large a period"), on four surfaces (three
 // synthesized, the Dektak profile's spectrum); never on the X3P map, nor on a second hold-out
-// (Hurst 0.6, roll-off at L/2, h' = 0.2), nor on eight further spectra of other roll-offs and
-// Hurst exponents (docs/validation/spectralShapesReport; six of them chose W as the variable in
-// one-period solves, the constants never saw them). Measured: see
+// (Hurst 0.6, roll-off at L/2, h' = 0.2), nor on four blind spectra
+// (docs/validation/blindSpectra.md); eight further spectra of other roll-offs and Hurst exponents
+// (docs/validation/spectralShapesReport; six of them chose W as the variable in one-period
+// solves) set A_s1 alone with the four. Measured: see
 // docs/validation/fittedElastoPlastic.md (the bands are kept there and tested); beyond x = 0.1,
 // elastically, docs/validation/heavyLoads.md; on four spectra looked at only after it was fixed
 // (a blind test), docs/validation/blindSpectra.md.
@@ -94,25 +99,25 @@ namespace roughContact {
 
 /// The fitted constants (docs/validation/fittedElastoPlastic.md).
 struct FittedElastoPlasticConstants {
-    double elasticPrefactor = 0.7976; ///< C_E
-    double elasticExponent = 0.8615;  ///< A
-    double elasticGrowth = 5.3139;    ///< beta
-    double plasticPrefactor = 0.7572; ///< C_P
-    double plasticExponent = 0.5086;  ///< K
-    double blend = 1.1239;            ///< N
+    double elasticPrefactor = 0.8515; ///< C_E
+    double elasticExponent = 0.8715;  ///< A
+    double elasticGrowth = 4.5450;    ///< beta
+    double plasticPrefactor = 0.7589; ///< C_P
+    double plasticExponent = 0.5142;  ///< K
+    double blend = 1.1700;            ///< N
     double skewnessSlope = 0.0725;      ///< a_0 (docs/validation/skewnessReport fits the three)
     double skewnessSlopeLog = 0.1508;   ///< a_1
     double skewnessCurvature = -0.0143; ///< b
     double skewnessLightestLoad = 1e-3; ///< x_c's range: the loads the skewed surfaces were solved at
     double skewnessHeaviestLoad = 0.1;
     double skewnessLargest = 0.6;       ///< |s| the skewed surfaces reached: beyond, f is held at +-0.6
-    double lightLoadShareSlope = 0.0236;  ///< A_s1
+    double lightLoadShareSlope = 0.0946;  ///< A_s1
     double lightLoadSharePivot = 0.3;     ///< s1_0: l = 1 (about the middle of the training spectra's s1)
     double lightLoadEnd = 0.01;           ///< x_r: l acts below it
     double lightLoadShareLeast = 0.11;    ///< s1 the training spectra span (0.112-0.860): beyond, l is
     double lightLoadShareMost = 0.86;     ///< held at its ends
     double heavyLoadStart = 0.1;          ///< x_g: the engineering range's end; beyond it the growth's rate is beta_2(W)
-    double heavyLoadGrowth = 4.7373;      ///< B_0 (docs/validation/heavyLoadsReport fits it and B_W)
+    double heavyLoadGrowth = 4.7499;      ///< B_0 (docs/validation/heavyLoadsReport fits it and B_W)
     double heavyLoadGrowthSlope = -7.4028; ///< B_W
     double heavyLoadBandwidthPivot = 0.55; ///< beta_2 = B_0 there (about the middle of the spectra's W)
     double heavyLoadBandwidthLeast = 0.45; ///< W of the spectra solved beyond x_g (0.465-0.788): beyond,
