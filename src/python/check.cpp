@@ -119,11 +119,10 @@ void bindCheck(py::module_& m)
     // The signature's default light-load period is the core's (one place for it).
     static const std::string checkDoc =
         "check(*, surfaces, side1, side2, model='jacksonGreen', conductance='', ..., pressures=[], grid=512, "
-        "seeds=[1, 2, 3], count=4, progress=None, threads=None, mirror=None, light_load_periods=" +
-        std::to_string(SurfaceCheckOptions{}.lightLoadPeriods) +
-        "): the exact model (boundaryElement) on the user's "
+        "seeds=[1, 2, 3], count=4, progress=None, threads=None, mirror=None, light_load_periods=None): the exact model (boundaryElement) on the user's "
         "own surface (an areal map as it is, or mirror=True: mirrored about its edges into a periodic surface; a 1-D description as `seeds` surfaces of grid x grid synthesized from its "
-        "spectrum, cut at grid/8 levels, below p/(E' h') = 1e-3 on periods of light_load_periods scan lengths) at `pressures` [Pa] (at most 5) or `count` pressures across "
+        "spectrum, cut at grid/8 levels, below p/(E' h') = 1e-3 on periods of light_load_periods scan lengths, 1 to 64, None: " +
+        std::to_string(SurfaceCheckOptions{}.lightLoadPeriods) + "; refused for a map) at `pressures` [Pa] (at most 5) or `count` pressures across "
         "[min_pressure, max_pressure], within p/(E' h') 1e-4 to 1e-1; capped at H where hardness, "
         "hardness_from_yield or S_y say, elastic otherwise; every law's ratio to it. The interface's keyword "
         "arguments are ContactInterface's. progress: a callable given a line after each solve. threads: the "
@@ -137,7 +136,7 @@ void bindCheck(py::module_& m)
            std::optional<double> maxPressure, std::optional<bool> periodic, std::optional<double> hardness,
            bool hardnessFromYield, std::optional<std::string> detrend, const std::vector<double>& pressures,
            std::size_t grid, const std::vector<std::uint64_t>& seeds, std::size_t count, const py::object& progress,
-           const py::object& threads, std::optional<bool> mirror, std::size_t lightLoadPeriods) {
+           const py::object& threads, std::optional<bool> mirror, std::optional<std::uint64_t> lightLoadPeriods) {
             const InterfaceSpec spec = interfaceSpec(surfaces, side1, side2, model, conductance, microhardness, vickers,
                                                      minPressure, maxPressure, 40, std::nullopt, 1, periodic, hardness,
                                                      hardnessFromYield, 6, std::nullopt, detrend, mirror);
@@ -146,7 +145,9 @@ void bindCheck(py::module_& m)
             o.seeds = seeds;
             o.pressureCount = count;
             o.pressures = pressures;
-            o.lightLoadPeriods = lightLoadPeriods;
+            if (lightLoadPeriods) {
+                o.lightLoadPeriods = checkedLightLoadPeriods(*lightLoadPeriods, surfaces, "light_load_periods");
+            }
             if (!progress.is_none() && !PyCallable_Check(progress.ptr())) {
                 throw py::type_error("progress: expected a callable or None");
             }
@@ -170,7 +171,7 @@ void bindCheck(py::module_& m)
         py::arg("hardness") = py::none(), py::arg("hardness_from_yield") = false, py::arg("detrend") = py::none(),
         py::arg("pressures") = std::vector<double>{}, py::arg("grid") = 512,
         py::arg("seeds") = std::vector<std::uint64_t>{1, 2, 3}, py::arg("count") = 4, py::arg("progress") = py::none(),
-        py::arg("threads") = py::none(), py::arg("mirror") = py::none(), py::arg("light_load_periods") = SurfaceCheckOptions{}.lightLoadPeriods,
+        py::arg("threads") = py::none(), py::arg("mirror") = py::none(), py::arg("light_load_periods") = py::none(),
         checkDoc.c_str());
 }
 

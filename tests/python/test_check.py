@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import roughcontact as rc
-from conftest import STANDIN, STEEL
+from conftest import STANDIN, STEEL, X3P
 
 STEEL_M = rc.Material(**STEEL)
 
@@ -78,6 +78,14 @@ def test_check_refuses_what_it_cannot_check():
         rc.check(progress=3, **spec)
     with pytest.raises(rc.ParameterError, match="check pressures"):
         rc.check(count=6, **spec)
+    # light_load_periods: 1 to 64, and not for a map (checked as itself); the error names it.
+    with pytest.raises(rc.ParameterError, match="light_load_periods.*must be 1 to 64"):
+        rc.check(light_load_periods=0, **spec)
+    with pytest.raises(rc.ParameterError, match="light_load_periods.*must be 1 to 64"):
+        rc.check(light_load_periods=65, **spec)
+    areal = dict(spec, surfaces=[rc.SurfaceSpec.areal(X3P)])
+    with pytest.raises(rc.ParameterError, match="light_load_periods.*an areal map is solved as itself"):
+        rc.check(light_load_periods=2, **areal)
 
 
 def test_threads_keyword_sets_the_solves_threads():

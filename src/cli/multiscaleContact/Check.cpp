@@ -119,6 +119,11 @@ int runCheck(const Options& o)
         }
         so.gridSize = static_cast<std::size_t>(wholeNumber(o.synthesize, "--synthesize", "the grid size N"));
     }
+    if (!o.checkPeriods.empty()) {
+        so.lightLoadPeriods = checkedLightLoadPeriods(
+            wholeNumber(o.checkPeriods, "--check-periods", "the light loads' period K in scan lengths"), in.surfaces,
+            "--check-periods");
+    }
     in.minPressure = pressures.front();
     in.maxPressure = pressures.back();
     if (pressures.size() <= 5) {

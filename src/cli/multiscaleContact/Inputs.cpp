@@ -77,8 +77,7 @@ std::uint64_t wholeNumber(const std::string& text, const std::string& option, co
     const char* end = text.data() + text.size();
     const std::from_chars_result r = std::from_chars(text.data(), end, v);
     if (text.empty() || r.ptr != end || r.ec == std::errc::invalid_argument) {
-        throw ParameterError(option, "expects N[,SEED]: " + what + " must be a whole number of decimal digits, got '" +
-                                         text + "'");
+        throw ParameterError(option, what + " must be a whole number of decimal digits, got '" + text + "'");
     }
     if (r.ec == std::errc::result_out_of_range) {
         throw ParameterError(option, what + " " + text + " is beyond the largest, 2^64 - 1 = 18446744073709551615");

@@ -7,6 +7,7 @@
 #include "roughContact/interface/SurfaceCheck.hpp"
 #include "roughContact/io/Units.hpp"
 #include "roughContact/models/ModelFactory.hpp"
+#include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/Gas.hpp"
 
@@ -260,6 +261,11 @@ void addOptions(CLI::App& app, Options& o)
                  "H where --Sy, --hardness or --hardness-from-yield say, elastic otherwise. Prints every law's "
                  "ratio to the exact h_c/k_s, the closest, and whether the chosen law (--conductance-law, "
                  "default " + defaultConductanceLaw() + ") is within 25 %");
+    app.add_option("--check-periods", o.checkPeriods,
+                   "with --check on a profile or spectrum: solve its pressures below p/(E' h') = 1e-3 on "
+                   "periods of K scan lengths, 1 to " + std::to_string(roughContact::Spectrum::maximumPeriodMultiple) +
+                       " (default " + std::to_string(roughContact::SurfaceCheckOptions{}.lightLoadPeriods) +
+                       "; 1: every pressure on one scan length; docs/checking.md says what each gains)");
 
 }
 

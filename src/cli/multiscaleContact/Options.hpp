@@ -53,6 +53,7 @@ struct Options {
     int threads = 0; // --threads: the boundary-element solves' threads (0: what the machine has)
     std::string fftWisdom; // --fft-wisdom: measured FFT plans kept in this file (empty: the blocked transforms)
     bool check = false; // --check: the exact model on this surface against every law
+    std::string checkPeriods; // --check-periods K, as given: the check's light-load period (scan lengths)
     std::string table;  // --table FILE: the boundary-element table of the interface, cached in FILE
     std::optional<double> k1; // --k1, --k2 [W/(m K)]: add the column h [W/(m^2 K)]
     std::optional<double> k2;

@@ -64,6 +64,9 @@ int run(const Options& o)
             }
         }
     }
+    if (!o.checkPeriods.empty() && !o.check) {
+        throw ParameterError("--check-periods", "is the period of --check's light loads; give it with --check");
+    }
     if (o.check) {
         return runCheck(o);
     }

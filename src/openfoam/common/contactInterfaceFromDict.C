@@ -281,6 +281,10 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
             // law (SurfaceCheck.hpp); its report in the log, a warning when
             // the chosen law misses it by more than 25 %.
             roughContact::SurfaceCheckOptions options;
+            if (spec.checkPeriods)
+            {
+                options.lightLoadPeriods = *spec.checkPeriods;
+            }
             options.log = [](const std::string& line)
             {
                 Info<< "    " << line.c_str() << endl;

@@ -33,6 +33,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -757,6 +758,24 @@ TEST(Cli, PressuresErrors)
     expectError(surface + " --Eprime 2e11", {"--loads, --load-range or --pressures"});
 }
 
+namespace {
+
+// The CLI's --profile standin with the steel of `steel` (against a rigid flat) and --model
+// jacksonGreen, as checkSurface takes them (the pressures are the caller's).
+SurfaceCheckInputs standinCheckInputs()
+{
+    SurfaceCheckInputs inputs;
+    SurfaceSpec s;
+    s.kind = SurfaceSpec::Kind::profile;
+    s.file = standin;
+    inputs.surfaces = {s};
+    inputs.materials = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
+    inputs.model = "jacksonGreen";
+    return inputs;
+}
+
+} // namespace
+
 TEST(Cli, CheckIsTheLibrarysSurfaceCheck)
 {
     // --check: the report as # lines, then the library's checkSurface as CSV, on the same surface
@@ -775,13 +794,7 @@ TEST(Cli, CheckIsTheLibrarysSurfaceCheck)
     for (std::string line; std::getline(in, line);) {
         (line.rfind("# ", 0) == 0 ? report : csvText) += line + "\n";
     }
-    SurfaceCheckInputs inputs;
-    SurfaceSpec s;
-    s.kind = SurfaceSpec::Kind::profile;
-    s.file = standin;
-    inputs.surfaces = {s};
-    inputs.materials = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
-    inputs.model = "jacksonGreen";
+    SurfaceCheckInputs inputs = standinCheckInputs();
     inputs.minPressure = pressures[0];
     inputs.maxPressure = pressures[1];
     SurfaceCheckOptions options;
@@ -798,6 +811,60 @@ TEST(Cli, CheckIsTheLibrarysSurfaceCheck)
     expectError("--profile '" + standin + "' --model persson" + steel + " --check --loads 1e-4", {"--check", "multi-scale"});
     expectError(p + " --loads 1e-12", {"none of the pressures given lies in the checked range"});
     expectError(p + " --synthesize 32,4 --loads 1e-4", {"--synthesize", "grid size N only"});
+    expectError(p + " --check-periods 0 --loads 1e-4", {"--check-periods", "must be 1 to 64"});
+    expectError(p + " --check-periods 65 --loads 1e-4", {"--check-periods", "must be 1 to 64"});
+    expectError(p + " --check-periods -1 --loads 1e-4", {"--check-periods", "whole number of decimal digits, got '-1'"});
+    expectError(p + " --check-periods 2x --loads 1e-4", {"--check-periods", "whole number of decimal digits, got '2x'"});
+    expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --check-periods 2 --loads 1e-4",
+                {"--check-periods", "give it with --check"});
+}
+
+TEST(Cli, CheckPeriodsSetsTheLightLoadPeriodAsTheLibrarysOption)
+{
+    // --check-periods K is SurfaceCheckOptions::lightLoadPeriods: at a light pressure (below
+    // p/(E' h') = 1e-3) the CLI's check on K = 1 and K = 2 is the library's with that option, and
+    // the two differ (another period is another surface), so the option reaches the solve.
+    const double Ep = 179.52e9 / (1 - 0.32 * 0.32);
+    SurfaceCheckInputs inputs = standinCheckInputs();
+    inputs.minPressure = 1e-9 * Ep;
+    inputs.maxPressure = 1e-3 * Ep;
+    const double h = checkSurface(inputs, [] {
+                         SurfaceCheckOptions o;
+                         o.gridSize = 32; // h' of the surface the check solves: cut at 32/8 levels
+                         o.seeds = {1};
+                         o.pressureCount = 1;
+                         return o;
+                     }()).gradient;
+    std::ostringstream given;
+    given.precision(17);
+    given << 3e-4 * Ep * h;
+    std::map<std::size_t, std::string> csvOf;
+    for (const std::size_t k : {1U, 2U}) {
+        const CommandResult r = run("--profile '" + standin + "' --model jacksonGreen" + steel +
+                                    " --synthesize 32 --check --check-periods " + std::to_string(k) +
+                                    " --pressures " + given.str());
+        ASSERT_EQ(r.status, 0) << r.err;
+        std::istringstream in(r.out);
+        std::string csvText;
+        for (std::string line; std::getline(in, line);) {
+            if (line.rfind("# ", 0) != 0) {
+                csvText += line + "\n";
+            }
+        }
+        SurfaceCheckOptions options;
+        options.gridSize = 32;
+        options.pressures = {std::stod(given.str())};
+        options.lightLoadPeriods = k;
+        inputs.minPressure = inputs.maxPressure = options.pressures[0];
+        const SurfaceCheck c = checkSurface(inputs, options);
+        ASSERT_EQ(c.lightLoadPeriods, k) << c.report();
+        EXPECT_EQ(csvText, c.csv());
+        csvOf[k] = csvText;
+    }
+    EXPECT_NE(csvOf[1], csvOf[2]);
+    expectError("--areal '" + std::string(ROUGHCONTACT_SOURCE_DIR) + "/data/x3p-2.x3p' --model jacksonGreen" + steel +
+                    " --check --check-periods 2 --loads 1e-4",
+                {"--check-periods", "an areal map is solved as itself"});
 }
 
 TEST(Cli, ConductivitiesGiveTheConductanceInWattsPerSquareMetreKelvin)

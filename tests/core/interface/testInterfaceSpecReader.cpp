@@ -421,6 +421,29 @@ TEST(InterfaceSpecReader, ValuesOfTheWrongKindAreNamed)
     EXPECT_TRUE(readInterfaceSpec(f).check);
 }
 
+TEST(InterfaceSpecReader, CheckPeriodsIsTheChecksLightLoadPeriodOfAProfileOrSpectrum)
+{
+    // checkPeriods K: unset by default (the check's own default then), K with check yes on a
+    // 1-D surface; without check, outside 1 to 64, or on an areal map (solved as itself) an error
+    // naming the entry.
+    SpecValues c = contact();
+    c.set("check", true);
+    EXPECT_FALSE(readInterfaceSpec(c).checkPeriods);
+    c.set("checkPeriods", std::uint64_t(8));
+    EXPECT_EQ(readInterfaceSpec(c).checkPeriods, std::optional<std::size_t>(8));
+    c.set("checkPeriods", std::uint64_t(0));
+    EXPECT_NE(messageOf([&] { readInterfaceSpec(c); }, "--checkPeriods").find("must be 1 to 64"), std::string::npos);
+    c.set("checkPeriods", std::uint64_t(65));
+    messageOf([&] { readInterfaceSpec(c); }, "--checkPeriods");
+    c.set("checkPeriods", std::uint64_t(2)).set("check", false);
+    EXPECT_NE(messageOf([&] { readInterfaceSpec(c); }, "--checkPeriods").find("needs check yes"), std::string::npos);
+    SpecValues areal("surface", dashed);
+    areal.set("type", std::string("areal")).set("file", std::string("m.x3p"));
+    c.set("check", true).set("surface", sub(areal));
+    EXPECT_NE(messageOf([&] { readInterfaceSpec(c); }, "--checkPeriods").find("an areal map is solved as itself"),
+              std::string::npos);
+}
+
 // A source that can say where an entry is written (as a dictionary gives its line).
 class LocatingValues final : public SpecSource {
 public:

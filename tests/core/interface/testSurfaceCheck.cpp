@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -283,6 +284,12 @@ TEST(SurfaceCheck, ALongSpectrumIsCheckedOnTheLongerPeriodToo)
     const std::size_t k = SurfaceCheckOptions{}.lightLoadPeriods;
     EXPECT_EQ(light.lightLoadPeriods, k);
     EXPECT_EQ(light.lightLevelsKept, 3U); // j/(4L) from 2/(4L) to 4/(4L)
+    // Every pressure light: no surface of one scan length was solved, and the report does not say
+    // how many of its levels it held (it says the longer period's).
+    EXPECT_EQ(light.onePeriodPressures, 0U);
+    EXPECT_EQ(light.report().find("longest levels of 600000"), std::string::npos) << light.report();
+    EXPECT_NE(light.report().find("the surface's 3 longest levels on that period"), std::string::npos)
+        << light.report();
     const Spectrum cut2 =
         spec.surfaces[0].spectrum().truncated(10.0 / 1e-3).onPeriod(k).truncated(4.0 / (double(k) * 1e-3) * (1 + 1e-9));
     BoundaryElementOptions bo;
@@ -291,6 +298,34 @@ TEST(SurfaceCheck, ALongSpectrumIsCheckedOnTheLongerPeriodToo)
                          .curve({light.pressures[0] / light.reducedModulus})[0]
                          .conductancePerConductivity;
     EXPECT_NEAR(light.exactHPerK[0], h, 1e-12 * h);
+}
+
+TEST(SurfaceCheck, APressureJustOutsideTheRangeIsToldApartFromItsEnd)
+{
+    // A pressure asked for a millionth below the checked range's lowest end (a load typed at
+    // p/(E' h') = 1e-4 with h' rounded) is dropped, and the report prints it with the digits
+    // that tell it from that end (at 4 digits the two would read alike).
+    SurfaceCheckOptions o = small();
+    o.seeds = {1};
+    o.pressureCount = 1;
+    const SurfaceCheck c = checkSurface(powerLawSpec(false), o);
+    const double end = c.lowestCheckable;
+    o.pressures = {end * (1 - 1e-6), end * 2};
+    const SurfaceCheck d = checkSurface(powerLawSpec(false), o);
+    ASSERT_EQ(d.dropped.size(), 1U);
+    const std::string text = d.report();
+    const std::size_t at = text.find("not checked: ");
+    ASSERT_NE(at, std::string::npos) << text;
+    const std::string line = text.substr(at, text.find('\n', at) - at);
+    std::istringstream words(line.substr(std::string("not checked: ").size()));
+    std::string dropped;
+    words >> dropped;
+    const std::size_t from = line.find("checked range ") + std::string("checked range ").size();
+    const std::string lowest = line.substr(from, line.find(' ', from) - from);
+    EXPECT_NE(dropped, lowest) << line;
+    EXPECT_LT(std::stod(dropped), std::stod(lowest)) << line;
+    // As many digits as tell the two apart: here 7, so within 1e-6 of the pressure asked.
+    EXPECT_NEAR(std::stod(dropped), end * (1 - 1e-6), 1e-6 * end) << line;
 }
 
 TEST(SurfaceCheck, RefusesWhatItCannotCheck)

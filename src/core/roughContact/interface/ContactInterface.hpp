@@ -115,6 +115,10 @@ struct InterfaceSpec {
     /// Front-ends: check the laws on this surface at start-up (checkSurface, SurfaceCheck.hpp)
     /// and warn when the chosen one misses the exact model. ContactInterface does not use it.
     bool check = false;
+    /// Front-ends, with check on a profile or spectrum: its pressures below p/(E' h') = 1e-3
+    /// are solved on periods of this many scan lengths (SurfaceCheckOptions::lightLoadPeriods);
+    /// unset: that option's default. ContactInterface does not use it.
+    std::optional<std::size_t> checkPeriods;
     /// Front-ends: the threads of the boundary-element solves of this entry's table and check
     /// (setThreads, parallel/Threads.hpp); unset: the front-end's default (the condition: 1 in a
     /// parallel run, where every core has a rank, else what the machine has). ContactInterface

@@ -7,6 +7,7 @@
 #include "roughContact/io/Units.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/RoughnessSpectrum.hpp"
+#include "roughContact/interface/SurfaceCheck.hpp"
 #include "roughContact/thermal/Gas.hpp"
 
 #include <algorithm>
@@ -164,8 +165,8 @@ const std::vector<std::string>& interfaceEntries()
     static const std::vector<std::string> names{
         "model",     "surface",        "surfaces",  "side1",    "side2",   "conductance",     "microhardness",
         "vickers",   "minPressure",    "maxPressure", "pointsPerDecade", "synthesize", "seed", "periodic",
-        "mirror",    "detrend",   "hardness",       "hardnessFromYield", "gap", "check", "threads",
-        "tableRanks"};
+        "mirror",    "detrend",   "hardness",       "hardnessFromYield", "gap", "check", "checkPeriods",
+        "threads",   "tableRanks"};
     return names;
 }
 
@@ -435,6 +436,14 @@ void readInterfaceSettings(const SpecSource& source, InterfaceSpec& spec)
     }
     if (source.has("check")) {
         spec.check = source.flag("check");
+    }
+    if (source.has("checkPeriods")) {
+        if (!spec.check) {
+            throw ParameterError(source.name("checkPeriods"), "is the period of the check's light loads; it needs "
+                                                              "check yes");
+        }
+        spec.checkPeriods =
+            checkedLightLoadPeriods(source.whole("checkPeriods"), spec.surfaces, source.name("checkPeriods"));
     }
     if (source.has("threads")) {
         const std::uint64_t t = source.whole("threads");

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <iomanip>
 #include <memory>
+#include <limits>
 #include <sstream>
 
 namespace roughContact {
@@ -38,6 +39,22 @@ std::string number(double v)
 }
 
 } // namespace
+
+std::size_t checkedLightLoadPeriods(std::uint64_t periods, const std::vector<SurfaceSpec>& surfaces,
+                                    const std::string& name)
+{
+    for (const SurfaceSpec& s : surfaces) {
+        if (s.kind == SurfaceSpec::Kind::areal) {
+            throw ParameterError(name, "is for a profile or spectrum, whose surfaces the check synthesizes; an "
+                                       "areal map is solved as itself");
+        }
+    }
+    if (periods < 1 || periods > Spectrum::maximumPeriodMultiple) {
+        throw ParameterError(name, "must be 1 to " + std::to_string(Spectrum::maximumPeriodMultiple) +
+                                       " scan lengths, got " + std::to_string(periods));
+    }
+    return static_cast<std::size_t>(periods);
+}
 
 const CheckedLaw& SurfaceCheck::chosen() const
 {
@@ -66,7 +83,7 @@ std::string SurfaceCheck::report() const
     std::ostringstream os;
     os << "check of the surface: " << surface << "; " << regime << ", E' = " << number(reducedModulus)
        << " Pa, h' = " << number(gradient) << "\n";
-    if (levelsKept < levelsGiven) {
+    if (levelsKept < levelsGiven && onePeriodPressures > 0) {
         os << "  the check holds the surface's " << levelsKept << " longest levels of " << levelsGiven
            << " (the finest a " << "grid resolves with 8 cells a wavelength); the laws are held to "
               "the exact answer on that surface\n";
@@ -77,11 +94,35 @@ std::string SurfaceCheck::report() const
            << " longest levels on that period (wavelengths down to 8 cells), the laws held to them there\n";
     }
     if (!dropped.empty()) {
+        // With as many digits as it takes to tell each dropped pressure from the range's ends (a
+        // load typed at an end, such as p/(E' h') = 1e-4 with h' rounded, falls just outside).
+        int digits = 4;
+        const auto apart = [&](int d) {
+            const auto text = [d](double v) {
+                std::ostringstream t;
+                t << std::setprecision(d) << v;
+                return t.str();
+            };
+            for (double P : dropped) {
+                if (text(P) == text(lowestCheckable) || text(P) == text(highestCheckable)) {
+                    return false;
+                }
+            }
+            return true;
+        };
+        while (digits < std::numeric_limits<double>::max_digits10 && !apart(digits)) {
+            ++digits;
+        }
+        const auto shown = [digits](double v) {
+            std::ostringstream t;
+            t << std::setprecision(digits) << v;
+            return t.str();
+        };
         os << "  not checked:";
         for (double P : dropped) {
-            os << " " << number(P);
+            os << " " << shown(P);
         }
-        os << " Pa (outside the checked range " << number(lowestCheckable) << " to " << number(highestCheckable)
+        os << " Pa (outside the checked range " << shown(lowestCheckable) << " to " << shown(highestCheckable)
            << " Pa: p/(E' h') within [1e-4, 1e-1]" << (hardness ? ", at most 0.9 H" : "") << ")\n";
     }
     const std::size_t width = 13;
@@ -354,6 +395,7 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
         parts[0].at.insert(parts[0].at.end(), light.begin(), light.end());
         std::sort(parts[0].at.begin(), parts[0].at.end());
     }
+    out.onePeriodPressures = parts[0].at.size();
     if (parts[0].at.empty()) {
         parts.erase(parts.begin());
     }
@@ -443,8 +485,10 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     std::vector<double> areaSum(count, 0.0);
     out.exactHPerKLow.assign(count, std::numeric_limits<double>::infinity());
     out.exactHPerKHigh.assign(count, 0.0);
-    log("check: the exact model on " + out.surface + ", " + out.regime + ", at " + std::to_string(count) +
-        " pressures from " + number(out.pressures.front()) + " to " + number(out.pressures.back()) + " Pa");
+    log("check: the exact model on " + out.surface + ", " + out.regime + ", at " +
+        (count == 1 ? "1 pressure, " + number(out.pressures.front()) + " Pa"
+                    : std::to_string(count) + " pressures from " + number(out.pressures.front()) + " to " +
+                          number(out.pressures.back()) + " Pa"));
     const auto seconds = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };

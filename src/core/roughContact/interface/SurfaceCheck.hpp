@@ -90,6 +90,9 @@ struct SurfaceCheck {
     /// none solved on a longer one), and the levels of the spectrum on it that the check holds.
     std::size_t lightLoadPeriods = 1;
     std::size_t lightLevelsKept = 0;
+    /// How many of the pressures were solved on one scan length (levelsKept's surface): all of a
+    /// map's, none where every one is light and solved on the longer period.
+    std::size_t onePeriodPressures = 0;
     std::vector<double> pressures;       ///< [Pa]
     /// Pressures asked for (SurfaceCheckOptions::pressures) outside the checked range [Pa].
     std::vector<double> dropped;
@@ -123,6 +126,14 @@ struct SurfaceCheck {
     /// exact area and h_c/k_s (with the spread), one ratio_NAME column per law that could be built.
     std::string csv() const;
 };
+
+/// A light-load period asked for by a front-end (the CLI's --check-periods, the contact entry's
+/// checkPeriods, Python's light_load_periods; `name` is how it names it): 1 to
+/// Spectrum::maximumPeriodMultiple scan lengths, and only for surfaces the check synthesizes (a
+/// profile, spectrum, power law or fractal; an areal map is solved as itself). Returns it;
+/// ParameterError(name) otherwise.
+std::size_t checkedLightLoadPeriods(std::uint64_t periods, const std::vector<SurfaceSpec>& surfaces,
+                                    const std::string& name);
 
 /// What a check needs: the surfaces, the materials, the area model and the law, and the
 /// range it is asked over (SurfaceCheck.hpp; an InterfaceSpec gives these, the CLI its options).
