@@ -3,11 +3,11 @@
 
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
+#include "roughContact/interface/SurfaceCheck.hpp"
 #include "roughContact/io/Numbers.hpp"
 #include "roughContact/io/Units.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/RoughnessSpectrum.hpp"
-#include "roughContact/interface/SurfaceCheck.hpp"
 #include "roughContact/thermal/Gas.hpp"
 
 #include <algorithm>

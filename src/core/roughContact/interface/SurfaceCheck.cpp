@@ -17,8 +17,8 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
-#include <memory>
 #include <limits>
+#include <memory>
 #include <sstream>
 
 namespace roughContact {
@@ -31,11 +31,27 @@ constexpr double heaviestLoadPerGradient = 1e-1;
 /// Capped: the heaviest checked pressure, as a fraction of H (at H every point flows).
 constexpr double heaviestPerHardness = 0.9;
 
-std::string number(double v)
+// v with d significant digits.
+std::string withDigits(double v, int d)
 {
     std::ostringstream os;
-    os << std::setprecision(4) << v;
+    os << std::setprecision(d) << v;
     return os.str();
+}
+
+std::string number(double v)
+{
+    return withDigits(v, 4);
+}
+
+// The light-load period's range, 1 to Spectrum::maximumPeriodMultiple scan lengths (the one place
+// of the rule: the front-ends' checkedLightLoadPeriods and checkSurface's own options).
+void requireLightLoadPeriods(std::uint64_t periods, const std::string& name)
+{
+    if (periods < 1 || periods > Spectrum::maximumPeriodMultiple) {
+        throw ParameterError(name, "must be 1 to " + std::to_string(Spectrum::maximumPeriodMultiple) +
+                                       " scan lengths, got " + std::to_string(periods));
+    }
 }
 
 } // namespace
@@ -49,10 +65,7 @@ std::size_t checkedLightLoadPeriods(std::uint64_t periods, const std::vector<Sur
                                        "areal map is solved as itself");
         }
     }
-    if (periods < 1 || periods > Spectrum::maximumPeriodMultiple) {
-        throw ParameterError(name, "must be 1 to " + std::to_string(Spectrum::maximumPeriodMultiple) +
-                                       " scan lengths, got " + std::to_string(periods));
-    }
+    requireLightLoadPeriods(periods, name);
     return static_cast<std::size_t>(periods);
 }
 
@@ -96,33 +109,25 @@ std::string SurfaceCheck::report() const
     if (!dropped.empty()) {
         // With as many digits as it takes to tell each dropped pressure from the range's ends (a
         // load typed at an end, such as p/(E' h') = 1e-4 with h' rounded, falls just outside).
-        int digits = 4;
         const auto apart = [&](int d) {
-            const auto text = [d](double v) {
-                std::ostringstream t;
-                t << std::setprecision(d) << v;
-                return t.str();
-            };
             for (double P : dropped) {
-                if (text(P) == text(lowestCheckable) || text(P) == text(highestCheckable)) {
+                const std::string p = withDigits(P, d);
+                if (p == withDigits(lowestCheckable, d) || p == withDigits(highestCheckable, d)) {
                     return false;
                 }
             }
             return true;
         };
+        int digits = 4; // number()'s
         while (digits < std::numeric_limits<double>::max_digits10 && !apart(digits)) {
             ++digits;
         }
-        const auto shown = [digits](double v) {
-            std::ostringstream t;
-            t << std::setprecision(digits) << v;
-            return t.str();
-        };
         os << "  not checked:";
         for (double P : dropped) {
-            os << " " << shown(P);
+            os << " " << withDigits(P, digits);
         }
-        os << " Pa (outside the checked range " << shown(lowestCheckable) << " to " << shown(highestCheckable)
+        os << " Pa (outside the checked range " << withDigits(lowestCheckable, digits) << " to "
+           << withDigits(highestCheckable, digits)
            << " Pa: p/(E' h') within [1e-4, 1e-1]" << (hardness ? ", at most 0.9 H" : "") << ")\n";
     }
     const std::size_t width = 13;
@@ -310,11 +315,7 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
                                            "periodic already");
         }
         limits::requireSynthesisSize("check grid", n);
-        if (options.lightLoadPeriods < 1 || options.lightLoadPeriods > Spectrum::maximumPeriodMultiple) {
-            throw ParameterError("check light-load periods",
-                                 "1 to " + std::to_string(Spectrum::maximumPeriodMultiple) + " scan lengths, not " +
-                                     std::to_string(options.lightLoadPeriods));
-        }
+        requireLightLoadPeriods(options.lightLoadPeriods, "check light-load periods");
         parts.push_back({cut(given), {}, {}});
     }
     out.levelsKept = parts[0].lawSpectrum.size();
