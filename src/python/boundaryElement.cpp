@@ -3,7 +3,7 @@
 // against a flat (its progress reports, area_fraction and the curve).
 #include <pybind11/pybind11.h>
 
-#include "doubleCaster.hpp" // first after pybind11.h: see there
+#include "numberCasters.hpp" // first after pybind11.h: see there
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>

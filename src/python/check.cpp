@@ -3,7 +3,7 @@
 // keyword arguments and the check's own, and returns a SurfaceCheck.
 #include <pybind11/pybind11.h>
 
-#include "doubleCaster.hpp" // first after pybind11.h: see there
+#include "numberCasters.hpp" // first after pybind11.h: see there
 
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
@@ -40,9 +40,15 @@ void bindCheck(py::module_& m)
         .def_readonly("levels_kept", &SurfaceCheck::levelsKept, "Levels of the spectrum in the check.")
         .def_readonly("levels_given", &SurfaceCheck::levelsGiven, "Levels of the spectrum given.")
         .def_readonly("light_load_periods", &SurfaceCheck::lightLoadPeriods,
-                      "The period [scan lengths] of the pressures below p/(E' h') = 1e-3 (1: none on a longer one).")
+                      "The period [scan lengths] of the pressures up to p/(E' h') = 1e-3 (1: none on a longer one).")
         .def_readonly("light_levels_kept", &SurfaceCheck::lightLevelsKept,
                       "Levels of the spectrum on that period in the check (0: none).")
+        .def_readonly("light_levels_of_given", &SurfaceCheck::lightLevelsOfGiven,
+                      "Levels of the spectrum given that the longer period's surfaces hold (0: none solved).")
+        .def_property_readonly(
+            "long_period_weights", [](const SurfaceCheck& c) { return toArray(c.longPeriodWeights); },
+            "Each pressure's weight of the longer period: 1 up to p/(E' h') = 1e-3, 0 from 1e-2, falling "
+            "log-linearly between (the two joined there).")
         .def_property_readonly("pressures", [](const SurfaceCheck& c) { return toArray(c.pressures); },
                                "The checked pressures [Pa].")
         .def_property_readonly("dropped", [](const SurfaceCheck& c) { return toArray(c.dropped); },
@@ -87,7 +93,7 @@ void bindCheck(py::module_& m)
                       "A map solved padded near complete contact: that its exact h_c (and the ratios) are not "
                       "to be trusted at some pressures, and to solve it mirrored; empty otherwise.")
         .def_readonly("small_cell_note", &SurfaceCheck::smallCellNote,
-                      "A profile or spectrum checked below p/(E' h') = 1e-3: that its exact answer there is a "
+                      "A profile or spectrum checked where the longer period takes part (below p/(E' h') = 1e-2): that its exact answer there is a "
                       "small periodic cell's, which may be too high for a large joint; empty otherwise (and for a map).")
         .def_readonly("seconds", &SurfaceCheck::seconds, "How long the check took [s].")
         .def("report", &SurfaceCheck::report, "The table a terminal or a log shows.")
@@ -121,8 +127,9 @@ void bindCheck(py::module_& m)
         "check(*, surfaces, side1, side2, model='jacksonGreen', conductance='', ..., pressures=[], grid=512, "
         "seeds=[1, 2, 3], count=4, progress=None, threads=None, mirror=None, light_load_periods=None): the exact model (boundaryElement) on the user's "
         "own surface (an areal map as it is, or mirror=True: mirrored about its edges into a periodic surface; a 1-D description as `seeds` surfaces of grid x grid synthesized from its "
-        "spectrum, cut at grid/8 levels, below p/(E' h') = 1e-3 on periods of light_load_periods scan lengths, 1 to 64, None: " +
-        std::to_string(SurfaceCheckOptions{}.lightLoadPeriods) + "; refused for a map) at `pressures` [Pa] (at most 5) or `count` pressures across "
+        "spectrum, cut at grid/8 levels, up to p/(E' h') = 1e-3 on periods of light_load_periods scan lengths, 1 to 64, None: " +
+        std::to_string(SurfaceCheckOptions{}.lightLoadPeriods) + "; refused for a map; joined with one scan length's up to 1e-2; "
+        "each surface holding at least 4 of the spectrum's levels) at `pressures` [Pa] (at most 5) or `count` pressures across "
         "[min_pressure, max_pressure], within p/(E' h') 1e-4 to 1e-1; capped at H where hardness, "
         "hardness_from_yield or S_y say, elastic otherwise; every law's ratio to it. The interface's keyword "
         "arguments are ContactInterface's. progress: a callable given a line after each solve. threads: the "
@@ -141,6 +148,7 @@ void bindCheck(py::module_& m)
                                                      minPressure, maxPressure, 40, std::nullopt, 1, periodic, hardness,
                                                      hardnessFromYield, 6, std::nullopt, detrend, mirror);
             SurfaceCheckOptions o;
+            o.names = {"grid", "seeds", "pressures", "light_load_periods"};
             o.gridSize = grid;
             o.seeds = seeds;
             o.pressureCount = count;

@@ -3,7 +3,7 @@
 // ContactInterface, the pressure table a boundary condition interpolates, with its gap.
 #include <pybind11/pybind11.h>
 
-#include "doubleCaster.hpp" // first after pybind11.h: see there
+#include "numberCasters.hpp" // first after pybind11.h: see there
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -236,6 +236,9 @@ void bindInterface(py::module_& m)
                      interfaceSpec(surfaces, side1, side2, model, conductance, microhardness, vickers, minPressure,
                                    maxPressure, pointsPerDecade, synthesize, seed, periodic, hardness,
                                    hardnessFromYield, bemPointsPerDecade, gap, detrend, mirror);
+                 if (tableFile && tableFile->empty()) {
+                     throw ParameterError("table_file", "is empty: give the table's file name (None: no file)");
+                 }
                  if (tableFile && s.model != "boundaryElement") {
                      throw ParameterError("table_file", "is the cache of model 'boundaryElement', not of '" +
                                                             s.model + "'");

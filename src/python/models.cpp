@@ -3,7 +3,7 @@
 // names and Model (A_r/A_n at a pressure; persson's separation and conductance).
 #include <pybind11/pybind11.h>
 
-#include "doubleCaster.hpp" // first after pybind11.h: see there
+#include "numberCasters.hpp" // first after pybind11.h: see there
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>

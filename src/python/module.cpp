@@ -9,10 +9,10 @@
 // function per topic (bindings.hpp), called in the order the module has always bound them:
 // surfaces.cpp, models.cpp (materials, then models), boundaryElement.cpp, thermal.cpp (laws,
 // gases, the gap, GapSpec), interface.cpp. convert.hpp holds the shared conversions,
-// doubleCaster.hpp the caster of double that every file of the module includes first.
+// numberCasters.hpp the caster of double that every file of the module includes first.
 #include <pybind11/pybind11.h>
 
-#include "doubleCaster.hpp" // first after pybind11.h: see there
+#include "numberCasters.hpp" // first after pybind11.h: see there
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -58,12 +58,13 @@ PYBIND11_MODULE(roughcontact, m)
     m.def("set_threads", &setThreads, py::arg("n"),
           "Threads of the boundary-element solves (FFTW's and the solvers' loops), for the whole "
           "process: BoundaryElement, check() and ContactInterface's boundaryElement tables made after "
-          "it. Default: what the machine has. The answers are the same for any number, bit for bit.");
+          "it. Default: the processors the process may run on, and never more of them than that (more cannot "
+          "help). The answers are the same for any number, bit for bit.");
     m.def("threads", &threads, "The threads the boundary-element solves use (set_threads).");
     m.def("set_fft_wisdom", &setFftWisdom, py::arg("path"),
           "Plan the boundary-element FFTs by timing them (FFTW_MEASURE) and keep the plans in the file "
-          "`path` (created when missing): runs sharing it use the same plans and give the same answer bit for "
-          "bit. '' (the default): the blocked transforms, planned without timing runs, the same answer on "
+          "`path` (created when missing; a file there must be FFTW wisdom): runs sharing it with the same "
+          "threads use the same plans and give the same answer bit for bit. '' (the default): the blocked transforms, planned without timing runs, the same answer on "
           "every run and for any number of threads.");
 
     // ---- errors

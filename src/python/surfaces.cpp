@@ -3,7 +3,7 @@
 // synthesis of an areal surface from a spectrum, SurfaceRoughness and the roughness functions.
 #include <pybind11/pybind11.h>
 
-#include "doubleCaster.hpp" // first after pybind11.h: see there
+#include "numberCasters.hpp" // first after pybind11.h: see there
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>

@@ -4,7 +4,7 @@
 // (docs/theory.md, "Gap conductance") and what a ContactInterface has in its gap (GapSpec).
 #include <pybind11/pybind11.h>
 
-#include "doubleCaster.hpp" // first after pybind11.h: see there
+#include "numberCasters.hpp" // first after pybind11.h: see there
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>

@@ -26,30 +26,33 @@ def test_check_is_the_clis(cli):
     Ep = rc.ContactMaterials.pair(STEEL_M, STEEL_M).reduced_modulus
     pressures = [2e-4 * Ep * 0.02, 2e-3 * Ep * 0.02]
     lines = []
-    c = rc.check(surfaces=[rc.SurfaceSpec.profile(STANDIN)], side1=STEEL_M, side2=STEEL_M, grid=32,
+    c = rc.check(surfaces=[rc.SurfaceSpec.profile(STANDIN)], side1=STEEL_M, side2=STEEL_M, grid=128,
                  pressures=pressures, progress=lines.append)
-    cli_numbers = cli_check(cli, "--synthesize", "32", "--pressures", ",".join(repr(p) for p in pressures),
+    cli_numbers = cli_check(cli, "--synthesize", "128", "--pressures", ",".join(repr(p) for p in pressures),
                             "--E", "179.52e9,179.52e9", "--nu", "0.32,0.32", "--Sy", "0.2e9,0.2e9")
     np.testing.assert_array_equal(c.pressures, cli_numbers["nominal_pressure"])
     np.testing.assert_array_equal(c.exact, cli_numbers["h_per_k_exact"])
     np.testing.assert_array_equal(c.exact_area, cli_numbers["area_exact"])
     for law, ratio in c.ratios.items():
         np.testing.assert_array_equal(ratio, cli_numbers["ratio_" + law])
-    # Capped at 2.84 S_y (the materials yield), three seeds of 32^2, a progress line per solve.
+    # Capped at 2.84 S_y (the materials yield), three seeds of 128^2, a progress line per solve.
     assert c.hardness == pytest.approx(2.84 * 0.2e9, rel=1e-15)
-    assert c.surface.startswith("3 seeds of 32 x 32")
-    # The light pressure on periods of four scan lengths (the default), the other on one: 3 + 3 surfaces.
-    assert c.light_load_periods == 4 and c.light_levels_kept == 3  # j/(4L) from 2/(4L) to 4/(4L)
-    assert len(lines) == 1 + 3 * 2 and lines[-1].startswith("check: surface 6 of 6, pressure 1 of 1")
+    assert c.surface.startswith("3 seeds of 128 x 128")
+    # The light pressure on periods of four scan lengths (the default), the other where the periods
+    # join, on both: 3 surfaces of one scan length with one pressure, 3 of 4L with two.
+    assert c.light_load_periods == 4 and c.light_levels_kept == 15  # j/(4L) from 2/(4L) to 16/(4L)
+    assert c.light_levels_of_given == 4
+    assert c.long_period_weights[0] == 1 and 0 < c.long_period_weights[1] < 1
+    assert len(lines) == 1 + 3 * 1 + 3 * 2 and lines[-1].startswith("check: surface 6 of 6, pressure 2 of 2")
     assert c.chosen_law == rc.default_conductance_law()
     assert c.closest_law in c.ratios
     assert "closest: " + c.closest_law in c.report()
     assert np.all(c.exact_low <= c.exact) and np.all(c.exact <= c.exact_high)
     assert c.exact_warning == ""  # synthesized surfaces are periodic: no patch correction
-    # Below p/(E' h') = 1e-3 the exact answer is a periodic cell's (four scan lengths): the check says so.
+    # Up to p/(E' h') = 1e-3 the exact answer is a periodic cell's (four scan lengths): the check says so.
     light = sum(p < 1e-3 * Ep * c.gradient for p in c.pressures)
     assert light == 1, c.gradient
-    assert f"({light} of the checked pressures" in c.small_cell_note
+    assert "a periodic cell 4 scan lengths on a side" in c.small_cell_note
     assert "note: " + c.small_cell_note in c.report()
 
 
@@ -76,8 +79,26 @@ def test_check_refuses_what_it_cannot_check():
         rc.check(pressures=[1.0], **spec)
     with pytest.raises(TypeError, match="progress: expected a callable"):
         rc.check(progress=3, **spec)
-    with pytest.raises(rc.ParameterError, match="check pressures"):
+    with pytest.raises(rc.ParameterError, match="^pressures: check 1 to 5 pressures"):
         rc.check(count=6, **spec)
+    # Issue 49, item 13: six pressures, a NaN and a seed given twice are refused as such.
+    with pytest.raises(rc.ParameterError, match="^pressures: the check solves at most 5 pressures, 6 were given"):
+        rc.check(pressures=[1e6, 2e6, 3e6, 4e6, 5e6, 6e6], **spec)
+    with pytest.raises(rc.ParameterError, match=r"^pressures: a pressure is nan \(not a number\)"):
+        rc.check(pressures=[1e6, float("nan")], **spec)
+    with pytest.raises(rc.ParameterError, match="^seeds: seed 1 is given twice"):
+        rc.check(seeds=[1, 1, 1], **spec)
+    # Issue 49, item 10: a grid that keeps fewer than 4 of the surface's levels, named as Python names it.
+    with pytest.raises(rc.ParameterError, match="^grid: the check's surfaces would hold 1 of the surface's"):
+        rc.check(**dict(spec, grid=8))
+    with pytest.raises(rc.ParameterError, match="^light_load_periods: .* or a shorter light-load period "
+                                                r"\(light_load_periods\)"):
+        rc.check(light_load_periods=32, **spec)
+    # Issue 49, item 15: True is not a whole number (it was taken as 1).
+    with pytest.raises(TypeError):
+        rc.check(count=True, **spec)
+    with pytest.raises(TypeError):
+        rc.check(seeds=[True, 2], **spec)
     # light_load_periods: 1 to 64, and not for a map (checked as itself); the error names it.
     with pytest.raises(rc.ParameterError, match="light_load_periods.*must be 1 to 64"):
         rc.check(light_load_periods=0, **spec)
@@ -95,8 +116,8 @@ def test_threads_keyword_sets_the_solves_threads():
     before = rc.threads()
     try:
         rc.set_threads(2)
-        two = rc.check(grid=32, seeds=[1], count=2, **spec)
-        one = rc.check(grid=32, seeds=[1], count=2, threads=1, **spec)
+        two = rc.check(grid=32, seeds=[1], count=2, light_load_periods=1, **spec)
+        one = rc.check(grid=32, seeds=[1], count=2, light_load_periods=1, threads=1, **spec)
         assert rc.threads() == 1
         np.testing.assert_array_equal(one.exact, two.exact)
         rc.ContactInterface(model="boundaryElement", synthesize=16, min_pressure=1e7, max_pressure=1e8,

@@ -21,8 +21,8 @@ def test_missing_file(tmp_path, cli):
     with pytest.raises(rc.InputError) as e:
         rc.read_profile(path)
     # InputError(path, 0, ...): "FILE: message" (no line).
-    assert str(e.value) == path + ": cannot open the file for reading"
-    assert (e.value.file, e.value.line, e.value.message) == (path, 0, "cannot open the file for reading")
+    assert str(e.value) == path + ": cannot open the file for reading: there is no such file"
+    assert (e.value.file, e.value.line, e.value.message) == (path, 0, "cannot open the file for reading: there is no such file")
     for reader in (lambda: rc.Spectrum.read(path), lambda: rc.read_areal(path, dx=1e-6)):
         with pytest.raises(rc.InputError, match="cannot open the file for reading"):
             reader()

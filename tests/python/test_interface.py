@@ -103,6 +103,16 @@ def test_boundary_element_table_file(tmp_path):
     with pytest.raises(rc.ParameterError, match="^table_file: .*boundaryElement"):
         rc.ContactInterface(surfaces=[rc.SurfaceSpec.profile(STANDIN)], side1=STEEL_M, side2=STEEL_M,
                             model="hertz", table_file=str(path))
+    # Issue 49, items 8 and 15: a file that is not a table of this project is refused and left as
+    # it is (it was replaced after a warning); an empty name is refused before anything is built
+    # (it was built, then "cannot rename '.tmp.PID' to ''").
+    mine = tmp_path / "mydata.csv"
+    mine.write_text("x,y\n1,2\n")
+    with pytest.raises(rc.ParameterError, match="not a table of this project, so it is left as it is"):
+        rc.ContactInterface(**kw, table_file=str(mine))
+    assert mine.read_text() == "x,y\n1,2\n"
+    with pytest.raises(rc.ParameterError, match="^table_file: is empty"):
+        rc.ContactInterface(**kw, table_file="")
 
 
 def test_errors():

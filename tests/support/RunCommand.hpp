@@ -65,4 +65,16 @@ inline CommandResult runCommand(const std::string& command)
     return r;
 }
 
+#if defined(ROUGHCONTACT_CLI) && defined(ROUGHCONTACT_SOURCE_DIR)
+/// The command-line tool of this build, and the stand-in profile (the CLI tests' surface).
+inline const std::string cli = ROUGHCONTACT_CLI;
+inline const std::string standin = std::string(ROUGHCONTACT_SOURCE_DIR) + "/data/standin-2454.csv";
+
+/// multiscaleContact with `args` (a shell command line's arguments).
+inline CommandResult runCli(const std::string& args)
+{
+    return runCommand("'" + cli + "' " + args);
+}
+#endif
+
 } // namespace roughContactTest

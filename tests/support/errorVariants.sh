@@ -30,6 +30,8 @@
 # Gives:
 #   variant NAME KIND PATCH ENTRY FILE EDIT
 #     KIND   io (above) | success (must run through) | fpe (must die by OpenFOAM's trap, SIGFPE)
+#            | fatal (a function object's error: as io, but "FOAM FATAL" of either kind and
+#            without the patch and the field; PATCH is ignored)
 #     ENTRY, FILE  space-separated words, each of which the log must contain
 #     EDIT   shell commands, run in the copy's directory, that break it
 #   Prints one line per variant (name, PASS/FAIL; on FAIL what is missing and the log's last 15
@@ -100,15 +102,19 @@ variant() {
             [ "$rc" -eq 136 ] || missing+=("death by SIGFPE, exit status 136 (got $rc)")
             has "sigFpe" || missing+=("OpenFOAM's floating-point trap (sigFpe) in the log")
             ;;
-        io)
+        io | fatal)
             [ "$rc" -ne 0 ] || missing+=("a non-zero exit status (the solver ran through)")
             if grep -qE "sigFpe::sigHandler|Floating point exception( \(core dumped\))?\$" "$dir/log"; then
                 missing+=("no floating-point trap (the log has the trap's sigFpe::sigHandler or bash's Floating point exception)")
             fi
-            has "FOAM FATAL IO ERROR" || missing+=("FOAM FATAL IO ERROR")
-            has "$patch" || missing+=("the patch $patch")
-            grep -qE "field T([^A-Za-z0-9_]|\$)|/T\.boundaryField\." "$dir/log.error" ||
-                missing+=("the field T")
+            if [ "$kind" = io ]; then
+                has "FOAM FATAL IO ERROR" || missing+=("FOAM FATAL IO ERROR")
+                has "$patch" || missing+=("the patch $patch")
+                grep -qE "field T([^A-Za-z0-9_]|\$)|/T\.boundaryField\." "$dir/log.error" ||
+                    missing+=("the field T")
+            else
+                has "FOAM FATAL" || missing+=("FOAM FATAL")
+            fi
             for w in $entry; do has "$w" || missing+=("the entry word $w"); done
             for w in $file; do has "$w" || missing+=("the file $w"); done
             for w in $variantForbid; do ! has "$w" || missing+=("no '$w' in the error"); done

@@ -3,6 +3,7 @@
 #include "Inputs.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/io/Files.hpp"
 #include "roughContact/Limits.hpp"
 #include "roughContact/interface/InterfaceRegime.hpp"
 #include "roughContact/interface/SurfaceCheck.hpp"
@@ -167,18 +168,17 @@ int runBoundaryElement(const Options& o)
     }
     if (!o.pressureMap.empty()) {
         // The highest load's field again (one more solve, warm-started from nothing): written as
-        // a text matrix the areal reader reads back (rows along x, one per line, along y), to a
-        // temporary file beside the target, renamed over it once complete: a failed run leaves
-        // nothing behind and changes nothing.
+        // a text matrix the areal reader reads back (rows along x, one per line, along y), by the
+        // core's rules for a writer (io/Files.hpp): only over a pressure map this tool wrote, through
+        // a temporary file renamed over it once complete.
         const double top = *std::max_element(loads.begin(), loads.end());
         current = loads.size();
         std::vector<double> pressure;
         model.solve(top, &pressure);
-        const std::string temporary = o.pressureMap + ".tmp." + std::to_string(static_cast<long>(::getpid()));
-        std::ofstream map(temporary, std::ios::trunc);
-        map << "# contact pressure [Pa] of multiscaleContact --model boundaryElement at F/(A_n E') = " << top
-            << "; " << surface.nx() << " x " << surface.ny() << " points at dx = " << surface.dx()
-            << " m, dy = " << surface.dy() << " m; rows along x, one per line, following each other along y\n";
+        std::ostringstream map;
+        map << pressureMapHeader << " at F/(A_n E') = " << top << "; " << surface.nx() << " x " << surface.ny()
+            << " points at dx = " << surface.dx() << " m, dy = " << surface.dy()
+            << " m; rows along x, one per line, following each other along y\n";
         map.precision(8);
         for (std::size_t iy = 0; iy < surface.ny(); ++iy) {
             for (std::size_t ix = 0; ix < surface.nx(); ++ix) {
@@ -186,15 +186,7 @@ int runBoundaryElement(const Options& o)
             }
             map << '\n';
         }
-        map.close();
-        if (!map) {
-            std::remove(temporary.c_str());
-            throw ParameterError("--pressure-map", "writing '" + temporary + "' failed");
-        }
-        if (std::rename(temporary.c_str(), o.pressureMap.c_str()) != 0) {
-            std::remove(temporary.c_str());
-            throw ParameterError("--pressure-map", "cannot rename '" + temporary + "' to '" + o.pressureMap + "'");
-        }
+        replaceFile(o.pressureMap, map.str(), "--pressure-map", "pressure map of multiscaleContact", isPressureMap);
     }
     std::cout << out.str();
     return 0;

@@ -48,8 +48,9 @@ using namespace roughContact;
 
 namespace multiscaleContact {
 
-// --check: the exact model on this surface at up to 5 of the run's pressures (or 4 across their
-// range), every law's ratio to it; the report, then its numbers as CSV, on stdout.
+// --check: the exact model on this surface at the run's pressures (--pressures, --loads: up to 5)
+// or N across the checked part of --load-range MIN:MAX:N (N up to 5), every law's ratio to it; the
+// report, then its numbers as CSV, on stdout.
 int runCheck(const Options& o)
 {
     if (o.levels) {
@@ -126,8 +127,17 @@ int runCheck(const Options& o)
     }
     in.minPressure = pressures.front();
     in.maxPressure = pressures.back();
-    if (pressures.size() <= 5) {
+    so.names.gridSize = "--synthesize";
+    so.names.lightLoadPeriods = "--check-periods";
+    if (!o.loadRange.empty()) {
+        // --load-range MIN:MAX:N is a range: N pressures (1 to 5) across its checked part, as
+        // Python's min_pressure, max_pressure and count.
+        so.pressureCount = loads.size();
+        so.names.pressures = "--load-range";
+    } else {
+        // A list (--pressures, --loads): those pressures, at most 5.
         so.pressures = pressures;
+        so.names.pressures = !o.pressures.empty() ? "--pressures" : "--loads";
     }
     so.log = [](const std::string& line) { std::cerr << "multiscaleContact: " << line << std::endl; };
     const SurfaceCheck c = checkSurface(in, so);

@@ -2,6 +2,7 @@
 #include "Inputs.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/io/Files.hpp"
 #include "roughContact/Limits.hpp"
 #include "roughContact/interface/InterfaceRegime.hpp"
 #include "roughContact/interface/InterfaceSpecReader.hpp"
@@ -98,18 +99,13 @@ std::vector<double> loadsOf(const Options& o, double Ep, std::vector<double>* gi
                     os << "the nominal pressure F/A_n must be >= 0 Pa, got " << P;
                     throw ParameterError("--pressures", os.str());
                 }
-                const double load = P / Ep;
                 try {
-                    out.push_back(checkLoad(load));
-                } catch (const ParameterError&) {
-                    std::ostringstream os;
-                    os << P << " Pa is the load F/(A_n E') = " << load << " with E' = " << Ep
-                       << " Pa; loads must be 0 or within [" << limits::minimumLoad << ", " << limits::maximumLoad
-                       << "]";
-                    throw ParameterError("--pressures", os.str());
+                    out.push_back(loadOfPressure(P, Ep));
+                } catch (const ParameterError& e) {
+                    throw ParameterError("--pressures", e.message());
                 }
                 if (given != nullptr) {
-                    given->push_back(P);
+                    given->push_back(P == 0.0 ? 0.0 : P); // -0 is 0
                 }
             }
         }
@@ -346,6 +342,11 @@ std::pair<ArealSurface, bool> arealSurfaceOf(const Options& o)
 
 // An output file of --pressure-map: not one of the inputs (it would replace the map being
 // solved), not a directory, in a directory that can be written to. Checked before any solve.
+bool isPressureMap(const std::string& start)
+{
+    return start.rfind(pressureMapHeader, 0) == 0;
+}
+
 void checkOutputFile(const Options& o, const std::string& path, const std::string& option)
 {
     namespace fs = std::filesystem;
@@ -361,6 +362,7 @@ void checkOutputFile(const Options& o, const std::string& path, const std::strin
     if (fs::is_directory(fs::path(path), ec)) {
         throw ParameterError(option, "'" + path + "' is a directory; name a file");
     }
+    requireReplaceable(path, option, "pressure map of multiscaleContact", isPressureMap);
     const fs::path parent = fs::path(path).parent_path();
     const std::string directory = parent.empty() ? "." : parent.string();
     if (::access(directory.c_str(), W_OK | X_OK) != 0) {
@@ -464,6 +466,22 @@ std::vector<SurfaceSpec> surfaceSpecsOf(const Options& o)
                 value = parseQuantity(item, Quantity::length, "--roughness");
             }
             v->set(keys[i], value, "--roughness");
+        }
+        // A length without a unit beside lengths with one is most likely a slip (0.8um,0.1,0.8
+        // meant 0.8 mm, not 0.8 m): said, and read as written (SI).
+        const char* names[] = {"RQ", "SLOPE", "CUTOFF", "SHORTCUTOFF"};
+        double plain = 0.0;
+        bool anyUnit = false;
+        for (std::size_t i = 0; i < o.roughness.size() && i < 4; ++i) {
+            anyUnit = anyUnit || (i != 1 && !parseNumber(o.roughness[i], plain));
+        }
+        for (std::size_t i = 0; anyUnit && i < o.roughness.size() && i < 4; ++i) {
+            if (i != 1 && parseNumber(o.roughness[i], plain)) {
+                std::cerr << "multiscaleContact: warning: --roughness: " << names[i] << " '" << o.roughness[i]
+                          << "' has no unit and is read as " << o.roughness[i]
+                          << " m, while another length there has one; give it a unit (0.8mm, 2.5um) if another "
+                             "was meant\n";
+            }
         }
     }
     if (!o.fractal.empty()) {

@@ -76,8 +76,15 @@ std::uint64_t gridSizeOf(const std::string& text, const std::string& option);
 // synthesized from the 1-D description (--synthesize N[,SEED]); and whether it is periodic.
 std::pair<ArealSurface, bool> arealSurfaceOf(const Options& o);
 
+// The first line of the pressure map --pressure-map writes (the rest of it follows); a file that
+// begins with it is one this tool wrote (isPressureMap), which it may replace.
+inline constexpr const char* pressureMapHeader =
+    "# contact pressure [Pa] of multiscaleContact --model boundaryElement";
+bool isPressureMap(const std::string& start);
+
 // An output file of --pressure-map: not one of the inputs (it would replace the map being
-// solved), not a directory, in a directory that can be written to. Checked before any solve.
+// solved), not a directory, nothing but a pressure map this tool wrote (io/Files.hpp's rules for
+// a writer), in a directory that can be written to. Checked before any solve.
 void checkOutputFile(const Options& o, const std::string& path, const std::string& option);
 
 // --k1 --k2: k_s = 2 k1 k2/(k1 + k2) [W/(m K)], for the column h = k_s h_c/k_s [W/(m^2 K)] after

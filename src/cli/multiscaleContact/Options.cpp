@@ -11,6 +11,7 @@
 #include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/Gas.hpp"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -213,8 +214,9 @@ void addOptions(CLI::App& app, Options& o)
         ->check(CLI::Range(1, roughContact::limits::maximumThreads));
     app.add_option("--fft-wisdom", o.fftWisdom,
                    "boundary-element solves: FFTW's 2-D plans chosen by timing them (FFTW_MEASURE: a few "
-                   "seconds to plan a new size) and kept in FILE (created when missing), so that runs sharing "
-                   "FILE use the same plans and give the same answer bit for bit (default: the blocked "
+                   "seconds to plan a new size) and kept in FILE (created when missing; a file there must be FFTW "
+                   "wisdom), so that runs sharing FILE with the same --threads use the same plans and give "
+                   "the same answer bit for bit (default: the blocked "
                    "transforms, planned without timing runs: the same answer on every run and for any "
                    "number of threads; docs/benchmarks.md compares the two)");
     app.add_option("--k1", o.k1, "conductivity [W/(m K)] of solid 1: with --k2, add the column h = k_s h_per_k "
@@ -253,20 +255,57 @@ void addOptions(CLI::App& app, Options& o)
                    "pressure,area,h_per_k,separation");
     app.add_flag("--check", o.check,
                  "check the laws on this surface: the exact model (boundaryElement) on the --areal map, or on "
-                 "3 surfaces of 512 x 512 (--synthesize N) synthesized from the profile or spectrum (below "
+                 "3 surfaces of 512 x 512 (--synthesize N) synthesized from the profile or spectrum (up to "
                  "p/(E' h') = 1e-3 on periods of " +
                      std::to_string(roughContact::SurfaceCheckOptions{}.lightLoadPeriods) +
-                     " scan lengths), at the given pressures (up to 5) or 4 across their range, within p/(E' h') "
-                     "1e-4 to 1e-1; capped at "
+                     " scan lengths, joined with one scan length's by 1e-2), at the given --pressures or --loads (up to 5) or N across the range of "
+                     "--load-range MIN:MAX:N (N up to 5), within p/(E' h') 1e-4 to 1e-1; capped at "
                  "H where --Sy, --hardness or --hardness-from-yield say, elastic otherwise. Prints every law's "
                  "ratio to the exact h_c/k_s, the closest, and whether the chosen law (--conductance-law, "
                  "default " + defaultConductanceLaw() + ") is within 25 %");
     app.add_option("--check-periods", o.checkPeriods,
-                   "with --check on a profile or spectrum: solve its pressures below p/(E' h') = 1e-3 on "
+                   "with --check on a profile or spectrum: solve its pressures up to p/(E' h') = 1e-3 on "
                    "periods of K scan lengths, 1 to " + std::to_string(roughContact::Spectrum::maximumPeriodMultiple) +
                        " (default " + std::to_string(roughContact::SurfaceCheckOptions{}.lightLoadPeriods) +
                        "; 1: every pressure on one scan length; docs/checking.md says what each gains)");
 
+}
+
+void refuseEmptyValues(const CLI::App& app, int argc, const char* const* argv)
+{
+    for (const CLI::Option* option : app.get_options()) {
+        if (option->count() == 0 || option->get_expected_min() == 0) {
+            continue; // not given, or a flag
+        }
+        const std::string name = option->get_name();
+        const std::vector<std::string>& results = option->results();
+        if (results.empty() || std::find(results.begin(), results.end(), std::string()) != results.end()) {
+            throw ParameterError(name, "is given an empty value (''): give one, or leave the option out");
+        }
+        if (option->get_delimiter() == '\0') {
+            continue;
+        }
+        // CLI11 drops an empty item of a list ("200GPa," is read as "200GPa"): the lists as typed.
+        const char delimiter = option->get_delimiter();
+        for (int i = 1; i < argc; ++i) {
+            const std::string arg = argv[i];
+            std::string value;
+            if (arg == name && i + 1 < argc) {
+                value = argv[i + 1];
+            } else if (arg.rfind(name + "=", 0) == 0) {
+                value = arg.substr(name.size() + 1);
+            } else {
+                continue;
+            }
+            const std::string doubled(2, delimiter);
+            if (value.empty() || value.front() == delimiter || value.back() == delimiter ||
+                value.find(doubled) != std::string::npos) {
+                throw ParameterError(name, "'" + value + "' has an empty item (a '" + std::string(1, delimiter) +
+                                               "' too many?); give the items separated by '" +
+                                               std::string(1, delimiter) + "'");
+            }
+        }
+    }
 }
 
 } // namespace multiscaleContact

@@ -70,4 +70,8 @@ struct Options {
 /// docs/cli.md's table of the CLI; --help prints them).
 void addOptions(CLI::App& app, Options& o);
 
+/// After app.parse(argc, argv): a ParameterError naming the option when one was given an empty
+/// value (--table '') or a list with an empty item (--E 200GPa,), which CLI11 takes silently.
+void refuseEmptyValues(const CLI::App& app, int argc, const char* const* argv);
+
 } // namespace multiscaleContact

@@ -67,6 +67,10 @@ int run(const Options& o)
     if (!o.checkPeriods.empty() && !o.check) {
         throw ParameterError("--check-periods", "is the period of --check's light loads; give it with --check");
     }
+    if (o.check && !o.table.empty()) {
+        throw ParameterError("--table", "is the boundary-element table of an interface; --check solves surfaces of "
+                                        "its own and keeps no table: give one or the other");
+    }
     if (o.check) {
         return runCheck(o);
     }

@@ -11,6 +11,7 @@
 // Check, BoundaryElementRun, Table (what it computes); this file only parses and reports errors.
 #include "Options.hpp"
 #include "Run.hpp"
+#include "roughContact/Error.hpp"
 #include "roughContact/bem/HalfSpaceOperator.hpp"
 #include "roughContact/parallel/Threads.hpp"
 
@@ -39,7 +40,7 @@ int main(int argc, char** argv)
 
     try {
         app.parse(argc, argv);
-        if (o.loads.empty() && o.loadRange.empty() && o.pressures.empty() && o.table.empty()) {
+        if (o.loads.empty() && o.loadRange.empty() && o.pressures.empty() && app.count("--table") == 0) {
             throw CLI::RequiredError("--loads, --load-range or --pressures");
         }
     } catch (const CLI::ParseError& e) {
@@ -47,10 +48,15 @@ int main(int argc, char** argv)
         return app.exit(e) == 0 ? 0 : 1;
     }
     try {
+        refuseEmptyValues(app, argc, argv);
         if (o.threads > 0) {
             roughContact::setThreads(o.threads);
         }
-        roughContact::setFftWisdom(o.fftWisdom);
+        try {
+            roughContact::setFftWisdom(o.fftWisdom);
+        } catch (const roughContact::ParameterError& e) {
+            throw roughContact::ParameterError("--fft-wisdom", e.message());
+        }
         return run(o);
     } catch (const std::exception& e) {
         std::cerr << "multiscaleContact: error: " << e.what() << '\n';

@@ -205,6 +205,95 @@ void contactInterfaces::insert
 }
 
 
+void contactInterfaces::requestCheck
+(
+    const word& key,
+    const roughContact::InterfaceSpec& spec,
+    const word& name,
+    const fileName& dictFile
+)
+{
+    checks_.emplace(key, pendingCheck{spec, name, dictFile});
+}
+
+
+void contactInterfaces::checkOnce(const word& key, const string& who)
+{
+    const auto found = checks_.find(key);
+    if (found == checks_.end())
+    {
+        return;
+    }
+    const pendingCheck pending = found->second;
+    checks_.erase(found);
+    if (!Pstream::master())
+    {
+        return;
+    }
+    const roughContact::InterfaceSpec& spec = pending.spec;
+    const word& name = pending.name;
+    const fileName& dictFile = pending.dictFile;
+    // check yes: the exact model on this surface against every law
+    // (SurfaceCheck.hpp); its report in the log, a warning when the chosen
+    // law misses it by more than 25 %. A check that cannot be made is said,
+    // and the run goes on: it is a diagnostic, not a condition of the run.
+    roughContact::SurfaceCheckOptions options;
+    options.names.lightLoadPeriods = "checkPeriods";
+    if (spec.checkPeriods)
+    {
+        options.lightLoadPeriods = *spec.checkPeriods;
+    }
+    options.log = [](const std::string& line)
+    {
+        Info<< "    " << line.c_str() << endl;
+    };
+    Info<< "thermalContactResistance: check yes: checking the laws on the"
+        << " surface of contact entry '" << name << "' (" << who.c_str()
+        << ")" << endl;
+    try
+    {
+        const roughContact::SurfaceCheck c =
+            roughContact::checkSurface(spec, options);
+        Info<< c.report().c_str() << endl;
+        if (!c.exactWarning.empty())
+        {
+            WarningInFunction
+                << who.c_str() << ": contact entry '" << name << "' in "
+                << dictFile << ": check yes: "
+                << c.exactWarning.c_str() << endl;
+        }
+        const std::vector<double> misses = c.chosenMisses();
+        if (!misses.empty())
+        {
+            WarningInFunction
+                << who.c_str() << ": contact entry '" << name << "' in "
+                << dictFile << ": the conductance law "
+                << c.chosenLaw.c_str() << " is off the exact conductance"
+                << " of this surface by more than "
+                << label(roughContact::checkTolerance*100 + 0.5)
+                << " % at " << label(misses.size()) << " of "
+                << label(c.pressures.size()) << " checked pressures;"
+                << " the closest law here is " << c.closestLaw.c_str()
+                << " (the check's table is above)" << endl;
+        }
+    }
+    catch (const std::exception& e)
+    {
+        WarningInFunction
+            << who.c_str() << ": contact entry '" << name << "' in "
+            << dictFile << ": check yes: the check could not be"
+            << " made: " << e.what() << "; the run goes on"
+            << " without it" << endl;
+    }
+}
+
+
+word contactKey(const fileName& dictFile, const word& name)
+{
+    return dictFile + "::" + name;
+}
+
+
 std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
 (
     const objectRegistry& db,
@@ -219,7 +308,7 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
     // that names it: an object on the registry that holds the dictionary
     // (the case's Time), living as long as the run.
     contactInterfaces& shared = contactInterfaces::New(db);
-    const word key = dictFile + "::" + name;
+    const word key = contactKey(dictFile, name);
     if (const auto found = shared.find(key))
     {
         return found;
@@ -275,57 +364,12 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
             << "    " << dictFile << " is read once: changes to it"
             << " (and to the surface files) during the run are not used"
             << " until the run is restarted" << endl;
-        if (spec.check && Pstream::master())
+        if (spec.check)
         {
-            // check yes: the exact model on this surface against every
-            // law (SurfaceCheck.hpp); its report in the log, a warning when
-            // the chosen law misses it by more than 25 %.
-            roughContact::SurfaceCheckOptions options;
-            if (spec.checkPeriods)
-            {
-                options.lightLoadPeriods = *spec.checkPeriods;
-            }
-            options.log = [](const std::string& line)
-            {
-                Info<< "    " << line.c_str() << endl;
-            };
-            // A check that cannot be made is said, and the run goes on:
-            // it is a diagnostic, not a condition of the run.
-            try
-            {
-            const roughContact::SurfaceCheck c =
-                roughContact::checkSurface(spec, options);
-            Info<< c.report().c_str() << endl;
-            if (!c.exactWarning.empty())
-            {
-                WarningInFunction
-                    << who.c_str() << ": contact entry '" << name << "' in "
-                    << dictFile << ": check yes: "
-                    << c.exactWarning.c_str() << endl;
-            }
-            const std::vector<double> misses = c.chosenMisses();
-            if (!misses.empty())
-            {
-                WarningInFunction
-                    << who.c_str() << ": contact entry '" << name << "' in "
-                    << dictFile << ": the conductance law "
-                    << c.chosenLaw.c_str() << " is off the exact conductance"
-                    << " of this surface by more than "
-                    << label(roughContact::checkTolerance*100 + 0.5)
-                    << " % at " << label(misses.size()) << " of "
-                    << label(c.pressures.size()) << " checked pressures;"
-                    << " the closest law here is " << c.closestLaw.c_str()
-                    << " (the check's table is above)" << endl;
-            }
-            }
-            catch (const std::exception& e)
-            {
-                WarningInFunction
-                    << who.c_str() << ": contact entry '" << name << "' in "
-                    << dictFile << ": check yes: the check could not be"
-                    << " made: " << e.what() << "; the run goes on"
-                    << " without it" << endl;
-            }
+            // Made at the first evaluation (contactInterfaces::checkOnce), in
+            // the solver alone: decomposePar and reconstructPar build the
+            // condition but never evaluate it.
+            shared.requestCheck(key, spec, name, dictFile);
         }
         shared.insert(key, iface);
         return iface;

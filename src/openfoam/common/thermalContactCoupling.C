@@ -2,6 +2,7 @@
 // Part of roughContact, licensed GPL-3.0-or-later (LICENSE). Builds on OpenFOAM (Copyright
 // OpenCFD Ltd. and The OpenFOAM Foundation; GPL-3.0-or-later).
 #include "thermalContactCoupling.H"
+#include "contactInterfaceFromDict.H"
 #include "foamCompat.H"
 
 #include "Pstream.H"
@@ -63,6 +64,8 @@ void Foam::thermalContactCoupling::couple
         }
         else
         {
+            // check yes: made once, at the first evaluation
+            contactInterfaces::New(runTime).checkOnce(settings.contactKey, who());
             settings.checkContactUnchanged(runTime, who);
             in.pressure = pressure.cdata();
             in.pressureNbr = nbr.pressure.cdata();

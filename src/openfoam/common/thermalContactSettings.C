@@ -142,6 +142,7 @@ Foam::thermalContactSettings::thermalContactSettings
         runTime, props, contactName, props.objectPath(), runTime.globalPath(),
         who
     );
+    contactKey = Foam::contactKey(props.objectPath(), contactName);
     try
     {
         surfaceChecksum = interface->surfaceChecksum();

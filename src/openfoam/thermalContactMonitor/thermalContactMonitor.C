@@ -5,6 +5,7 @@
 #include "thermalContactResistanceFvPatchScalarField.H"
 
 #include "addToRunTimeSelectionTable.H"
+#include "foamCompat.H"
 #include "fvMesh.H"
 #include "mappedPatchBase.H"
 #include "OSspecific.H"
@@ -284,8 +285,92 @@ Foam::functionObjects::thermalContactMonitor::thermalContactMonitor
 
 bool Foam::functionObjects::thermalContactMonitor::read(const dictionary& dict)
 {
+    // Its own entry, and the controls every function object takes: anything
+    // else (a misspelt control, an entry of another function object such as
+    // `patches` or `region`) would be ignored without a word.
+    static const char* const known[] =
+    {
+        "field",
+        "type", "libs", "functionObjectLibs", "enabled", "log", "useNamePrefix",
+        "timeStart", "timeEnd", "startTime", "endTime", "triggerStart",
+        "triggerEnd", "controlMode", "deltaTCoeff", "nStepsToStartTimeChange",
+        "executeControl", "executeInterval", "executeTimes", "executeAtStart",
+        "writeControl", "writeInterval", "writeTimes", "writeAtStart",
+        "outputControl", "outputInterval"
+    };
+    wordList allowed;
+    for (const char* k : known)
+    {
+        allowed.append(word(k));
+    }
+    for (const word& key : dict.toc())
+    {
+        if (!allowed.found(key))
+        {
+            FatalIOErrorInFunction(dict)
+                << "function object '" << name() << "' (thermalContactMonitor):"
+                << " unknown entry '" << key << "'; its entry is 'field' (the"
+                << " temperature field, default T; every region and every"
+                << " thermalContactResistance patch of it are monitored),"
+                << " beside the function object controls "
+                << foamCompat::listed(allowed) << exit(FatalIOError);
+        }
+    }
     fieldName_ = dict.getOrDefault<word>("field", "T");
+    dictName_ = dict.name();
+    fieldChecked_ = false;
     return true;
+}
+
+
+void Foam::functionObjects::thermalContactMonitor::checkField() const
+{
+    // Once, at the first execution (the regions' fields exist by then): a
+    // field no region has stops the run, one without a
+    // thermalContactResistance patch is warned of; either would leave this
+    // function object doing nothing, silently.
+    if (fieldChecked_)
+    {
+        return;
+    }
+    fieldChecked_ = true;
+    label patches = 0;
+    wordList withField;
+    for (const word& region : regions())
+    {
+        const fvMesh& mesh = time_.lookupObject<fvMesh>(region);
+        if (!mesh.foundObject<volScalarField>(fieldName_))
+        {
+            continue;
+        }
+        withField.append(region);
+        const volScalarField& T = mesh.lookupObject<volScalarField>(fieldName_);
+        forAll(T.boundaryField(), patchi)
+        {
+            if (isA<thermalContactResistanceFvPatchScalarField>(T.boundaryField()[patchi]))
+            {
+                ++patches;
+            }
+        }
+    }
+    if (withField.empty())
+    {
+        FatalErrorInFunction
+            << "function object '" << name() << "' (thermalContactMonitor) in "
+            << dictName_ << ": entry 'field " << fieldName_ << "': no region"
+            << " has a field '" << fieldName_ << "' (regions: "
+            << foamCompat::listed(regions()) << "); the temperature field is"
+            << " usually T" << exit(FatalError);
+    }
+    if (patches == 0)
+    {
+        // (a case compared with the stock condition keeps the function object)
+        WarningInFunction
+            << "function object '" << name() << "' (thermalContactMonitor) in "
+            << dictName_ << ": the field '" << fieldName_ << "' of regions "
+            << foamCompat::listed(withField) << " has no patch of type"
+            << " thermalContactResistance: it writes nothing" << endl;
+    }
 }
 
 
@@ -326,6 +411,7 @@ Foam::functionObjects::thermalContactMonitor::regions() const
 
 bool Foam::functionObjects::thermalContactMonitor::execute()
 {
+    checkField();
     // The fields, current after every step (another function object may
     // use them: tutorials/loadRamp averages them over the interface).
     for (const word& region : regions())
@@ -342,7 +428,7 @@ bool Foam::functionObjects::thermalContactMonitor::execute()
 
 bool Foam::functionObjects::thermalContactMonitor::write()
 {
-    execute();
+    execute(); // (checks the field first)
     for (const word& region : regions())
     {
         const fvMesh& mesh = time_.lookupObject<fvMesh>(region);

@@ -39,21 +39,18 @@
 #include <vector>
 
 using namespace roughContact;
+using roughContactTest::cli;
 using roughContactTest::CommandResult;
 using roughContactTest::runCommand;
+using roughContactTest::standin;
 using roughContactTest::TempDir;
 
 namespace {
 
-const std::string cli = ROUGHCONTACT_CLI;
-const std::string standin = std::string(ROUGHCONTACT_SOURCE_DIR) + "/data/standin-2454.csv";
+constexpr auto& run = roughContactTest::runCli;
+
 // The seed's materials (§3.2): E = 179.52 GPa, nu = 0.32, S_y = 0.2 GPa (against a rigid flat).
 const std::string steel = " --E 179.52e9 --nu 0.32 --Sy 0.2e9";
-
-CommandResult run(const std::string& args)
-{
-    return runCommand("'" + cli + "' " + args);
-}
 
 struct Csv {
     std::vector<std::string> header;
@@ -487,9 +484,9 @@ TEST(Cli, BadInputFoundByAHostileUser)
     // Each was accepted, printed nonsense, or exited with CLI11's own codes (104-114).
     const std::string p = "--profile '" + standin + "'";
     const std::string hertz = " --model hertz --Eprime 2e11";
-    expectError(p + hertz + " --loads ''", {"--loads", "empty item"}); // was: load 0
+    expectError(p + hertz + " --loads ''", {"--loads", "empty value"}); // was: load 0
     expectError(p + hertz + " --loads 1e-4,", {"--loads", "empty item"});
-    expectError(p + hertz + " --loads 1e-4 --units ''", {"unknown unit ''"}); // was: accepted
+    expectError(p + hertz + " --loads 1e-4 --units ''", {"--units", "empty value"}); // was: accepted
     // CLI11 writes the range "1 to 1000000000" (Debian 12) or "[1 - 1000000000]" (Debian 13).
     expectError(p + hertz + " --loads 1e-4 --stride 0", {"--stride: Value 0 not in range", "1000000000"}); // was: 300 digits
     expectError(p + hertz + " --loads 1e-4 --no-such-option", {"--no-such-option"});    // was: exit 109
@@ -779,15 +776,17 @@ SurfaceCheckInputs standinCheckInputs()
 TEST(Cli, CheckIsTheLibrarysSurfaceCheck)
 {
     // --check: the report as # lines, then the library's checkSurface as CSV, on the same surface
-    // (the stand-in synthesized on 32^2, seeds 1-3) and pressures; progress on stderr.
+    // (the stand-in synthesized on 128^2, seeds 1-3: the fewest levels a check takes on the
+    // light loads' period of 4L, 128/(8 x 4) = 4) and pressures; progress on stderr.
     const double Ep = 179.52e9 / (1 - 0.32 * 0.32);
     const std::vector<double> pressures{0.3e-3 * Ep * 0.05, 3e-3 * Ep * 0.05};
     std::ostringstream given;
     given.precision(17);
     given << pressures[0] << ',' << pressures[1];
-    const CommandResult r = run("--profile '" + standin + "' --model jacksonGreen" + steel + " --synthesize 32 --check --pressures " + given.str());
+    const CommandResult r = run("--profile '" + standin + "' --model jacksonGreen" + steel + " --synthesize 128 --check --pressures " + given.str());
     ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_NE(r.err.find("check: surface 3 of 3, pressure 2 of 2"), std::string::npos) << r.err;
+    // 3 seeds on one scan length and 3 on 4L (the lighter pressure lies where the periods join).
+    EXPECT_NE(r.err.find("check: surface 6 of 6, pressure 1 of 1"), std::string::npos) << r.err;
     std::istringstream in(r.out);
     std::string csvText;
     std::string report;
@@ -798,12 +797,12 @@ TEST(Cli, CheckIsTheLibrarysSurfaceCheck)
     inputs.minPressure = pressures[0];
     inputs.maxPressure = pressures[1];
     SurfaceCheckOptions options;
-    options.gridSize = 32;
+    options.gridSize = 128;
     options.pressures = pressures;
     const SurfaceCheck c = checkSurface(inputs, options);
     ASSERT_EQ(c.pressures.size(), 2U) << c.report();
     EXPECT_EQ(csvText, c.csv());
-    EXPECT_NE(report.find("# check of the surface: 3 seeds of 32 x 32"), std::string::npos) << report;
+    EXPECT_NE(report.find("# check of the surface: 3 seeds of 128 x 128"), std::string::npos) << report;
     EXPECT_NE(report.find("closest: " + c.closestLaw), std::string::npos) << report;
     const std::string p = "--profile '" + standin + "' --model jacksonGreen" + steel + " --check";
     expectError(p + " --conductance-law all --loads 1e-4", {"--check", "every law"});
@@ -830,7 +829,8 @@ TEST(Cli, CheckPeriodsSetsTheLightLoadPeriodAsTheLibrarysOption)
     inputs.maxPressure = 1e-3 * Ep;
     const double h = checkSurface(inputs, [] {
                          SurfaceCheckOptions o;
-                         o.gridSize = 32; // h' of the surface the check solves: cut at 32/8 levels
+                         o.gridSize = 64; // h' of the surface the check solves: cut at 64/8 levels
+                         o.lightLoadPeriods = 1;
                          o.seeds = {1};
                          o.pressureCount = 1;
                          return o;
@@ -841,7 +841,7 @@ TEST(Cli, CheckPeriodsSetsTheLightLoadPeriodAsTheLibrarysOption)
     std::map<std::size_t, std::string> csvOf;
     for (const std::size_t k : {1U, 2U}) {
         const CommandResult r = run("--profile '" + standin + "' --model jacksonGreen" + steel +
-                                    " --synthesize 32 --check --check-periods " + std::to_string(k) +
+                                    " --synthesize 64 --check --check-periods " + std::to_string(k) +
                                     " --pressures " + given.str());
         ASSERT_EQ(r.status, 0) << r.err;
         std::istringstream in(r.out);
@@ -852,7 +852,7 @@ TEST(Cli, CheckPeriodsSetsTheLightLoadPeriodAsTheLibrarysOption)
             }
         }
         SurfaceCheckOptions options;
-        options.gridSize = 32;
+        options.gridSize = 64; // on 2L, 64/(8 x 2) = 4 of the levels: the fewest a check takes
         options.pressures = {std::stod(given.str())};
         options.lightLoadPeriods = k;
         inputs.minPressure = inputs.maxPressure = options.pressures[0];
@@ -1023,7 +1023,7 @@ TEST(Cli, ColumnNamesSayWhatTheyAre)
     EXPECT_EQ(header(gap), "nominal_pressure_per_Eprime,area_fraction,contact_pressure_per_Eprime,separation,h_per_k,h,"
                            "gap_separation,h_gas,h_radiation,h_total");
     const CommandResult check = run("--profile '" + standin + "' --model jacksonGreen --E 200e9,200e9 --nu 0.3,0.3 "
-                                    "--Sy 0.4e9,0.4e9 --check --synthesize 16 --pressures 1e5");
+                                    "--Sy 0.4e9,0.4e9 --check --synthesize 128 --pressures 1e6");
     ASSERT_EQ(check.status, 0) << check.err;
     EXPECT_NE(check.out.find("\nnominal_pressure,nominal_pressure_per_Eprime,area_exact,"), std::string::npos)
         << check.out;

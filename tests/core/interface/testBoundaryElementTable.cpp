@@ -396,7 +396,7 @@ TEST(BoundaryElementTable, LoadOrBuildReadsWhatItWroteAndRebuildsTheRest)
         EXPECT_NE(std::string(e.what()).find("'" + directory + "' is a directory"), std::string::npos) << e.what();
     }
     EXPECT_EQ(solved, 0u);
-    EXPECT_EQ(t.read(directory).status, Status::corrupt);
+    EXPECT_EQ(t.read(directory).status, Status::notATable);
     EXPECT_NE(t.read(directory).reason.find("is a directory"), std::string::npos);
     // A directory that does not exist: refused before solving, too.
     EXPECT_THROW(t.loadOrBuild(dir + "/missing/table.csv", progress, logger), ParameterError);

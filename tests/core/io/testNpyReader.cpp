@@ -164,6 +164,9 @@ TEST_F(NpyReader, WhatIsNotAHeightArrayIsNamed)
         {"small.npy", npy("<f8", false, "(2, 10)", data), "at least"},
         {"short.npy", npy("<f8", false, "(9, 10)", data.substr(0, 100)), "truncated: 100 of 720 bytes"},
         {"version.npy", npy("<f8", false, "(9, 10)", data, 7), "version 7"},
+        // Issue 49, item 15: a key given twice was read first-wins (numpy takes the last): the
+        // header is not one numpy.save writes, and is refused.
+        {"twice.npy", npy("<f8", false, "(9, 10), 'shape': (10, 9)", data), "gives 'shape' more than once"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);

@@ -397,7 +397,7 @@ TEST_F(ProfileReaderTest, emptyFilesAndHeaderOnlyFiles)
 TEST_F(ProfileReaderTest, missingFile)
 {
     const std::string path = (dir_ / "absent.csv").string();
-    expectLocated(profileError(path), path, 0, "cannot open the file for reading");
+    expectLocated(profileError(path), path, 0, "cannot open the file for reading: there is no such file");
 }
 
 TEST_F(ProfileReaderTest, nonNumericNanAndInfFieldsNameTheirLine)

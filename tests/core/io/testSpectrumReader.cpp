@@ -137,7 +137,7 @@ TEST_F(SpectrumReaderTest, varianceOfTheReadSpectrumIsTheSumOfHalfSquares)
 TEST_F(SpectrumReaderTest, missingFile)
 {
     const std::string path = (dir_ / "absent.txt").string();
-    expectLocated(spectrumError(path), path, 0, "cannot open the file for reading");
+    expectLocated(spectrumError(path), path, 0, "cannot open the file for reading: there is no such file");
 }
 
 TEST_F(SpectrumReaderTest, emptyFilesHaveNoLevels)

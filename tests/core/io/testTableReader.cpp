@@ -238,14 +238,14 @@ TEST_F(TableReaderTest, missingFileNamesThePath)
     const InputError e = tableError(path);
     EXPECT_EQ(e.file(), path);
     EXPECT_EQ(e.line(), 0); // there is no line to name
-    EXPECT_EQ(std::string(e.what()), path + ": cannot open the file for reading");
+    EXPECT_EQ(std::string(e.what()), path + ": cannot open the file for reading: there is no such file");
 }
 
 TEST_F(TableReaderTest, aDirectoryIsNotReadAsAnEmptyFile)
 {
     const InputError e = tableError(dir_.string());
     EXPECT_EQ(e.file(), dir_.string());
-    EXPECT_EQ(std::string(e.what()), dir_.string() + ": is a directory, not a file");
+    EXPECT_EQ(std::string(e.what()), dir_.string() + ": is a directory, not a table file: the tools read regular files only");
 }
 
 TEST_F(TableReaderTest, aNameWithANulByteIsRefused)

@@ -26,8 +26,8 @@ constexpr double pi = 3.14159265358979323846;
 // Sets the core's threads for one scope, and puts back what was there.
 class ThreadsFor {
 public:
-    explicit ThreadsFor(int n) : before_(threads()) { setThreads(n); }
-    ~ThreadsFor() { setThreads(before_); }
+    explicit ThreadsFor(int n) : before_(threads()) { setThreadsUncapped(n); }
+    ~ThreadsFor() { setThreadsUncapped(before_); }
     ThreadsFor(const ThreadsFor&) = delete;
     ThreadsFor& operator=(const ThreadsFor&) = delete;
 
@@ -75,6 +75,22 @@ TEST(Threads, AtLeastOneAndChecked)
     EXPECT_THROW(setThreads(-2), ParameterError);
     const ThreadsFor two(2);
     EXPECT_EQ(threads(), threadsAvailable() ? 2 : 1);
+}
+
+TEST(Threads, NoMoreThanTheProcessorsThatHelp)
+{
+    // Issue 49, item 15: --threads 4096 started 4096 OpenMP threads (93 s on 2 cores; under a
+    // 4 GB memory limit libgomp aborted). setThreads uses at most the processors this process
+    // may run on; the answer is the same for any number, so nothing else changes.
+    const int before = threads();
+    EXPECT_GE(usableThreads(), 1);
+    EXPECT_LE(usableThreads(), hardwareThreads());
+    setThreads(4096);
+    EXPECT_EQ(threads(), threadsAvailable() ? usableThreads() : 1);
+    setThreads(1);
+    EXPECT_EQ(threads(), 1);
+    EXPECT_THROW(setThreads(4097), ParameterError);
+    setThreadsUncapped(before);
 }
 
 TEST(Threads, ForEachVisitsEveryElementOnce)
@@ -198,12 +214,22 @@ TEST(FftWisdom, MeasuredPlansAreKeptAndGiveTheSameAnswerEveryRun)
     EXPECT_TRUE(sameBits(first.gap, second.gap));
     EXPECT_NEAR(first.areaFraction, estimated.areaFraction, 4.0 / (128.0 * 128.0));
     EXPECT_NEAR(first.meanSeparation / estimated.meanSeparation, 1.0, 1e-6);
-    setFftWisdom((dir.path() / "no" / "such" / "folder" / "wisdom").string());
+    // A file in a folder that is missing is refused when it is set; one whose folder went
+    // missing since, when the plans are made.
     try {
-        solve();
-        ADD_FAILURE() << "an unwritable wisdom file was accepted";
+        setFftWisdom((dir.path() / "no" / "such" / "folder" / "wisdom").string());
+        ADD_FAILURE() << "a wisdom file in a missing folder was accepted";
     } catch (const ParameterError& e) {
         EXPECT_NE(std::string(e.what()).find("no/such/folder/wisdom"), std::string::npos) << e.what();
+    }
+    std::filesystem::create_directory(dir.path() / "gone");
+    setFftWisdom((dir.path() / "gone" / "wisdom").string());
+    std::filesystem::remove(dir.path() / "gone");
+    try {
+        solve();
+        ADD_FAILURE() << "a wisdom file whose folder is gone was accepted";
+    } catch (const ParameterError& e) {
+        EXPECT_NE(std::string(e.what()).find("gone/wisdom"), std::string::npos) << e.what();
     }
     setFftWisdom("");
 }

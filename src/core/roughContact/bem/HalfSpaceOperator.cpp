@@ -4,13 +4,20 @@
 #include "roughContact/Constants.hpp"
 #include "roughContact/Error.hpp"
 #include "roughContact/bem/GridMemory.hpp"
+#include "roughContact/io/Files.hpp"
+#include "roughContact/io/TableReader.hpp"
 #include "roughContact/parallel/Threads.hpp"
 
 #include <fftw3.h>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
+
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <complex>
 #include <stdexcept>
@@ -63,49 +70,118 @@ std::string& wisdomPath()
     return path;
 }
 
-// The planner flag, with the wisdom file read in once (FFTW keeps what it read; planning with
-// FFTW_MEASURE then finds the stored plans instead of timing again).
-unsigned planningFlag()
-{
-    const std::string& path = wisdomPath();
-    if (path.empty()) {
-        return FFTW_ESTIMATE;
-    }
-    static std::string imported;
-    if (imported != path) {
-        (void)fftw_import_wisdom_from_filename(path.c_str()); // a missing file: nothing known yet
-        imported = path;
-    }
-    return FFTW_MEASURE;
-}
-
-// After planning: the wisdom back to its file, through a temporary one renamed over it (a run
-// stopped while writing leaves the old file whole).
-void saveWisdom()
-{
-    const std::string& path = wisdomPath();
-    if (path.empty()) {
-        return;
-    }
-    const std::string temporary = path + ".partial";
-    if (fftw_export_wisdom_to_filename(temporary.c_str()) == 0 ||
-        std::rename(temporary.c_str(), path.c_str()) != 0) {
-        std::remove(temporary.c_str());
-        throw ParameterError("FFT wisdom file", "'" + path + "' cannot be written");
-    }
-}
-
-// FFTW plans its next transforms for `n` threads (its OpenMP threads, set up once; a serial
-// build has one). FFTW's planner is not thread-safe: operators are made on one thread.
-void planFor(int n)
+// FFTW's threads, set up once before any other FFTW call that concerns plans (FFTW's manual,
+// "Usage of Multi-threaded FFTW": fftw_init_threads first, before wisdom is imported too).
+bool threadsReady()
 {
 #if defined(ROUGHCONTACT_OPENMP)
     static const bool ready = fftw_init_threads() != 0;
-    fftw_plan_with_nthreads(ready ? n : 1);
+    return ready;
+#else
+    return false;
+#endif
+}
+
+// FFTW plans its next transforms for `n` threads (its OpenMP threads; a serial build has one).
+// FFTW's planner is not thread-safe: operators are made on one thread.
+void planFor(int n)
+{
+#if defined(ROUGHCONTACT_OPENMP)
+    fftw_plan_with_nthreads(threadsReady() ? n : 1);
 #else
     (void)n;
 #endif
 }
+
+constexpr const char* wisdomParameter = "FFT wisdom file";
+
+// A file FFTW wrote as wisdom begins "(fftw-3.3.10 fftw_wisdom ...".
+bool isWisdomText(const std::string& start)
+{
+    return start.rfind("(fftw-3", 0) == 0 && start.find(" fftw_wisdom", 0) != std::string::npos &&
+           start.find(" fftw_wisdom") < 40;
+}
+
+// The wisdom file's text, read by the readers' rules (io/Files.hpp): empty when there is none.
+// ParameterError when it is there but not FFTW wisdom.
+std::string wisdomText(const std::string& path)
+{
+    const ExistingFile existing = existingFile(path);
+    if (existing.kind == ExistingFile::Kind::none) {
+        return std::string();
+    }
+    std::string text;
+    try {
+        text = readWholeFile(path, fileLimits::maximumWisdomBytes, "FFTW wisdom");
+    } catch (const InputError& e) {
+        throw ParameterError(wisdomParameter, "'" + path + "' " + e.message());
+    }
+    if (!isWisdomText(text)) {
+        throw ParameterError(wisdomParameter, "'" + path + "' exists and is not FFTW wisdom (it begins '" +
+                                                  detail::printable(text.substr(0, 40), 40) +
+                                                  "'): it is left as it is; give another name");
+    }
+    return text;
+}
+
+// The planning of one grid's plans with the wisdom file, held by one process at a time (an
+// exclusive lock on the file's folder: flock, released by the destructor or the process's
+// end): the file read in, the plans made (FFTW_MEASURE finds the plans the file holds instead
+// of timing again), the file rewritten when FFTW learnt something. So every run that shares the
+// file plans a grid of a size and thread count the same way: the first times it, the others
+// read its plans.
+class WisdomSession {
+public:
+    explicit WisdomSession(const std::string& path) : path_(path)
+    {
+        const std::string folder = folderOf(path);
+        fd_ = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+        if (fd_ < 0) {
+            throw ParameterError(wisdomParameter, "the folder '" + folder + "' of '" + path + "' cannot be opened");
+        }
+        while (::flock(fd_, LOCK_EX) != 0) {
+            if (errno != EINTR) {
+                ::close(fd_);
+                throw ParameterError(wisdomParameter, "cannot lock the folder '" + folder + "' of '" + path + "'");
+            }
+        }
+        try {
+            threadsReady();
+            before_ = wisdomText(path);
+            if (!before_.empty() && fftw_import_wisdom_from_string(before_.c_str()) == 0) {
+                throw ParameterError(wisdomParameter, "'" + path + "' is not wisdom this FFTW can read (damaged, or "
+                                                      "written by another FFTW version): give another name");
+            }
+        } catch (...) {
+            ::close(fd_);
+            throw;
+        }
+    }
+    ~WisdomSession()
+    {
+        ::close(fd_); // and the lock with it
+    }
+    WisdomSession(const WisdomSession&) = delete;
+    WisdomSession& operator=(const WisdomSession&) = delete;
+    // After planning: what FFTW knows now back to the file, when it is more than the file held.
+    void save() const
+    {
+        char* text = fftw_export_wisdom_to_string();
+        if (text == nullptr) {
+            throw ParameterError(wisdomParameter, "FFTW could not export its wisdom");
+        }
+        const std::string after(text);
+        fftw_free(text);
+        if (after != before_) {
+            replaceFile(path_, after, wisdomParameter, "FFTW wisdom file", isWisdomText);
+        }
+    }
+
+private:
+    std::string path_;
+    std::string before_;
+    int fd_ = -1;
+};
 } // namespace
 
 // The columns one pass of the column transforms takes at a time (blocked transforms, below):
@@ -152,8 +228,8 @@ struct HalfSpaceOperator::Fft {
     {
         spectral = gridArray<fftw_complex>(my * hx);
         const std::lock_guard<std::mutex> lock(fftwPlanner());
-        const unsigned flag = planningFlag();
-        blocked = flag == FFTW_ESTIMATE;
+        const std::string wisdom = wisdomPath();
+        blocked = wisdom.empty();
         if (blocked) {
             planFor(1);
             const auto row = gridArray<double>(mx);
@@ -183,18 +259,19 @@ struct HalfSpaceOperator::Fft {
             return;
         }
         real = gridArray<double>(mx * my);
+        const WisdomSession session(wisdom);
         // FFTW's 2-D real transforms: n0 = my rows of n1 = mx (row-major, x fastest).
         planFor(threads());
         forward = fftw_plan_dft_r2c_2d(static_cast<int>(my), static_cast<int>(mx), real.get(), spectral.get(),
-                                       flag);
+                                       FFTW_MEASURE);
         backward = fftw_plan_dft_c2r_2d(static_cast<int>(my), static_cast<int>(mx), spectral.get(),
-                                        real.get(), flag);
+                                        real.get(), FFTW_MEASURE);
         if (!forward || !backward) {
             destroy();
             throw ParameterError("FFT", "FFTW could not plan a " + std::to_string(mx) + " x " + std::to_string(my) +
                                             " transform");
         }
-        saveWisdom();
+        session.save();
     }
     ~Fft()
     {
@@ -329,6 +406,21 @@ void HalfSpaceOperator::Fft::rowsBackward(double* out, std::size_t rows, std::si
 
 void setFftWisdom(const std::string& path)
 {
+    if (!path.empty()) {
+        if (path.find('\0') != std::string::npos) {
+            throw ParameterError(wisdomParameter, "the file name holds a NUL byte");
+        }
+        const ExistingFile existing = existingFile(path);
+        if (existing.kind == ExistingFile::Kind::other) {
+            throw ParameterError(wisdomParameter, "'" + path + "' is " + existing.what +
+                                                      ", not a file FFTW's wisdom can be kept in: give a file name");
+        }
+        (void)wisdomText(path); // there and not wisdom: refused now, before anything is solved
+        const std::string folder = folderOf(path);
+        if (::access(folder.c_str(), X_OK) != 0) {
+            throw ParameterError(wisdomParameter, "the folder '" + folder + "' of '" + path + "' is missing");
+        }
+    }
     const std::lock_guard<std::mutex> lock(fftwPlanner());
     wisdomPath() = path;
 }

@@ -19,11 +19,15 @@ namespace roughContact {
 /// any number of threads (a processor with other SIMD instructions may get other codelets from
 /// FFTW: answers then agree to round-off). A cold solve on one core is 1.12-1.16 times faster
 /// at 1024^2 and 1.5 times at 2048^2 than with FFTW's own estimated 2-D plan (docs/benchmarks.md).
-/// A file: FFTW_MEASURE 2-D plans (timed once per grid size and thread count),
-/// kept in that file as FFTW's wisdom and read back by later runs, so that every run sharing the
-/// file uses the same plans and gets the same answer bit for bit (a run without the file, or on
-/// another machine, may choose other plans: the answers then agree to round-off, not bit for
-/// bit). The file is created when missing; operators made after the call use it.
+/// A file: FFTW_MEASURE 2-D plans (timed once per grid size and thread count), kept in that file
+/// as FFTW's wisdom. The planning of a grid holds a lock on the file's folder (one process at a
+/// time): the file read in, the plans made (found there, or timed), the file rewritten when it
+/// gained a plan (io/Files.hpp's rules). So every run sharing the file, at once or one after
+/// another, plans a grid of a size and thread count as the first did, and gets the same answer
+/// bit for bit (a run without the file, or on another machine, may choose other plans: the
+/// answers then agree to round-off). The file is created when missing; a file there that is not
+/// FFTW wisdom, or not a regular file, is refused (ParameterError) and left as it is; a folder
+/// that is missing is refused. Operators made after the call use it.
 void setFftWisdom(const std::string& path);
 const std::string& fftWisdom() noexcept;
 

@@ -6,6 +6,7 @@
 #include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/bem/HalfSpaceOperator.hpp"
 #include "roughContact/io/ArealReader.hpp"
+#include "roughContact/io/Files.hpp"
 #include "roughContact/io/Numbers.hpp"
 #include "roughContact/io/TableReader.hpp"
 #include "roughContact/material/Materials.hpp"
@@ -16,18 +17,15 @@
 
 #include <openssl/evp.h>
 
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <cstdlib>
 #include <cctype>
 #include <cstring>
-#include <fstream>
 #include <memory>
 #include <numeric>
 #include <sstream>
@@ -378,8 +376,17 @@ BoundaryElementTablePoints BoundaryElementTable::assemble(const std::vector<doub
     }
     if (out.pressures.size() < 2) {
         std::ostringstream os;
-        os << "complete contact at " << out.completeContactPressure
-           << " Pa leaves fewer than 2 points of the table below it; lower minPressure";
+        if (out.end == ContactTable::End::conductanceCeiling) {
+            // A surface so smooth for its grid (or a range starting so high) that it conducts as
+            // a bonded joint from the first load on.
+            os << "h_c/k_s = " << out.conductancesPerConductivity.back() << " 1/m at the table's first load, "
+               << out.pressures.front() << " Pa, is above the " << conductanceCeiling
+               << " 1/m at which the table ends (the joint conducts as if bonded: no contact resistance to "
+                  "tabulate); lower minPressure, or check the units of the surface's heights and spacing";
+        } else {
+            os << "complete contact at " << out.completeContactPressure
+               << " Pa leaves fewer than 2 points of the table below it; lower minPressure";
+        }
         throw ParameterError("boundary-element table", os.str());
     }
     return out;
@@ -550,47 +557,37 @@ std::string BoundaryElementTable::digest(const std::string& text)
 
 BoundaryElementTableRead BoundaryElementTable::read(const std::string& path) const
 {
-    struct stat st {};
-    if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
-        BoundaryElementTableRead r;
-        r.status = BoundaryElementTableRead::Status::corrupt;
-        r.reason = path + (S_ISDIR(st.st_mode) ? " is a directory, not a file" : " is not a regular file");
-        return r;
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        BoundaryElementTableRead r;
-        r.status = BoundaryElementTableRead::Status::missing;
+    BoundaryElementTableRead r;
+    if (existingFile(path).kind == ExistingFile::Kind::none) {
         r.reason = "there is no file " + path;
         return r;
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) {
-        BoundaryElementTableRead r;
-        r.status = BoundaryElementTableRead::Status::corrupt;
-        r.reason = "reading " + path + " failed";
+    std::string text;
+    try {
+        text = readWholeFile(path, fileLimits::maximumTableBytes, "boundary-element table");
+    } catch (const InputError& e) {
+        r.status = BoundaryElementTableRead::Status::notATable;
+        r.reason = e.message();
         return r;
     }
-    return parse(text.str());
+    if (!isBoundaryElementTableText(text)) {
+        r.status = BoundaryElementTableRead::Status::notATable;
+        r.reason = text.empty() ? std::string("is empty")
+                                : "begins '" + detail::printable(text.substr(0, 60), 60) + "', not '" + headerStem + "...'";
+        return r;
+    }
+    return parse(text);
 }
 
 void BoundaryElementTable::writeFile(const std::string& path, const BoundaryElementTablePoints& points) const
 {
-    const std::string temporary = path + ".tmp." + std::to_string(static_cast<long>(::getpid()));
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out << write(points);
-        out.flush();
-        if (!out) {
-            std::remove(temporary.c_str());
-            throw ParameterError("boundary-element table", "cannot write '" + temporary + "'");
-        }
-    }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-        std::remove(temporary.c_str());
-        throw ParameterError("boundary-element table", "cannot rename '" + temporary + "' to '" + path + "'");
-    }
+    replaceFile(path, write(points), "boundary-element table", "boundary-element table of this project",
+                isBoundaryElementTableText);
+}
+
+bool isBoundaryElementTableText(const std::string& start)
+{
+    return start.rfind(headerStem, 0) == 0;
 }
 
 namespace {
@@ -626,17 +623,16 @@ BoundaryElementTablePoints unflatten(const std::vector<double>& v, std::size_t a
     return p;
 }
 
-// Where the table will be written: checked before minutes of solving.
+// Where the table will be written: checked before minutes of solving (replaceFile's rules).
 void requireWritable(const std::string& path)
 {
-    struct stat st {};
-    if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+    const ExistingFile existing = existingFile(path);
+    if (existing.kind == ExistingFile::Kind::other) {
         throw ParameterError("boundary-element table",
-                             "'" + path + "' is " + (S_ISDIR(st.st_mode) ? "a directory" : "not a regular file") +
+                             "'" + path + "' is " + existing.what +
                                  "; the table is read from and written to this name: remove it or choose another");
     }
-    const std::size_t slash = path.rfind('/');
-    const std::string directory = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
+    const std::string directory = folderOf(path);
     if (::access(directory.c_str(), W_OK | X_OK) != 0) {
         throw ParameterError("boundary-element table", "cannot write into the directory '" + directory +
                                                            "' of '" + path + "' (missing, or not writable)");
@@ -699,8 +695,16 @@ BoundaryElementTablePoints BoundaryElementTable::loadOrBuild(const std::string& 
     std::exception_ptr failure;
     if (first) {
         try {
-            requireWritable(path);
+            if (path.empty()) {
+                throw ParameterError("boundary-element table", "the file name is empty: give the table's file");
+            }
             const BoundaryElementTableRead r = read(path);
+            if (r.status == BoundaryElementTableRead::Status::notATable) {
+                throw ParameterError("boundary-element table",
+                                     "'" + path + "' " + r.reason +
+                                         ": it is not a table of this project, so it is left as it is; give another "
+                                         "name, or remove it");
+            }
             if (r.status == BoundaryElementTableRead::Status::ok) {
                 say("reusing " + path + " (key " + key_ + "): " + std::to_string(r.points->pressures.size()) +
                         " points",
@@ -709,6 +713,7 @@ BoundaryElementTablePoints BoundaryElementTable::loadOrBuild(const std::string& 
                 const std::vector<double> points = flatten(*r.points);
                 decision.insert(decision.end(), points.begin(), points.end());
             } else {
+                requireWritable(path); // a matching table is read from a read-only folder too
                 if (r.status != BoundaryElementTableRead::Status::missing) {
                     say("the boundary-element table " + path + " is " +
                             (r.status == BoundaryElementTableRead::Status::foreign ? "foreign" : "corrupt") + ": " +

@@ -65,7 +65,9 @@ struct BoundaryElementTablePoints {
 
 /// What reading a cache file found.
 struct BoundaryElementTableRead {
-    enum class Status { ok, missing, corrupt, foreign };
+    /// notATable: a file that is no table of this project (its first line is not a table's
+    /// header, or it is not a regular file of a table's size): never replaced.
+    enum class Status { ok, missing, corrupt, foreign, notATable };
     Status status = Status::missing;
     std::string reason;                              ///< why not ok (empty when ok)
     std::optional<BoundaryElementTablePoints> points; ///< set when ok
@@ -154,20 +156,22 @@ public:
     /// SHA-256 of text as 64 lower-case hex digits: what a file's last line holds for the text
     /// above it (write() puts it there, parse() checks it).
     static std::string digest(const std::string& text);
-    /// parse() of a file; missing when it cannot be opened.
+    /// parse() of a file (io/Files.hpp's rules for a reader); missing when there is none,
+    /// notATable when it is not a table of this project.
     BoundaryElementTableRead read(const std::string& path) const;
-    /// Writes write(points) to path atomically: to a temporary name beside it, then renamed
-    /// over it. ParameterError when it cannot.
+    /// Writes write(points) to path by io/Files.hpp's rules for a writer (replaceFile): only
+    /// over a table of this project, atomically. ParameterError when it cannot.
     void writeFile(const std::string& path, const BoundaryElementTablePoints& points) const;
 
     /// What loadOrBuild says as it goes: one line for a log, and whether it is a warning (a file
     /// that was there but is not used).
     using LogCallback = std::function<void(const std::string& line, bool warning)>;
     /// The cache: the points of the file at path when read() finds them ok (this version, this
-    /// key, contents matching their digest); otherwise build(progress), then writeFile(path).
-    /// Before anything is solved, path must be a name a file can be written to (not a directory,
-    /// in a writable directory): ParameterError naming it otherwise, so that minutes of solving
-    /// are not lost at the end. log (optional) receives: reusing, why a file is not used, the
+    /// key, contents matching their digest; a read-only folder is fine then); otherwise
+    /// build(progress), then writeFile(path). A file at path that is not a table of this project
+    /// is refused (ParameterError) and left as it is. Before anything is solved, path must be a
+    /// name a file can be written to (in a writable directory): ParameterError naming it
+    /// otherwise, so that minutes of solving are not lost at the end. log (optional) receives: reusing, why a file is not used, the
     /// build's start and end.
     ///
     /// ranks (optional): the ranks of a job, every one of which calls loadOrBuild alike. Rank 0
@@ -218,5 +222,8 @@ private:
 
 /// The first line of a table file.
 inline constexpr const char* boundaryElementTableHeader = "# roughContact boundary-element table v3";
+/// True when `start` (a file's first bytes) begins as a table of this project does, of any
+/// format version: the files loadOrBuild may replace.
+bool isBoundaryElementTableText(const std::string& start);
 
 } // namespace roughContact

@@ -54,7 +54,49 @@ void requireLightLoadPeriods(std::uint64_t periods, const std::string& name)
     }
 }
 
+// A surface that holds `kept` of the given spectrum's `given` levels on periods of `periods` scan
+// lengths: at least minimumCheckedLevels (or all), else ParameterError naming the options.
+void requireLevels(std::size_t kept, std::size_t given, std::size_t periods, const SurfaceCheckOptions::Names& names)
+{
+    if (kept >= std::min(minimumCheckedLevels, given)) {
+        return;
+    }
+    std::ostringstream os;
+    os << "the check's surfaces " << (periods > 1 ? "on periods of " + std::to_string(periods) + " scan lengths " : "")
+       << "would hold " << kept << " of the surface's " << given << " levels, fewer than the "
+       << minimumCheckedLevels << " a check of this surface needs: give a larger grid (" << names.gridSize << ")"
+       << (periods > 1 ? " or a shorter light-load period (" + names.lightLoadPeriods + ")" : std::string());
+    throw ParameterError(periods > 1 ? names.lightLoadPeriods : names.gridSize, os.str());
+}
+
 } // namespace
+
+double longPeriodWeight(double loadPerGradient)
+{
+    if (!(loadPerGradient > smallCellLoadPerGradient)) {
+        return 1.0;
+    }
+    if (!(loadPerGradient < checkBlendEnd)) {
+        return 0.0;
+    }
+    const double w = std::log(checkBlendEnd / loadPerGradient) / std::log(checkBlendEnd / smallCellLoadPerGradient);
+    // A pressure spaced onto an end (4 across 1e-4 to 1e-1 put two there) is at the end whatever
+    // its last digit.
+    return w < 1e-9 ? 0.0 : w > 1.0 - 1e-9 ? 1.0 : w;
+}
+
+double joinPeriods(double onePeriod, double longPeriod, double weight)
+{
+    if (!(weight > 0.0)) {
+        return onePeriod;
+    }
+    if (!(weight < 1.0)) {
+        return longPeriod;
+    }
+    const bool logs = std::isfinite(onePeriod) && std::isfinite(longPeriod) && onePeriod > 0.0 && longPeriod > 0.0;
+    return logs ? std::exp((1.0 - weight) * std::log(onePeriod) + weight * std::log(longPeriod))
+                : (1.0 - weight) * onePeriod + weight * longPeriod;
+}
 
 std::size_t checkedLightLoadPeriods(std::uint64_t periods, const std::vector<SurfaceSpec>& surfaces,
                                     const std::string& name)
@@ -96,15 +138,22 @@ std::string SurfaceCheck::report() const
     std::ostringstream os;
     os << "check of the surface: " << surface << "; " << regime << ", E' = " << number(reducedModulus)
        << " Pa, h' = " << number(gradient) << "\n";
-    if (levelsKept < levelsGiven && onePeriodPressures > 0) {
-        os << "  the check holds the surface's " << levelsKept << " longest levels of " << levelsGiven
-           << " (the finest a " << "grid resolves with 8 cells a wavelength); the laws are held to "
-              "the exact answer on that surface\n";
+    if (onePeriodPressures > 0) {
+        os << "  the check holds ";
+        if (levelsKept < levelsGiven) {
+            os << "the surface's " << levelsKept << " longest levels of " << levelsGiven
+               << " (the finest a grid resolves with 8 cells a wavelength)";
+        } else {
+            os << "all the surface's " << levelsGiven << " levels";
+        }
+        os << "; the laws are held to the exact answer on that surface\n";
     }
-    if (lightLoadPeriods > 1) {
-        os << "  below p/(E' h') = " << smallCellLoadPerGradient << " the check solves periods of " << lightLoadPeriods
-           << " scan lengths on the same grid: the surface's " << lightLevelsKept
-           << " longest levels on that period (wavelengths down to 8 cells), the laws held to them there\n";
+    if (lightLevelsOfGiven > 0) {
+        os << "  up to p/(E' h') = " << smallCellLoadPerGradient << " the check solves periods of " << lightLoadPeriods
+           << " scan lengths on the same grid, which hold the surface's " << lightLevelsOfGiven << " longest levels of "
+           << levelsGiven << " (" << lightLevelsKept << " levels on that period, wavelengths down to 8 cells), the laws "
+           << "held to them there; from there to p/(E' h') = " << checkBlendEnd
+           << " both are solved and joined, the longer period's weight falling from 1 to 0\n";
     }
     if (!dropped.empty()) {
         // With as many digits as it takes to tell each dropped pressure from the range's ends (a
@@ -255,11 +304,34 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
             options.log(line);
         }
     };
-    if (options.pressureCount < 1 || options.pressureCount > 5) {
-        throw ParameterError("check pressures", "check 1 to 5 pressures, not " + std::to_string(options.pressureCount));
+    const SurfaceCheckOptions::Names& names = options.names;
+    if (options.pressureCount < 1 || options.pressureCount > maximumCheckedPressures) {
+        throw ParameterError(names.pressures, "check 1 to " + std::to_string(maximumCheckedPressures) +
+                                                  " pressures, not " + std::to_string(options.pressureCount));
+    }
+    if (options.pressures.size() > maximumCheckedPressures) {
+        throw ParameterError(names.pressures, "the check solves at most " + std::to_string(maximumCheckedPressures) +
+                                                  " pressures, " + std::to_string(options.pressures.size()) +
+                                                  " were given: give at most " +
+                                                  std::to_string(maximumCheckedPressures));
+    }
+    for (double P : options.pressures) {
+        if (!std::isfinite(P)) {
+            throw ParameterError(names.pressures, "a pressure is " + limits::valueText(P, "Pa") +
+                                                      ": give finite pressures in Pa");
+        }
     }
     if (options.seeds.empty()) {
-        throw ParameterError("check seeds", "give at least one seed");
+        throw ParameterError(names.seeds, "give at least one seed");
+    }
+    for (std::size_t i = 0; i < options.seeds.size(); ++i) {
+        for (std::size_t j = 0; j < i; ++j) {
+            if (options.seeds[i] == options.seeds[j]) {
+                throw ParameterError(names.seeds, "seed " + std::to_string(options.seeds[i]) +
+                                                      " is given twice: the same seed is the same surface, solved "
+                                                      "again; give different seeds");
+            }
+        }
     }
     SurfaceCheck out;
     if (!spec.materials) {
@@ -275,9 +347,9 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     }
     out.regime = out.hardness ? "capped at H = " + number(*out.hardness) + " Pa" : std::string("elastic");
 
-    // The surfaces solved, and the spectrum the laws see: one part, or for a 1-D description two
-    // (the pressures at p/(E' h') >= smallCellLoadPerGradient on periods of one scan length, the
-    // lighter ones on periods of options.lightLoadPeriods scan lengths).
+    // The surfaces solved, and the spectrum the laws see, in parts: a map's one part; for a 1-D
+    // description the surface on one scan length and, where light pressures are checked, on
+    // periods of options.lightLoadPeriods scan lengths (SurfaceCheck.hpp, "how the periods join").
     struct Part {
         Spectrum lawSpectrum;
         std::vector<ArealSurface> solved;
@@ -286,7 +358,8 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     const Spectrum given = equivalentSurface(spec.surfaces);
     out.levelsGiven = given.size();
     const bool areal = spec.surfaces.front().kind == SurfaceSpec::Kind::areal;
-    std::vector<Part> parts;
+    std::optional<Part> onePart;
+    std::optional<Part> longer;
     bool periodic = true;
     bool mirrored = false;
     std::optional<Detrend> detrend = spec.detrend;
@@ -295,16 +368,21 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     const auto cut = [n](const Spectrum& s) {
         return s.truncated(std::max(double(n / 8) / s.length(), s.frequencies().front()) * (1.0 + 1e-12));
     };
+    // The given spectrum's levels up to a frequency [1/m].
+    const auto levelsUpTo = [&](double f) {
+        const std::vector<double>& g = given.frequencies();
+        return static_cast<std::size_t>(std::upper_bound(g.begin(), g.end(), f * (1.0 + 1e-12)) - g.begin());
+    };
     if (areal) {
         for (const SurfaceSpec& s : spec.surfaces) {
             if (s.kind != SurfaceSpec::Kind::areal) {
                 throw ParameterError("surfaces", "check two areal maps or two 1-D descriptions, not one of each");
             }
         }
-        parts.push_back({given, {arealComposite(spec.surfaces)}, {}}); // as the boundaryElement model reads it
+        onePart = Part{given, {arealComposite(spec.surfaces)}, {}}; // as the boundaryElement model reads it
         periodic = spec.periodic.value_or(false);
         mirrored = spec.mirror.value_or(false);
-        const ArealSurface& map = parts[0].solved[0];
+        const ArealSurface& map = onePart->solved[0];
         std::ostringstream os;
         os << "the map " << map.source() << " (" << map.nx() << " x " << map.ny()
            << (mirrored ? ", mirrored)" : periodic ? ", periodic)" : ", non-periodic)");
@@ -314,12 +392,16 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
             throw ParameterError("mirror", "is for areal maps; a surface synthesized from a 1-D description is "
                                            "periodic already");
         }
-        limits::requireSynthesisSize("check grid", n);
-        requireLightLoadPeriods(options.lightLoadPeriods, "check light-load periods");
-        parts.push_back({cut(given), {}, {}});
+        limits::requireSynthesisSize(names.gridSize, n);
+        requireLightLoadPeriods(options.lightLoadPeriods, names.lightLoadPeriods);
+        onePart = Part{cut(given), {}, {}};
     }
-    out.levelsKept = parts[0].lawSpectrum.size();
-    out.gradient = arealRmsGradient(spectralMoments(parts[0].lawSpectrum));
+    Part& one = *onePart;
+    // A surface too smooth to have contact spots is said as such, before any range is derived
+    // from its gradient.
+    limits::requireRoughness(one.lawSpectrum);
+    out.levelsKept = one.lawSpectrum.size();
+    out.gradient = arealRmsGradient(spectralMoments(one.lawSpectrum));
 
     // The pressures: the table's range clipped to where the exact model and the laws are compared.
     double lo = spec.minPressure;
@@ -341,7 +423,7 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     };
     if (!options.pressures.empty()) {
         for (double P : options.pressures) {
-            if (std::isfinite(P) && P >= lo * (1 - 1e-12) && P <= hi * (1 + 1e-12)) {
+            if (P >= lo * (1 - 1e-12) && P <= hi * (1 + 1e-12)) {
                 out.pressures.push_back(P);
             } else {
                 out.dropped.push_back(P);
@@ -349,12 +431,9 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
         }
         std::sort(out.pressures.begin(), out.pressures.end());
         out.pressures.erase(std::unique(out.pressures.begin(), out.pressures.end()), out.pressures.end());
-        if (out.pressures.size() > 5) {
-            throw ParameterError("check pressures", "check at most 5 pressures");
-        }
         if (out.pressures.empty()) {
-            throw ParameterError("check pressures", "none of the pressures given lies in the checked range: " +
-                                                        describeRange());
+            throw ParameterError(names.pressures, "none of the pressures given lies in the checked range: " +
+                                                      describeRange());
         }
     } else {
         if (!(hi > lo)) {
@@ -367,69 +446,87 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
             out.pressures.push_back(k == 1 ? std::sqrt(lo * hi) : lo * std::pow(hi / lo, double(i) / double(k - 1)));
         }
     }
+    const std::size_t count = out.pressures.size();
 
-    // The parts' pressures and surfaces: a profile's or spectrum's lighter pressures on periods
-    // of lightLoadPeriods scan lengths (the same grid, so the levels cut at that period's
-    // gridSize/8; Spectrum::onPeriod).
+    // How the periods join: each pressure's weight of the longer period, 1 up to
+    // smallCellLoadPerGradient, 0 from checkBlendEnd on, log-linear in p/(E' h') between
+    // (SurfaceCheck.hpp). A map, or a light-load period of one scan length: 0 everywhere.
     const std::size_t periods = areal ? 1 : options.lightLoadPeriods;
-    std::vector<std::size_t> light;
-    for (std::size_t i = 0; i < out.pressures.size(); ++i) {
-        // Below the threshold by more than rounding: a pressure spaced onto p/(E' h') = 1e-3 itself
-        // (4 across 1e-4 to 1e-1) is a heavy one whatever its last digit.
-        const bool isLight =
-            !areal && out.pressures[i] < smallCellLoadPerGradient * Ep * out.gradient * (1.0 - 1e-9);
-        (isLight ? light : parts[0].at).push_back(i);
+    out.longPeriodWeights.assign(count, 0.0);
+    if (periods > 1) {
+        for (std::size_t i = 0; i < count; ++i) {
+            out.longPeriodWeights[i] = longPeriodWeight(out.pressures[i] / (Ep * out.gradient));
+        }
     }
-    if (!light.empty() && periods > 1) {
+    for (std::size_t i = 0; i < count; ++i) {
+        if (out.longPeriodWeights[i] < 1.0) {
+            one.at.push_back(i);
+        }
+    }
+    std::vector<std::size_t> onLonger;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (out.longPeriodWeights[i] > 0.0) {
+            onLonger.push_back(i);
+        }
+    }
+    out.onePeriodPressures = one.at.size();
+    if (!one.at.empty() && !areal) {
+        requireLevels(levelsUpTo(double(n / 8) / given.length()), given.size(), 1, names);
+    }
+    if (!onLonger.empty()) {
         // Only the levels up to the longer period's cut are needed, and three beyond it so that the
         // bins and the interpolation up to the cut are the whole spectrum's (a long profile's
         // spectrum on a longer period would otherwise hold `periods` times all its levels).
         const std::vector<double>& f = given.frequencies();
         const double top = double(n / 8) / (given.length() * double(periods));
-        const std::size_t needed =
-            static_cast<std::size_t>(std::upper_bound(f.begin(), f.end(), top * (1.0 + 1e-12)) - f.begin()) + 3;
+        out.lightLevelsOfGiven = levelsUpTo(top);
+        requireLevels(out.lightLevelsOfGiven, given.size(), periods, names);
+        const std::size_t needed = levelsUpTo(top) + 3;
         const Spectrum levels = needed < f.size() ? given.truncated(f[needed - 1]) : given;
-        parts.push_back({cut(levels.onPeriod(periods)), {}, light});
+        longer = Part{cut(levels.onPeriod(periods)), {}, onLonger};
         out.lightLoadPeriods = periods;
-        out.lightLevelsKept = parts.back().lawSpectrum.size();
-    } else {
-        parts[0].at.insert(parts[0].at.end(), light.begin(), light.end());
-        std::sort(parts[0].at.begin(), parts[0].at.end());
+        out.lightLevelsKept = longer->lawSpectrum.size();
     }
-    out.onePeriodPressures = parts[0].at.size();
-    if (parts[0].at.empty()) {
-        parts.erase(parts.begin());
+    std::vector<Part*> parts;
+    if (!one.at.empty()) {
+        parts.push_back(&one);
+    }
+    if (longer) {
+        parts.push_back(&*longer);
     }
     if (!areal) {
-        for (Part& part : parts) {
+        for (Part* part : parts) {
             for (std::uint64_t seed : options.seeds) {
-                part.solved.push_back(synthesizeIsotropic(part.lawSpectrum, n, seed, "synthesized from " + given.source()));
+                part->solved.push_back(
+                    synthesizeIsotropic(part->lawSpectrum, n, seed, "synthesized from " + given.source()));
             }
         }
         std::ostringstream os;
         os << options.seeds.size() << (options.seeds.size() == 1 ? " seed" : " seeds") << " of " << n << " x " << n
            << " synthesized from " << given.source();
-        if (out.lightLoadPeriods > 1) {
-            os << " (below p/(E' h') = " << smallCellLoadPerGradient << " on periods of " << out.lightLoadPeriods
-               << " scan lengths)";
+        if (longer) {
+            os << " (up to p/(E' h') = " << smallCellLoadPerGradient << " on periods of " << out.lightLoadPeriods
+               << " scan lengths, joining one scan length's by " << checkBlendEnd << ")";
         }
         out.surface = os.str();
     }
 
-    if (!light.empty()) {
+    if (longer) {
         double heaviest = 0.0;
-        for (std::size_t i : light) {
-            heaviest = std::max(heaviest, out.pressures[i]);
+        for (std::size_t i : longer->at) {
+            if (out.longPeriodWeights[i] >= 1.0) {
+                heaviest = std::max(heaviest, out.pressures[i]);
+            }
         }
         std::ostringstream os;
-        os << "below p/(E' h') = " << smallCellLoadPerGradient << " (" << light.size()
-           << " of the checked pressures, up to " << number(heaviest) << " Pa) the exact answer is a periodic cell "
-           << (out.lightLoadPeriods > 1 ? std::to_string(out.lightLoadPeriods) + " scan lengths" : std::string("one scan length"))
-           << " on a side, which may conduct more than a large joint of this finish (on periods of 8 scan lengths the "
-              "exact answer at p/(E' h') = 1e-4 was down to about a quarter of one scan length's where the longest "
-              "wave holds most of the heights, about the same where the spectrum rolls off well below it; less apart "
-              "by 1e-3): there the exact answer below may be too high for a large joint, and the laws' ratios to it "
-              "too low (the default law is fitted on periods of 8 scan lengths; docs/checking.md)";
+        os << "up to p/(E' h') = " << smallCellLoadPerGradient << " the exact answer is a periodic cell "
+           << out.lightLoadPeriods
+           << " scan lengths on a side, which may conduct more than a large joint of this finish (on periods of 8 "
+              "scan lengths the exact answer at p/(E' h') = 1e-4 was down to about a quarter of one scan length's "
+              "where the longest wave holds most of the heights, about the same where the spectrum rolls off well "
+              "below it; less apart by 1e-3): there the exact answer below may be too high for a large joint, and "
+              "the laws' ratios to it too low (the default law is fitted on periods of 8 scan lengths; "
+              "docs/checking.md)";
         out.smallCellNote = os.str();
     }
 
@@ -447,13 +544,13 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     std::vector<std::unique_ptr<MultiscaleModel>> multiscales;
     std::vector<std::vector<std::pair<std::string, std::unique_ptr<ConductanceLaw>>>> laws(parts.size());
     for (std::size_t k = 0; k < parts.size(); ++k) {
-        multiscales.push_back(std::make_unique<MultiscaleModel>(parts[k].lawSpectrum, Ep,
+        multiscales.push_back(std::make_unique<MultiscaleModel>(parts[k]->lawSpectrum, Ep,
                                                                 makeAsperityModel(areaModel, materials)));
         ConductanceLawInputs in;
         in.multiscale = multiscales.back().get();
-        in.spectrum = &parts[k].lawSpectrum;
+        in.spectrum = &parts[k]->lawSpectrum;
         in.Eprime = Ep;
-        in.roughness = areal ? equivalentRoughness(spec.surfaces) : spectrumRoughness(parts[k].lawSpectrum);
+        in.roughness = areal ? equivalentRoughness(spec.surfaces) : spectrumRoughness(parts[k]->lawSpectrum);
         // The surfaces checked on are the map's heights, or Gaussian ones synthesized from a spectrum.
         if (areal) {
             in.skewness = equivalentSkewness(spec.surfaces);
@@ -475,17 +572,19 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
         }
     }
 
-    // The exact conductance on every solved surface.
+    // The exact conductance on every solved surface: per part and pressure, the log-mean over
+    // the seeds, the mean area and the seeds' extremes.
     BoundaryElementOptions bo;
     bo.periodic = periodic;
     bo.mirrored = mirrored;
     bo.hardness = out.hardness;
     bo.detrend = detrend;
-    const std::size_t count = out.pressures.size();
-    std::vector<double> logSum(count, 0.0);
-    std::vector<double> areaSum(count, 0.0);
-    out.exactHPerKLow.assign(count, std::numeric_limits<double>::infinity());
-    out.exactHPerKHigh.assign(count, 0.0);
+    struct Exact {
+        std::vector<double> logMean, area, logLow, logHigh;
+    };
+    std::vector<Exact> exact(parts.size(), Exact{std::vector<double>(count, 0.0), std::vector<double>(count, 0.0),
+                                                 std::vector<double>(count, std::numeric_limits<double>::infinity()),
+                                                 std::vector<double>(count, -std::numeric_limits<double>::infinity())});
     log("check: the exact model on " + out.surface + ", " + out.regime + ", at " +
         (count == 1 ? "1 pressure, " + number(out.pressures.front()) + " Pa"
                     : std::to_string(count) + " pressures from " + number(out.pressures.front()) + " to " +
@@ -494,11 +593,12 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
     std::size_t surfaces = 0;
-    for (const Part& part : parts) {
-        surfaces += part.solved.size();
+    for (const Part* part : parts) {
+        surfaces += part->solved.size();
     }
     std::size_t done = 0;
-    for (const Part& part : parts) {
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        const Part& part = *parts[k];
         std::vector<double> loads;
         for (std::size_t i : part.at) {
             loads.push_back(checkLoad(out.pressures[i] / Ep));
@@ -507,9 +607,9 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
             ++done;
             const BoundaryElementModel model(surface, Ep, bo);
             const std::vector<BoundaryElementPoint> points =
-                model.curve(loads, [&](std::size_t k, std::size_t total, const BoundaryElementPoint& p) {
+                model.curve(loads, [&](std::size_t j, std::size_t total, const BoundaryElementPoint& p) {
                     std::ostringstream os;
-                    os << "check: surface " << done << " of " << surfaces << ", pressure " << k << " of " << total
+                    os << "check: surface " << done << " of " << surfaces << ", pressure " << j << " of " << total
                        << ": A_r/A_n = " << number(p.areaFraction)
                        << ", h_c/k_s = " << number(p.conductancePerConductivity) << " 1/m; " << number(seconds())
                        << " s";
@@ -534,21 +634,39 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
                                                              : std::string("no contact, or complete contact")) +
                                                       "): check other pressures");
                 }
-                logSum[i] += std::log(h);
-                areaSum[i] += points[j].areaFraction;
-                out.exactHPerKLow[i] = std::min(out.exactHPerKLow[i], h);
-                out.exactHPerKHigh[i] = std::max(out.exactHPerKHigh[i], h);
+                exact[k].logMean[i] += std::log(h) / double(part.solved.size());
+                exact[k].area[i] += points[j].areaFraction / double(part.solved.size());
+                exact[k].logLow[i] = std::min(exact[k].logLow[i], std::log(h));
+                exact[k].logHigh[i] = std::max(exact[k].logHigh[i], std::log(h));
             }
         }
     }
-    out.exactHPerK.assign(count, 0.0);
-    out.exactArea.assign(count, 0.0);
-    for (const Part& part : parts) { // every pressure is in one part, solved on its surfaces (>= 1 seed)
-        const double solved = double(part.solved.size());
-        for (std::size_t i : part.at) {
-            out.exactHPerK[i] = std::exp(logSum[i] / solved);
-            out.exactArea[i] = areaSum[i] / solved;
+    // Each pressure's values from its parts: the longer period's with its weight, one scan
+    // length's with the rest (joinPeriods; one part alone where the weight is 0 or 1).
+    const Part* longPart = longer ? &*longer : nullptr;
+    const auto partIndex = [&](const Part* p) {
+        for (std::size_t k = 0; k < parts.size(); ++k) {
+            if (parts[k] == p) {
+                return k;
+            }
         }
+        return parts.size();
+    };
+    const std::size_t kOne = partIndex(&one);
+    const std::size_t kLong = partIndex(longPart);
+    const auto joined = [&](std::size_t i, const std::function<double(std::size_t k)>& value) {
+        const double w = out.longPeriodWeights[i];
+        return joinPeriods(w < 1.0 ? value(kOne) : 0.0, w > 0.0 ? value(kLong) : 0.0, w);
+    };
+    out.exactHPerK.assign(count, 0.0);
+    out.exactHPerKLow.assign(count, 0.0);
+    out.exactHPerKHigh.assign(count, 0.0);
+    out.exactArea.assign(count, 0.0);
+    for (std::size_t i = 0; i < count; ++i) {
+        out.exactHPerK[i] = joined(i, [&](std::size_t k) { return std::exp(exact[k].logMean[i]); });
+        out.exactHPerKLow[i] = joined(i, [&](std::size_t k) { return std::exp(exact[k].logLow[i]); });
+        out.exactHPerKHigh[i] = joined(i, [&](std::size_t k) { return std::exp(exact[k].logHigh[i]); });
+        out.exactArea[i] = joined(i, [&](std::size_t k) { return exact[k].area[i]; });
     }
 
     double best = std::numeric_limits<double>::infinity();
@@ -562,11 +680,10 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
         }
         checked.hPerK.assign(count, 0.0);
         checked.ratio.assign(count, 0.0);
-        for (std::size_t k = 0; k < parts.size(); ++k) {
-            for (std::size_t i : parts[k].at) {
-                checked.hPerK[i] = laws[k][l].second->perConductivity(out.pressures[i]);
-                checked.ratio[i] = checked.hPerK[i] / out.exactHPerK[i];
-            }
+        for (std::size_t i = 0; i < count; ++i) {
+            checked.hPerK[i] =
+                joined(i, [&](std::size_t k) { return laws[k][l].second->perConductivity(out.pressures[i]); });
+            checked.ratio[i] = checked.hPerK[i] / out.exactHPerK[i];
         }
         for (double r : checked.ratio) {
             const double factor = r >= 1.0 ? r : 1.0 / r;

@@ -13,7 +13,7 @@
 // from p/E' of about 1e-3 on). The laws are built on the same cut spectrum, so law and exact
 // see one surface; what the cut leaves out is said (levels kept of levels given).
 //
-// At light loads a larger period. A profile's or spectrum's pressures below p/(E' h') =
+// At light loads a larger period. A profile's or spectrum's pressures up to p/(E' h') =
 // smallCellLoadPerGradient (MeasuredAccuracy.hpp) are solved on periods of lightLoadPeriods scan
 // lengths (default 4) on the same grid: the spectrum on that period (Spectrum::onPeriod) cut at
 // its gridSize/8 levels, so the same cost with wavelengths down to 8 cells of the longer period,
@@ -21,6 +21,13 @@
 // those loads and may conduct far more than a large joint (docs/checking.md gives what two and
 // four scan lengths gained against periods of 8 on the report's spectra: four gave the default
 // law's verdict as a period of 8 does at 78 of 84 points, two at 69, one at 45).
+//
+// How the periods join. From smallCellLoadPerGradient to checkBlendEnd both surfaces are solved
+// and every value (the exact h_c/k_s and A_r/A_n, each law's h_c/k_s) is the geometric mean of
+// the two with the longer period's weight falling log-linearly in p/(E' h') from 1 to 0
+// (longPeriodWeight, joinPeriods), so the reference is continuous in the load; from checkBlendEnd
+// on, one scan length alone. The check refuses a grid and period that keep fewer than
+// minimumCheckedLevels of the surface's levels (naming the options).
 //
 // Elastic or capped as the materials say: the cap p <= H where the spec gives a hardness (or
 // hardnessFromYield) or the yielding material has S_y (H = 2.84 S_y), elastic otherwise.
@@ -47,22 +54,46 @@ namespace roughContact {
 
 /// A law off the exact conductance by more than this fraction is said to miss it.
 inline constexpr double checkTolerance = 0.25;
+/// The most pressures one check solves.
+inline constexpr std::size_t maximumCheckedPressures = 5;
+/// p/(E' h') from which the check solves one scan length alone (How the periods join).
+inline constexpr double checkBlendEnd = 1e-2;
+/// The fewest of the surface's levels a checked surface may hold (or all of them, when the
+/// surface has fewer): below it the check is not of this surface.
+inline constexpr std::size_t minimumCheckedLevels = 4;
+
+/// The longer period's weight at p/(E' h') = x: 1 up to smallCellLoadPerGradient, 0 from
+/// checkBlendEnd, log(checkBlendEnd/x)/log(checkBlendEnd/smallCellLoadPerGradient) between.
+double longPeriodWeight(double loadPerGradient);
+/// onePeriod^(1 - w) longPeriod^w (the value on one scan length and on the longer period); a
+/// weight of 0 or 1 gives the one value as it is, and a value not positive and finite joins
+/// linearly.
+double joinPeriods(double onePeriod, double longPeriod, double weight);
 
 struct SurfaceCheckOptions {
     /// Grid of the synthesized surfaces (N x N, even, 8 to 4096).
     std::size_t gridSize = 512;
-    /// Seeds of the synthesized surfaces (a measured map is solved once).
+    /// Seeds of the synthesized surfaces, each once (a measured map is solved once).
     std::vector<std::uint64_t> seeds{1, 2, 3};
-    /// Pressures checked, 1 to 5.
+    /// Pressures checked across the range, 1 to maximumCheckedPressures.
     std::size_t pressureCount = 4;
-    /// Pressures [Pa] to check instead of the spec's range (each within the clipped range is
-    /// kept; none left is a ParameterError).
+    /// Pressures [Pa] to check instead of the spec's range, at most maximumCheckedPressures and
+    /// finite (each within the clipped range is kept; none left is a ParameterError).
     std::vector<double> pressures;
-    /// A profile's or spectrum's pressures below p/(E' h') = smallCellLoadPerGradient are solved
-    /// on periods of this many scan lengths (1 to 64; 1: one scan length at every pressure).
+    /// A profile's or spectrum's pressures up to p/(E' h') = smallCellLoadPerGradient are solved
+    /// on periods of this many scan lengths, and joined with one scan length's up to
+    /// checkBlendEnd (1 to 64; 1: one scan length at every pressure).
     std::size_t lightLoadPeriods = 4;
     /// A line for a log, at the start and after each solve.
     std::function<void(const std::string&)> log;
+    /// How the front-end names these options in errors (the CLI's --synthesize, the contact
+    /// entry's checkPeriods, Python's light_load_periods, ...).
+    struct Names {
+        std::string gridSize = "check grid";
+        std::string seeds = "check seeds";
+        std::string pressures = "check pressures";
+        std::string lightLoadPeriods = "check light-load periods";
+    } names;
 };
 
 struct CheckedLaw {
@@ -86,10 +117,14 @@ struct SurfaceCheck {
     double gradient = 0.0;     ///< h': areal rms gradient of the checked surface
     std::size_t levelsKept = 0;  ///< levels of the spectrum in the check (the laws')
     std::size_t levelsGiven = 0; ///< levels of the spectrum given
-    /// The period [scan lengths] of the pressures below p/(E' h') = smallCellLoadPerGradient (1:
+    /// The period [scan lengths] of the pressures up to p/(E' h') = smallCellLoadPerGradient (1:
     /// none solved on a longer one), and the levels of the spectrum on it that the check holds.
     std::size_t lightLoadPeriods = 1;
     std::size_t lightLevelsKept = 0;
+    /// The given spectrum's levels that the longer period's cut surface holds (0: none solved).
+    std::size_t lightLevelsOfGiven = 0;
+    /// Each pressure's weight of the longer period (longPeriodWeight; 0 for a map).
+    std::vector<double> longPeriodWeights;
     /// How many of the pressures were solved on one scan length (levelsKept's surface): all of a
     /// map's, none where every one is light and solved on the longer period.
     std::size_t onePeriodPressures = 0;
@@ -108,9 +143,9 @@ struct SurfaceCheck {
     /// A map solved padded near complete contact: that its exact h_c is not to be trusted at
     /// some pressures (patchCorrectionWarning) and the ratios there neither; empty otherwise.
     std::string exactWarning;
-    /// A profile or spectrum checked at p/(E' h') below smallCellLoadPerGradient (MeasuredAccuracy.hpp):
-    /// that its exact answer there is a periodic cell's (lightLoadPeriods scan lengths), which may
-    /// still be too high for a large joint; empty otherwise (and for a map).
+    /// A profile or spectrum checked where the longer period takes part (p/(E' h') below
+    /// checkBlendEnd): that its exact answer there is a periodic cell's (lightLoadPeriods scan
+    /// lengths), which may still be too high for a large joint; empty otherwise (and for a map).
     std::string smallCellNote;
     double seconds = 0.0;                ///< the time the check took
 

@@ -3,6 +3,7 @@
 #include "roughContact/io/MatrixReader.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/io/Files.hpp"
 #include "roughContact/Limits.hpp"
 #include "roughContact/io/TableReader.hpp"
 
@@ -58,7 +59,7 @@ private:
 
 ArealSurface readMatrix(const std::string& path, const MatrixReadOptions& options)
 {
-    std::ifstream in = detail::openInputFile(path);
+    InputFile in(path, fileLimits::maximumTextBytes, "height map");
     return readMatrix(in, path, options);
 }
 

@@ -2,6 +2,7 @@
 #include "roughContact/io/NpyReader.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/io/Files.hpp"
 #include "roughContact/Limits.hpp"
 
 #include <algorithm>
@@ -9,7 +10,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <sstream>
 #include <vector>
 
@@ -25,6 +25,10 @@ std::string headerValue(const std::string& header, const std::string& key, const
     std::size_t at = header.find(quoted);
     if (at == std::string::npos) {
         throw InputError(path, 0, "the .npy header has no '" + key + "': " + header);
+    }
+    if (header.find(quoted, at + quoted.size()) != std::string::npos) {
+        // numpy's literal_eval would take the last; a header numpy.save wrote has each key once.
+        throw InputError(path, 0, "the .npy header gives '" + key + "' more than once: " + header);
     }
     at = header.find(':', at + quoted.size());
     if (at == std::string::npos) {
@@ -78,10 +82,7 @@ ArealSurface readNpy(const std::string& path, const MatrixReadOptions& options)
     const double dx = limits::requireLength("dx", requirePositive("dx", *options.dx) * scale);
     const double dy = options.dy ? limits::requireLength("dy", requirePositive("dy", *options.dy) * scale) : dx;
 
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw InputError(path, 0, "cannot open the file for reading");
-    }
+    InputFile in(path, fileLimits::maximumNpyBytes, ".npy");
     char magic[8] = {};
     in.read(magic, 8);
     if (!in || std::memcmp(magic, "\x93NUMPY", 6) != 0) {

@@ -3,6 +3,7 @@
 #include "roughContact/io/ProfileReader.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/io/Files.hpp"
 #include "roughContact/Limits.hpp"
 #include "roughContact/io/TableReader.hpp"
 
@@ -154,7 +155,7 @@ private:
 
 Profile readProfile(const std::string& path, const ProfileReadOptions& options)
 {
-    std::ifstream in = detail::openInputFile(path);
+    InputFile in(path, fileLimits::maximumTextBytes, "profile");
     return readProfile(in, path, options);
 }
 

@@ -3,6 +3,7 @@
 #include "roughContact/io/SpectrumReader.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/io/Files.hpp"
 #include "roughContact/Limits.hpp"
 #include "roughContact/io/Numbers.hpp"
 #include "roughContact/io/TableReader.hpp"
@@ -41,7 +42,7 @@ Spectrum readSpectrum(const std::string& path, std::optional<double> length)
     if (length) {
         requirePositive("length", *length);
     }
-    std::ifstream in = detail::openInputFile(path);
+    InputFile in(path, fileLimits::maximumTextBytes, "spectrum");
     return readSpectrum(in, path, length);
 }
 

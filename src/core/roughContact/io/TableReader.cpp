@@ -3,15 +3,13 @@
 #include "roughContact/io/TableReader.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/io/Files.hpp"
 #include "roughContact/io/Numbers.hpp"
-
-#include <sys/stat.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <istream>
 #include <memory>
 #include <sstream>
@@ -260,23 +258,6 @@ std::string printable(const std::string& text, std::size_t maxLength)
     return shown;
 }
 
-std::ifstream openInputFile(const std::string& path)
-{
-    if (path.find('\0') != std::string::npos) {
-        // The operating system would open the name up to the NUL: another file than was named.
-        throw InputError(printable(path, 200), 0, "the file name holds a NUL byte; give the name alone");
-    }
-    struct stat st {};
-    if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
-        throw InputError(path, 0, "is a directory, not a file");
-    }
-    std::ifstream in(path, std::ios::in | std::ios::binary);
-    if (!in) {
-        throw InputError(path, 0, "cannot open the file for reading");
-    }
-    return in;
-}
-
 Table scanTable(std::istream& in, const std::string& name, const TableReadOptions& options,
                 TableSink& sink)
 {
@@ -322,7 +303,7 @@ Table readTable(std::istream& in, const std::string& name, const TableReadOption
 
 Table readTable(const std::string& path, const TableReadOptions& options)
 {
-    std::ifstream in = openInputFile(path);
+    InputFile in(path, fileLimits::maximumTextBytes, "table");
     return readTable(in, path, options);
 }
 

@@ -72,9 +72,6 @@ Table readTable(std::istream& in, const std::string& name, const TableReadOption
 Table scanTable(std::istream& in, const std::string& name, const TableReadOptions& options,
                 TableSink& sink);
 
-/// The file at path opened for reading; throws InputError(path, 0, ...) when it cannot be.
-std::ifstream openInputFile(const std::string& path);
-
 /// text as an error message echoes it: bytes outside printable ASCII as \xNN, and cut with
 /// "..." after about maxLength characters (a bad field may be a megabyte long or binary).
 std::string printable(const std::string& text, std::size_t maxLength = 40);

@@ -4,6 +4,7 @@
 #include "roughContact/io/X3pReader.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/io/Files.hpp"
 #include "roughContact/FloatingPoint.hpp"
 #include "roughContact/Limits.hpp"
 #include "roughContact/io/TableReader.hpp"
@@ -17,7 +18,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <iterator>
 #include <limits>
 #include <memory>
@@ -716,12 +716,7 @@ void fillInvalidPoints(std::vector<double>& z, std::vector<char>& valid, std::si
 
 ArealSurface readX3p(const std::string& path, const X3pReadOptions& options)
 {
-    std::ifstream in = detail::openInputFile(path);
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) {
-        throw InputError(path, 0, "cannot read the file (read error)");
-    }
-    return readX3pBytes(bytes, path, options);
+    return readX3pBytes(readWholeFile(path, fileLimits::maximumX3pBytes, "X3P"), path, options);
 }
 
 ArealSurface readX3pBytes(const std::string& bytes, const std::string& name, const X3pReadOptions& options)

@@ -24,5 +24,9 @@ public:
 
 /// Throws ParameterError unless load is finite and >= 0.
 double checkLoad(double load);
+/// The load F/(A_n E') = P/E' of a nominal pressure P [Pa] within checkLoad's range (-0 read as
+/// 0); a pressure above 0 whose load falls below the range, an underflow to 0 included, is
+/// refused as such. ParameterError("pressure", ...) naming P, E' and the load otherwise.
+double loadOfPressure(double pressure, double Eprime);
 
 } // namespace roughContact

@@ -4,6 +4,9 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
 
+#include <sched.h>
+
+#include <algorithm>
 #include <atomic>
 #include <string>
 #include <thread>
@@ -17,8 +20,16 @@ namespace roughContact {
 namespace {
 std::atomic<int>& chosen()
 {
-    static std::atomic<int> n{hardwareThreads()};
+    static std::atomic<int> n{usableThreads()};
     return n;
+}
+
+void requireThreads(int n)
+{
+    if (n < 1 || n > limits::maximumThreads) {
+        throw ParameterError("threads", "must be 1 to " + std::to_string(limits::maximumThreads) + ", got " +
+                                            std::to_string(n));
+    }
 }
 } // namespace
 
@@ -34,6 +45,21 @@ int hardwareThreads() noexcept
     return n == 0 ? 1 : static_cast<int>(n);
 }
 
+int usableThreads() noexcept
+{
+#if defined(__linux__)
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    if (::sched_getaffinity(0, sizeof set, &set) == 0) {
+        const int n = CPU_COUNT(&set);
+        if (n > 0) {
+            return n;
+        }
+    }
+#endif
+    return hardwareThreads();
+}
+
 bool threadsAvailable() noexcept
 {
 #if defined(ROUGHCONTACT_OPENMP)
@@ -45,10 +71,13 @@ bool threadsAvailable() noexcept
 
 void setThreads(int n)
 {
-    if (n < 1 || n > limits::maximumThreads) {
-        throw ParameterError("threads", "must be 1 to " + std::to_string(limits::maximumThreads) + ", got " +
-                                            std::to_string(n));
-    }
+    requireThreads(n);
+    chosen() = std::min(n, usableThreads());
+}
+
+void setThreadsUncapped(int n)
+{
+    requireThreads(n);
     chosen() = n;
 }
 

@@ -12,13 +12,21 @@
 namespace roughContact {
 
 /// The threads the core uses for its boundary-element work (HalfSpaceOperator's FFTs and the
-/// solvers' loops; operators made after a change use it). Default: what the machine has
-/// (std::thread::hardware_concurrency, at least 1). 1 = serial. A build without OpenMP has 1
-/// only (threadsAvailable() false): setThreads accepts any n >= 1 and uses one.
+/// solvers' loops; operators made after a change use it). Default: the processors this process
+/// may run on (usableThreads). 1 = serial. setThreads takes 1 to limits::maximumThreads and
+/// uses at most usableThreads() of them: more cannot make a solve faster (the answer is the same
+/// for any number) and cost a thread's memory each. A build without OpenMP has 1 only
+/// (threadsAvailable() false): setThreads accepts any n >= 1 and uses one.
 void setThreads(int n);
 int threads() noexcept;
+/// setThreads without the cap at usableThreads(): for the tests of the loops, whose answer must
+/// not depend on the number of threads, more of them than a small machine has cores.
+void setThreadsUncapped(int n);
 /// The machine's hardware threads (at least 1).
 int hardwareThreads() noexcept;
+/// The processors this process may run on (its CPU affinity; hardwareThreads() where it cannot
+/// be read), at least 1.
+int usableThreads() noexcept;
 /// True when the core was built with OpenMP (more than one thread can run).
 bool threadsAvailable() noexcept;
 
