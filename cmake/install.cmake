@@ -12,7 +12,7 @@ install(TARGETS roughContact EXPORT roughContactTargets
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/core/roughContact
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-        FILES_MATCHING PATTERN "*.hpp")
+        FILES_MATCHING PATTERN "*.hpp" PATTERN "*.inc")
 install(EXPORT roughContactTargets
         NAMESPACE roughContact::
         FILE roughContactTargets.cmake

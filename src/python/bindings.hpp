@@ -37,6 +37,8 @@ void bindModels(pybind11::module_& m);
 void bindBoundaryElement(pybind11::module_& m);
 /// The conductance laws, the gases, GasGap, radiation, the gap correlations, GapSpec (thermal.cpp).
 void bindThermal(pybind11::module_& m);
+/// FittedElastoPlasticConstants, fitted_elasto_plastic (fittedLaw.cpp).
+void bindFittedLaw(pybind11::module_& m);
 /// SurfaceSpec, ContactInterface (interface.cpp).
 void bindInterface(pybind11::module_& m);
 /// check, SurfaceCheck (check.cpp).

@@ -61,7 +61,14 @@ void bindMaterials(py::module_& m)
                     py::arg("nu") = py::none(), py::arg("Sy") = py::none(),
                     "E' [Pa] given directly (multiscaleContact --Eprime), with nu and Sy [Pa] of the yielding "
                     "material.")
-        .def_property_readonly("reduced_modulus", &ContactMaterials::reducedModulus, "E' [Pa].");
+        .def_property_readonly("reduced_modulus", &ContactMaterials::reducedModulus, "E' [Pa].")
+        .def_property_readonly(
+            "hardness",
+            [](const ContactMaterials& c) -> std::optional<double> {
+                return c.hasYieldStrength() ? std::optional<double>(c.hardness("hardness")) : std::nullopt;
+            },
+            "H = 2.84 S_y of the yielding material [Pa] (the cap and microhardness taken from the yield "
+            "strength), or None when neither solid yields.");
 }
 
 void bindModels(py::module_& m)

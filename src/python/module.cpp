@@ -110,6 +110,7 @@ PYBIND11_MODULE(roughcontact, m)
 
     // ---- conductance laws; the gap beside the contact (gas and radiation; docs/theory.md, "Gap conductance")
     roughcontact_py::bindThermal(m);
+    roughcontact_py::bindFittedLaw(m);
 
     // ---- the interface
     roughcontact_py::bindInterface(m);

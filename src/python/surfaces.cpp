@@ -116,6 +116,9 @@ void bindSurfaces(py::module_& m)
              "The variance [m^2] of the profile the spectrum came from (Parseval; the Nyquist level counted "
              "in full).")
         .def("truncated", &Spectrum::truncated, py::arg("fmax"), "The levels with f <= fmax [1/m] only.")
+        .def("on_period", &Spectrum::onPeriod, py::arg("multiple"),
+             "The same line-scan spectrum on a period of `multiple` (1 to 64) times its length "
+             "(Spectrum::onPeriod): its density sampled at the levels j/(multiple L).")
         .def("__repr__", [](const Spectrum& s) {
             return "<roughcontact.Spectrum " + std::to_string(s.size()) + " levels, L = " +
                    number(s.length()) + " m>";
@@ -253,6 +256,11 @@ void bindSurfaces(py::module_& m)
           "W = m1/sqrt(m0 m2) of a line-scan spectrum (0 < W <= 1, 1 for a single level): the "
           "conductance law fittedElastoPlastic's plastic spots are spaced by W m/sigma, and beyond "
           "p/(E' h') = 0.1 its elastic growth's rate falls with W.");
+    m.def(
+        "areal_rms_gradient", [](const Spectrum& s) { return arealRmsGradient(spectralMoments(s)); },
+        py::arg("spectrum"),
+        "h' = sqrt(2 m2): the areal rms gradient of the isotropic surface whose line scans have this spectrum "
+        "(m2 = sum (2 pi f)^2 beta^2/2, SpectralMoments.hpp): the gradient p/(E' h') is taken with.");
     m.def("first_level_share", &firstLevelShare, py::arg("spectrum"),
           "s1 = beta_1^2 / sum beta_k^2: the first (longest-wave) level's share of a line-scan spectrum's "
           "height variance (0 <= s1 <= 1: 0 where the first amplitude is 0, 1 for a single level): the conductance law fittedElastoPlastic's "

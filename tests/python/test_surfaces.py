@@ -196,7 +196,7 @@ def test_skewness_of_measured_heights():
 def test_the_default_law_takes_the_skewness_with_chances_share_out():
     # shrunk_skewness: s (1 - e^2/s^2) where |s| > e, else 0 (by hand); the default law's elastic
     # branch takes it through exp(s (a0 + a1 ln x) + b s^2) (FittedElastoPlastic.hpp, the constants
-    # docs/validation/skewnessReport fits), and the published laws take none.
+    # the skewness study, validation/studies/skewness.py, fits), and the published laws take none.
     x3p = rc.SurfaceSpec.areal(X3P).skewness()
     s = rc.shrunk_skewness(x3p)
     assert s == pytest.approx(x3p.skewness * (1 - x3p.spread ** 2 / x3p.skewness ** 2), rel=1e-14)

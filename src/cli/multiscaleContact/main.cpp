@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // multiscaleContact: real contact area of rough surfaces against load, from the command line.
-// The interface is fixed (issue 2): scripts rely on --profile/--spectrum, --model, the
-// material options, --loads/--load-range, --levels and the CSV columns, named for what they are
-// (issue 22): nominal_pressure_per_Eprime (F/(A_n E')), area_fraction (A_r/A_n),
+// The interface is fixed: scripts rely on --profile/--spectrum, --model, the
+// material options, --loads/--load-range, --levels and the CSV columns, named for what they are:
+// nominal_pressure_per_Eprime (F/(A_n E')), area_fraction (A_r/A_n),
 // contact_pressure_per_Eprime (F/(A_r E')). --pressures (nominal pressures in Pa, each the load
 // P/E') adds a first column nominal_pressure [Pa]; the gap options (--gas, --emissivity) the
 // columns gap_separation, h_gas, h_radiation and h_total.

@@ -182,13 +182,13 @@ TEST(Spectrum, combineOnDifferentGridsConservesVariance)
 TEST(Spectrum, onPeriodIsTheReportsLongerPeriod)
 {
     // The engineering range's spectra on periods of 2L, 4L and 8L were written by an independent
-    // implementation (docs/validation/engineeringRangeReport, domain_spectrum, in Python), to 10
-    // digits: the same levels, and amplitudes to 1e-9 relative (the printed digits' 5e-10, and
+    // implementation (in Python; tests/data/spectra/README.md), to 10 digits: the same levels,
+    // and amplitudes to 1e-9 relative (the printed digits' 5e-10, and
     // the input's). The Dektak spectrum's levels, printed to 10 digits, are uniform only to about
     // 1e-10 relative: the bins taken from the neighbours here (uniform ones there) and the band's
     // ends from them move its amplitudes by up to 3.3e-8 (8L), so 1e-7 there.
     for (const char* name : {"selfAffine08", "selfAffine05", "dektak"}) {
-        const std::string base = std::string(ROUGHCONTACT_SOURCE_DIR) + "/docs/validation/engineeringRange/" + name;
+        const std::string base = std::string(ROUGHCONTACT_SOURCE_DIR) + "/tests/data/spectra/" + name;
         const Spectrum given = readSpectrum(base + ".spectrum");
         for (std::size_t k : {2U, 4U, 8U}) {
             const Spectrum expected = readSpectrum(base + "-" + std::to_string(k) + "L.spectrum");

@@ -563,8 +563,8 @@ namespace {
 // The exact projection onto {0 <= p <= H, sum p = W}: p = clamp(z - mu, 0, H) with mu found by
 // bisection (the sum falls monotonically with mu, from n H at mu = min z - H to 0 at max z).
 // When H >= W no point can reach the cap (all are >= 0 and sum to W), and mu = max z - W
-// already gives a sum >= W: the bracket is then that of the pressures, whatever H is (with
-// min z - H, a cap far above the pressures left the bisection no digits for them: issue 18).
+// already gives a sum >= W: the bracket is then that of the pressures, whatever H is (a bracket
+// from min z - H would leave the bisection no digits for pressures far below a high cap).
 void projectCapped(const std::vector<double>& z, double H, double W, std::vector<double>& p)
 {
     const double zMax = *std::max_element(z.begin(), z.end());

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The regime of an interface, said out loud (issue 20, item 3): at the two ends of its pressure
+// The regime of an interface, said out loud: at the two ends of its pressure
 // range, the load p/E', the load over the rms gradient p/(E' h') (the axis on which rough
 // surfaces of different roughness compare: the elastic A_r/A_n is about 2 p/(E' h') at light
 // load), the plastic load P/H, and the surface's plasticity index; with the measured accuracy

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The check of a user's own surface (issue 20, item 4): the exact (boundary-element) model
+// The check of a user's own surface: the exact (boundary-element) model
 // solved on the user's surface at a few pressures across the interface's range, and every
 // conductance law's h_c/k_s held to it there, so a user sees how far the law they chose is from
 // the exact answer on their own surface, and which law is closest.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Synthesis of an isotropic Gaussian areal surface from a line-scan spectrum (issue 9, item 1):
+// Synthesis of an isotropic Gaussian areal surface from a line-scan spectrum:
 // a user with only a stylus profile (or a 1-D spectrum) gets an areal surface whose line scans
 // have that spectrum, for the exact (boundary-element) models.
 //

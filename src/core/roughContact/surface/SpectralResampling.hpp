@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The same periodic surface on another grid (issue 20, items 1 and 5): its Fourier series
+// The same periodic surface on another grid: its Fourier series
 // evaluated at N x N points, optionally without its wavelengths shorter than L/K.
 //
 // A periodic surface of n x n points on L x L is the trigonometric polynomial

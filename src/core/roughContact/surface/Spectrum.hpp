@@ -70,8 +70,7 @@ public:
     /// does after) linear between the levels and flat beyond the first and the last, sampled at
     /// the levels j/(multiple L), each level's power C1 times the part of its bin inside the band
     /// [max(f_1 - w_1/2, f_1/2), f_n + w_n/2] (ending at a Nyquist level): the variance is kept
-    /// to the linear interpolation's error (docs/validation/engineeringRangeReport's
-    /// domain_spectrum, for levels i/L). A periodic surface synthesized from it is a
+    /// to the linear interpolation's error. A periodic surface synthesized from it is a
     /// period `multiple` times as long of a surface of the same finish (the check's light loads,
     /// SurfaceCheck.hpp). Levels that would number more than the limit: ParameterError.
     Spectrum onPeriod(std::size_t multiple) const;

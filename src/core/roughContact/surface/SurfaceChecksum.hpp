@@ -21,7 +21,7 @@ std::uint64_t surfaceChecksum(const Spectrum& surface);
 /// What a boundary-element interface solves: surfaceChecksum(lineScan) continued over the grid
 /// (nx, ny, as binary64), the spacings dx, dy, every height of the solved areal surface, row by
 /// row, and how it is solved: periodic 1.0, mirrored 2.0, else 0.0. A synthesized surface's seed or grid
-/// size changes its heights, so it changes this (the spectrum alone does not: issue 18).
+/// size changes its heights, so it changes this (the spectrum alone does not).
 std::uint64_t surfaceChecksum(const Spectrum& lineScan, const ArealSurface& solved, bool periodic,
                               bool mirrored = false);
 

@@ -33,7 +33,7 @@ double constrictionConductancePerConductivity(const MultiscaleModel& model, doub
 
 /// k_s = 2 k1 k2 / (k1 + k2) [W/(m K)]; both conductivities within limits::minimumConductivity..
 /// maximumConductivity (ParameterError naming "conductivity k1"/"k2" otherwise), where 2 k1 k2
-/// cannot overflow (it did for k from 1e154 on: issue 18). Inline: called per face and per
+/// cannot overflow. Inline: called per face and per
 /// evaluation (the checks cost two comparisons each and build no string unless they fail).
 inline double harmonicMeanConductivity(double k1, double k2)
 {

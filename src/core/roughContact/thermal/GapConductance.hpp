@@ -76,8 +76,7 @@ struct GasGapSpec {
     double pressure = standardAtmosphere;          ///< gas pressure P_g [Pa]
     /// The thermal accommodation coefficients of the two surfaces, in (0, 1]; unset: the gas's
     /// default (GasProperties::accommodation). There is no number meaning "default": 0 is an
-    /// error, as any value outside the range (issue 18: 0 and 1e-300, which OpenFOAM reads as
-    /// 0, were taken as the default).
+    /// error, as any value outside the range (1e-300 too, which OpenFOAM reads as 0).
     std::optional<double> accommodation1, accommodation2;
 };
 

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// How far each conductance law was measured from the exact answer (issue 20, item 3): the band
+// How far each conductance law was measured from the exact answer: the band
 // of law / exact the engineering-range report (docs/validation/engineeringRange.md; the fidelity
 // report, docs/validation/fidelity.md, for the area models it does not run) found for a law on
 // its area model, against the elastic or the capped (p <= H) reference, in a decade of
-// p/(E' h'). The numbers are the reports', in one place: MeasuredAccuracyTable.hpp, written by
-// docs/validation/accuracyTable from the reports' data (a CTest test keeps them equal).
+// p/(E' h'). The numbers are the reports', in one place: MeasuredAccuracyTable.hpp, whose rows
+// `python3 -m validation run accuracyTable` writes from the studies' tables (a CTest test keeps
+// them equal).
 #pragma once
 
 #include <optional>

@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The default law with constants of one's choosing (thermal/FittedElastoPlastic.hpp): its
+// constants as an object and its formula on given numbers, for the study that fits it
+// (validation/studies/fittedElastoPlastic.py), so that the fit evaluates the law the core runs.
+#include <pybind11/pybind11.h>
+
+#include "numberCasters.hpp" // first after pybind11.h: see there
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "convert.hpp"
+
+#include "roughContact/Error.hpp"
+#include "roughContact/surface/Roughness.hpp"
+#include "roughContact/thermal/FittedElastoPlastic.hpp"
+
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+using namespace roughContact;
+
+namespace roughcontact_py {
+
+namespace {
+// The constants' names, values and descriptions in the order of FittedElastoPlasticConstants.inc.
+struct ConstantInfo {
+    const char* name;
+    double FittedElastoPlasticConstants::*member;
+    const char* what;
+};
+const std::vector<ConstantInfo>& constantInfo()
+{
+    static const std::vector<ConstantInfo> info = {
+#define ROUGHCONTACT_FITTED_CONSTANT(name, value, what) {#name, &FittedElastoPlasticConstants::name, what},
+#include "roughContact/thermal/FittedElastoPlasticConstants.inc"
+#undef ROUGHCONTACT_FITTED_CONSTANT
+    };
+    return info;
+}
+} // namespace
+
+void bindFittedLaw(py::module_& m)
+{
+    py::class_<FittedElastoPlasticConstants> c(
+        m, "FittedElastoPlasticConstants",
+        "The constants of the default law fittedElastoPlastic (FittedElastoPlasticConstants.inc), each an "
+        "attribute of the C++ name; FittedElastoPlasticConstants() holds the built-in values.");
+    c.def(py::init<>());
+    for (const ConstantInfo& k : constantInfo()) {
+        c.def_readwrite(k.name, k.member, k.what);
+    }
+    c.def_static(
+        "names",
+        [] {
+            std::vector<std::string> out;
+            for (const ConstantInfo& k : constantInfo()) {
+                out.emplace_back(k.name);
+            }
+            return out;
+        },
+        "The constants' names, in the order of FittedElastoPlasticConstants.inc.");
+    c.def_static(
+        "descriptions",
+        [] {
+            std::vector<std::string> out;
+            for (const ConstantInfo& k : constantInfo()) {
+                out.emplace_back(k.what);
+            }
+            return out;
+        },
+        "What each constant is, in the order of names().");
+
+    m.def(
+        "fitted_elasto_plastic",
+        [](const py::handle& P, const py::handle& sigma, const py::handle& m, const py::handle& bandwidth,
+           const py::handle& Eprime, const py::handle& hardness, const py::handle& skewness,
+           const py::handle& firstLevelShare, const FittedElastoPlasticConstants& constants) {
+            const Array p = numbers(P, "P");
+            const Array arrays[] = {numbers(sigma, "sigma"),         numbers(m, "m"),
+                                    numbers(bandwidth, "bandwidth"), numbers(Eprime, "Eprime"),
+                                    numbers(hardness, "hardness"),   numbers(skewness, "skewness"),
+                                    numbers(firstLevelShare, "first_level_share")};
+            const auto n = static_cast<std::size_t>(p.size());
+            for (const Array& a : arrays) {
+                if (static_cast<std::size_t>(a.size()) != n) {
+                    throw ParameterError("fitted_elasto_plastic", "every argument needs as many values as P (" +
+                                                                      std::to_string(n) + ")");
+                }
+            }
+            Array out(p.request().shape);
+            double* h = out.mutable_data();
+            {
+                py::gil_scoped_release release;
+                for (std::size_t i = 0; i < n; ++i) {
+                    const double Hi = arrays[4].data()[i];
+                    const double s1 = arrays[6].data()[i];
+                    h[i] = fittedElastoPlasticConductancePerConductivity(
+                        p.data()[i], SurfaceRoughness{arrays[0].data()[i], arrays[1].data()[i]}, arrays[2].data()[i],
+                        arrays[3].data()[i], std::isnan(Hi) ? std::nullopt : std::optional<double>(Hi),
+                        arrays[5].data()[i], std::isnan(s1) ? std::nullopt : std::optional<double>(s1), constants);
+                }
+            }
+            return out;
+        },
+        py::arg("P"), py::arg("sigma"), py::arg("m"), py::arg("bandwidth"), py::arg("Eprime"), py::arg("hardness"),
+        py::arg("skewness"), py::arg("first_level_share"), py::arg("constants") = FittedElastoPlasticConstants{},
+        "h_c/k_s [1/m] of fittedElastoPlastic (the core's fittedElastoPlasticConductancePerConductivity) at "
+        "each point: nominal pressure P [Pa], rms height sigma [m], mean absolute slope m, bandwidth ratio W, "
+        "E' [Pa], the cap H [Pa] (NaN: elastic), the heights' shrunk skewness and the first level's share s1 "
+        "(NaN: no light-load factor), with `constants`. Equally long arrays (or numbers) in, an array out.");
+    m.def("gaussian_plastic_spot_conductance", &gaussianPlasticSpotConductance, py::arg("a"),
+          "g(a): sigma h_c/(k_s m) of Gaussian plastic spots covering the area fraction a (FittedElastoPlastic.hpp).");
+}
+
+} // namespace roughcontact_py

@@ -1,0 +1,147 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""The measured accuracy bands of the conductance laws the core states (the regime line, the check): the studies' ratios by decade of p/(E' h').
+
+For each law on its area model and reference (elastic, or capped at H = 2.84 S_y) and each decade
+[a, 10 a) of x = p/(E' h') from 1e-5 to 1: the smallest and largest law/exact over the surfaces
+with a point there, and how many surfaces. From the engineering range (its capped pairs count as
+one capped reference), and for the area models it does not run the fidelity study's curves; for
+the default law beyond the engineering range, elastic, the heavy-load study's ratios up to the
+heaviest load it measured. `run` writes src/core/roughContact/thermal/MeasuredAccuracyTable.inc;
+`check` fails when it is not what the studies' data give.
+"""
+import math
+import os
+
+from .. import pages
+
+DATA = []
+TABLE = os.path.join("src", "core", "roughContact", "thermal", "MeasuredAccuracyTable.inc")
+DECADES = [10.0 ** k for k in range(-5, 1)]  # edges 1e-5 .. 1
+# (the fidelity study's curve, law, area model, capped): its curves turned into the names users select
+CURVES = [
+    ("elastic-jacksonBhavnaniFerguson-on-MS-Hertz", "jacksonBhavnaniFerguson", "hertz", False),
+    ("elastic-multiscaleBarber-on-MS-Hertz", "multiscaleBarber", "hertz", False),
+    ("elastic-persson", "persson", "", False),
+    ("elastic-mikic", "mikic", "", False),
+    ("plastic-jacksonBhavnaniFerguson-on-MS-JG", "jacksonBhavnaniFerguson", "jacksonGreen", True),
+    ("plastic-jacksonBhavnaniFerguson-on-MS-truncation", "jacksonBhavnaniFerguson", "truncation", True),
+    ("plastic-multiscaleBarber-on-MS-JG", "multiscaleBarber", "jacksonGreen", True),
+    ("plastic-multiscaleBarber-on-MS-truncation", "multiscaleBarber", "truncation", True),
+    ("plastic-persson--elastic-theory", "persson", "", True),
+    ("plastic-mikic--elastic-correlation", "mikic", "", True),
+    ("plastic-cooperMikicYovanovich--H-c---2-84-S-y", "cooperMikicYovanovich", "", True),
+    ("elastic-fittedElastoPlastic", "fittedElastoPlastic", "", False),
+    ("plastic-fittedElastoPlastic--H---2-84-S-y", "fittedElastoPlastic", "", True),
+]
+# The engineering range's law columns: (column, law, area model when elastic, when capped).
+ENGINEERING_LAWS = [
+    ("ratio_jacksonBhavnaniFerguson", "jacksonBhavnaniFerguson", "hertz", "jacksonGreen"),
+    ("ratio_multiscaleBarber", "multiscaleBarber", "hertz", "jacksonGreen"),
+    ("ratio_persson", "persson", "", ""),
+    ("ratio_mikic", "mikic", "", ""),
+    ("ratio_fittedElastoPlastic", "fittedElastoPlastic", "", ""),
+    ("ratio_cooperMikicYovanovich", "cooperMikicYovanovich", "", ""),
+]
+
+
+def engineering_bands(ctx):
+    """{(law, model, capped): {decade: [lo, hi, surfaces, the largest x]}} of the engineering range."""
+    from . import engineeringRange
+    out = {}
+    for r in engineeringRange.Results(ctx).summary().rows:
+        capped = r["regime"] != "elastic"
+        x = float(r["x"])
+        for column, law, elastic_model, capped_model in ENGINEERING_LAWS:
+            try:
+                v = float(r[column])
+            except ValueError:
+                continue
+            if not math.isfinite(v):
+                continue
+            for a, b in zip(DECADES, DECADES[1:]):
+                # [a, b): a load on a decade's edge (x = 1e-4) opens the decade above it.
+                if a * (1 - 1e-9) <= x < b * (1 - 1e-9):
+                    band = out.setdefault((law, capped_model if capped else elastic_model, capped), {}).setdefault(
+                        a, [math.inf, 0.0, set(), 0.0])
+                    band[0], band[1], band[3] = min(band[0], v), max(band[1], v), max(band[3], x)
+                    band[2].add(r["surface"])
+                    break
+    return out
+
+
+def heavy_rows(ctx, engineering_top):
+    """The default law, elastic, beyond the engineering range: the heavy-load study's ratios."""
+    lo, hi, surfaces, top = math.inf, 0.0, set(), 0.0
+    for r in pages.generated(ctx, "heavyLoads", "summary.csv").rows:
+        x = float(r["x"])
+        if x <= engineering_top:
+            continue
+        v = float(r["law_over_exact"])
+        lo, hi, top = min(lo, v), max(hi, v), max(top, x)
+        surfaces.add(r["surface"])
+    if not surfaces:
+        return []
+    return [("fittedElastoPlastic", "", False, engineering_top, top * (1 + 1e-6), lo, hi, len(surfaces),
+             "heavy-load study")]
+
+
+def bands(ctx):
+    from . import fidelity
+    rows = []
+    engineering = engineering_bands(ctx)
+    for (law, model, capped), per_decade in engineering.items():
+        for a in sorted(per_decade):
+            lo, hi, surfaces, top = per_decade[a]
+            # Up to the decade's end when its last load (three a decade: a, 2.15 a, 4.64 a) was
+            # measured; else only up to the largest load measured, and beyond it nothing is claimed.
+            b = a * 10 if top >= a * 10 ** (2 / 3) * (1 - 1e-6) else top * (1 + 1e-6)
+            rows.append((law, model, capped, a, b, lo, hi, len(surfaces), "engineering-range report"))
+    top = max(r[4] for r in rows if r[:3] == ("fittedElastoPlastic", "", False))
+    rows += heavy_rows(ctx, top)
+    gradients = fidelity.gradients(ctx)
+    curves = fidelity.ratio_curves(ctx)
+    for tag, law, model, capped in CURVES:
+        if (law, model, capped) in engineering:
+            continue
+        per_decade = {}
+        for surface, gradient in sorted(gradients.items()):
+            for load, _, lo, hi in curves.get((surface, tag), []):
+                x = load / gradient
+                for a, b in zip(DECADES, DECADES[1:]):
+                    if a <= x < b * (1 + 1e-9):
+                        band = per_decade.setdefault(a, [math.inf, 0.0, set()])
+                        band[0], band[1] = min(band[0], lo), max(band[1], hi)
+                        band[2].add(surface)
+        for a in sorted(per_decade):
+            lo, hi, surfaces = per_decade[a]
+            rows.append((law, model, capped, a, a * 10, lo, hi, len(surfaces), "fidelity report"))
+    return rows
+
+
+def solve(ctx):
+    """No solves of its own: it reads what the other studies solved."""
+    return 0
+
+
+def decade(a, b):
+    """A band's range of x as the page shows it: "1e-04 to 0.001", or "0.1 only" where the
+    decade was measured at its first load alone."""
+    return f"{a:.3g} only" if b <= a * (1 + 1e-9) else f"{a:.0e} to {b:.3g}"
+
+
+def outputs(ctx):
+    rows = bands(ctx)
+    lines = ["// SPDX-License-Identifier: GPL-3.0-or-later",
+             "// Written by `python3 -m validation run accuracyTable` (validation/studies/accuracyTable.py) from",
+             "// the studies' committed data: do not edit. `python3 -m validation check accuracyTable` fails when",
+             "// it is not what they give. One AccuracyRow a line (MeasuredAccuracyTable.hpp)."]
+    for law, model, capped, a, b, lo, hi, n, report in rows:
+        start = f"{a:.0e}" if float(f"{a:.0e}") == a else f"{a:.7g}"
+        lines.append(f'{{"{law}", "{model}", {"true" if capped else "false"}, {start}, {b:.7g}, '
+                     f'{lo:.3g}, {hi:.3g}, {n}, "{report}"}},')
+    out = pages.Outputs(ctx, "accuracyTable")
+    out.source(TABLE, "\n".join(lines) + "\n")
+    out.table("bands", ["law", "area model", "reference", "p/(E' h')", "law / exact", "surfaces", "measured by"],
+              [[law, model or "-", "capped" if capped else "elastic", decade(a, b), f"{lo:.3g}-{hi:.3g}", n,
+                report] for law, model, capped, a, b, lo, hi, n, report in rows])
+    return out
