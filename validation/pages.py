@@ -2,8 +2,9 @@
 """What a study generates from its data, for its page and for the core: markdown tables and
 summaries under docs/validation/generated/STUDY/ (the pages include them, so that a changed
 number never rewrites a sentence), files of the core it owns (a table of constants), and
-figures. `run` writes them; `check` compares every text with the committed one (a figure,
-which depends on the plotting library, is made by `run` only).
+figures; and a block of a page that cannot include files (README.md, which GitHub shows as it
+is), between two marker lines. `run` writes them; `check` compares every text with the committed
+one (a figure, which depends on the plotting library, is made by `run` only).
 """
 import os
 
@@ -43,6 +44,7 @@ class Outputs:
         self.study = study
         self.texts = {}  # path relative to the repository (or the quick scratch) -> text
         self.figures = []  # (path, draw(path))
+        self.blocks = {}  # (page relative to the repository, name) -> text
 
     def _generated(self, name):
         return os.path.join(os.path.relpath(self.ctx.generated, ROOT) if not self.ctx.quick else "generated",
@@ -68,7 +70,32 @@ class Outputs:
     def where(self, path):
         return os.path.join(os.path.dirname(self.ctx.generated) if self.ctx.quick else ROOT, path)
 
+    def block(self, page, name, text):
+        """The text between the lines `<!-- generated: STUDY/NAME ... -->` and `<!-- end of
+        STUDY/NAME -->` of `page` (relative to the repository): a page that cannot include a
+        file. A quick run writes it as generated/STUDY/NAME.block.md instead."""
+        if self.ctx.quick:
+            self.text(name + ".block.md", text)
+        else:
+            self.blocks[(page, name)] = text
+
+    def _block_span(self, page, name):
+        """(the page's text, start, end) of the block's text; SystemExit without its markers."""
+        with open(os.path.join(ROOT, page)) as f:
+            whole = f.read()
+        begin = f"<!-- generated: {self.study}/{name} "
+        end = f"<!-- end of {self.study}/{name} -->"
+        b, e = whole.find(begin), whole.find(end)
+        if b < 0 or e < b:
+            raise SystemExit(f"{self.study}: {page} has no lines '{begin}... -->' and '{end}' around the "
+                             f"block {name}")
+        return whole, whole.index("\n", b) + 1, e
+
     def write(self):
+        for (page, name), text in self.blocks.items():
+            whole, b, e = self._block_span(page, name)
+            with open(os.path.join(ROOT, page), "w") as f:
+                f.write(whole[:b] + text + whole[e:])
         for path, text in self.texts.items():
             full = self.where(path)
             os.makedirs(os.path.dirname(full), exist_ok=True)
@@ -86,4 +113,8 @@ class Outputs:
             full = self.where(path)
             if not os.path.exists(full) or open(full).read() != text:
                 out.append(path)
+        for (page, name), text in self.blocks.items():
+            whole, b, e = self._block_span(page, name)
+            if whole[b:e] != text:
+                out.append(f"{page} (the block {self.study}/{name})")
         return out

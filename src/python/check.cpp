@@ -117,8 +117,8 @@ void bindCheck(py::module_& m)
             return d;
         },
         py::arg("law"), py::arg("model"), py::arg("capped"), py::arg("load_per_gradient"),
-        "The band of law / exact the engineering-range report (or, for the area models it does not run, the "
-        "fidelity report) measured for `law` on the area `model` against the capped (p <= H) or elastic "
+        "The band of law / exact the engineering-range study (or, for the area models it does not run, the "
+        "fidelity study) measured for `law` on the area `model` against the capped (p <= H) or elastic "
         "reference, in the decade of p/(E' h') holding load_per_gradient: a dict (low, high, from, to, surfaces, "
         "report), or None where nothing was measured.");
 

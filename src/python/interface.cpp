@@ -25,6 +25,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -373,6 +374,36 @@ void bindInterface(py::module_& m)
             "regime", [](const ContactInterface& ci) { return ci.regime().describe(); },
             "The regime at the table's ends (p/E', p/(E' h'), P/H, the plasticity index) and the law's measured "
             "accuracy band there (the log's lines).")
+        .def(
+            "regime_at",
+            [](const ContactInterface& ci, const py::object& P) {
+                const Array a = numbers(P, "pressures");
+                std::vector<std::pair<std::string, double>> at;
+                for (py::ssize_t i = 0; i < a.size(); ++i) {
+                    at.emplace_back("", a.data()[i]);
+                }
+                return ci.regime().describeAt(at);
+            },
+            py::arg("pressures"),
+            "The regime at the nominal pressures [Pa] (p/E', p/(E' h'), P/H) and the law's measured band of "
+            "h/exact there, a line each (none for P <= 0), as the condition's log says it at its faces' pressures.")
+        .def(
+            "accuracy_band",
+            [](const ContactInterface& ci, const py::object& P) {
+                const auto band = [&](double p, bool high) {
+                    if (!(p > 0.0) || ci.regime().areaModel == "boundaryElement") {
+                        return std::numeric_limits<double>::quiet_NaN();
+                    }
+                    const RegimeAt r = ci.regime().at(p);
+                    return r.band ? (high ? r.band->high : r.band->low) : std::numeric_limits<double>::quiet_NaN();
+                };
+                return py::make_tuple(vectorize(P, "pressures", [&](double p) { return band(p, false); }),
+                                      vectorize(P, "pressures", [&](double p) { return band(p, true); }));
+            },
+            py::arg("pressures"),
+            "(low, high): the smallest and largest h/exact the studies measured for this interface's law at the "
+            "nominal pressures [Pa] (docs/checking.md); NaN where nothing was measured, for P <= 0 and for the "
+            "exact model.")
         .def("summary", &ContactInterface::summary, "A few lines for a log.");
 }
 

@@ -136,5 +136,5 @@ def test_the_regime_and_the_measured_band():
     assert "(capped reference)" in ci.regime and "plasticity index" in ci.regime
     band = rc.measured_accuracy("jacksonBhavnaniFerguson", "jacksonGreen", True, 3e-3)
     assert band == {"low": 0.197, "high": 1.31, "from": 1e-3, "to": 1e-2, "surfaces": 5,
-                    "report": "engineering-range report"}
+                    "report": "engineering-range study"}
     assert rc.measured_accuracy("cooperMikicYovanovich", "", False, 3e-3) is None

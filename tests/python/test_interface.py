@@ -176,3 +176,41 @@ def test_roughness_surface_is_the_clis(cli):
         rc.SurfaceSpec.from_roughness(Rq=1e-6, Ra=1e-6, slope=0.1)
     with pytest.raises(rc.ParameterError, match="^slope: .*a Hurst exponent in"):
         rc.SurfaceSpec.from_roughness(Rq=1e-6, slope=1e-3).read_spectrum()
+
+
+def _bands_page():
+    """The bands table the validation study accuracyTable generates (law, reference, decade, band)."""
+    import os
+    path = os.path.join(os.environ["ROUGHCONTACT_SOURCE_DIR"], "docs", "validation", "generated", "accuracyTable",
+                        "bands.md")
+    rows = []
+    for line in open(path).read().splitlines()[2:]:
+        law, model, reference, decade, band = [c.strip() for c in line.strip("|").split("|")][:5]
+        a = float(decade.split()[0])
+        b = a * 1.000001 if decade.endswith("only") else float(decade.split()[-1])
+        lo, hi = (float(v) for v in band.split("-"))
+        rows.append((law, model, reference, a, b, lo, hi))
+    return rows
+
+
+def test_regime_and_band_at_pressures(interface):
+    # The default law on jacksonGreen with a hardness: held to the capped reference. At each pressure
+    # the band is the generated table's row for the decade of x = P/(E' h') that holds it.
+    Ep = interface.reduced_modulus
+    gradient = rc.areal_rms_gradient(interface.surface)
+    rows = [r for r in _bands_page() if r[0] == rc.default_conductance_law() and r[2] == "capped"]
+    x = np.array([2e-4, 3e-3, 5e-2])
+    P = x * Ep * gradient
+    low, high = interface.accuracy_band(P)
+    for xi, lo, hi in zip(x, low, high):
+        row = next(r for r in rows if r[3] * (1 - 1e-9) <= xi < r[4])
+        assert (lo, hi) == (row[5], row[6])
+    text = interface.regime_at(P)
+    assert text.count("\n    at ") == 3 and "capped reference" in text
+    assert f"{low[1]:.3g}-{high[1]:.3g} of exact" in text
+    # Lighter than anything measured: NaN and "not measured"; no line for P <= 0.
+    lo, hi = interface.accuracy_band(1e-9 * Ep * gradient)
+    assert math.isnan(lo) and math.isnan(hi)
+    assert "not measured" in interface.regime_at([1e-9 * Ep * gradient])
+    assert interface.regime_at([0.0, -1.0]) == ""
+    assert np.all(np.isnan(interface.accuracy_band([0.0])[0]))

@@ -6,13 +6,14 @@ For each law on its area model and reference (elastic, or capped at H = 2.84 S_y
 with a point there, and how many surfaces. From the engineering range (its capped pairs count as
 one capped reference), and for the area models it does not run the fidelity study's curves; for
 the default law beyond the engineering range, elastic, the heavy-load study's ratios up to the
-heaviest load it measured. `run` writes src/core/roughContact/thermal/MeasuredAccuracyTable.inc;
-`check` fails when it is not what the studies' data give.
+heaviest load it measured. `run` writes src/core/roughContact/thermal/MeasuredAccuracyTable.inc,
+the bands as a page's table, and the default law's bands by regime as README.md's "Which h to
+trust" (`trust`); `check` fails when they are not what the studies' data give.
 """
 import math
 import os
 
-from .. import pages
+from .. import materials, pages
 
 DATA = []
 TABLE = os.path.join("src", "core", "roughContact", "thermal", "MeasuredAccuracyTable.inc")
@@ -95,7 +96,7 @@ def bands(ctx):
             # Up to the decade's end when its last load (three a decade: a, 2.15 a, 4.64 a) was
             # measured; else only up to the largest load measured, and beyond it nothing is claimed.
             b = a * 10 if top >= a * 10 ** (2 / 3) * (1 - 1e-6) else top * (1 + 1e-6)
-            rows.append((law, model, capped, a, b, lo, hi, len(surfaces), "engineering-range report"))
+            rows.append((law, model, capped, a, b, lo, hi, len(surfaces), "engineering-range study"))
     top = max(r[4] for r in rows if r[:3] == ("fittedElastoPlastic", "", False))
     rows += heavy_rows(ctx, top)
     gradients = fidelity.gradients(ctx)
@@ -114,7 +115,7 @@ def bands(ctx):
                         band[2].add(surface)
         for a in sorted(per_decade):
             lo, hi, surfaces = per_decade[a]
-            rows.append((law, model, capped, a, a * 10, lo, hi, len(surfaces), "fidelity report"))
+            rows.append((law, model, capped, a, a * 10, lo, hi, len(surfaces), "fidelity study"))
     return rows
 
 
@@ -123,10 +124,77 @@ def solve(ctx):
     return 0
 
 
+# The regimes of README.md's table: (words, from x, to x); x = p/(E' h').
+REGIMES = [("lighter than measured", None, 1e-4), ("light load", 1e-4, 1e-3), ("moderate load", 1e-3, 1e-2),
+           ("heavy load", 1e-2, 1e-1), ("a smooth surface at high pressure", 1e-1, None)]
+SIGN = 0.25  # a band within 1 -+ SIGN of exact: the default law's h can be signed with it
+
+
+def capped_loads(ctx):
+    """P/H of the engineering range's capped points, by the decade of x they are in."""
+    from . import engineeringRange
+    out = {}
+    pairs = {}
+    for r in engineeringRange.Results(ctx).summary().rows:
+        if r["regime"] == "elastic":
+            continue
+        pair = pairs.setdefault(r["regime"], materials.regime_pair(ctx, r["regime"]))
+        x = float(r["x"])
+        a = max(d for d in DECADES if d <= x * (1 + 1e-9))
+        out.setdefault(a, []).append(x * pair.Eprime * float(r["gradient"]) / pair.hardness)
+    return out
+
+
+def short(v):
+    """Two significant digits, as a reader writes them: 1e-4, 0.0052, 0.15, 11, 110, 7000."""
+    if v <= 0:
+        return f"{v:g}"
+    e = math.floor(math.log10(v) + 1e-9)
+    r = round(v, 1 - e)
+    if r < 1e-3:
+        return f"{r:.1e}".replace("e-0", "e-").replace(".0e", "e")
+    return f"{r:g}" if r < 1e6 else f"{r:.1e}"
+
+
+def trust(ctx, rows):
+    """README.md's table: the default law's measured band against exact in each regime, elastic and
+    capped, with P/H where capped points were measured and what to do there."""
+    law = [r for r in rows if r[0] == "fittedElastoPlastic"]
+    steel = materials.Pair(ctx, materials.STEEL, materials.STEEL, False).Eprime
+    ph = capped_loads(ctx)
+    body = []
+    for words, lo, hi in REGIMES:
+        inside = [r for r in law if (lo is None or r[3] >= lo * (1 - 1e-9)) and (hi is None or r[3] < hi * (1 - 1e-9))]
+        elastic = [r for r in inside if not r[2]]
+        capped = [r for r in inside if r[2]]
+        top = max((r[4] for r in inside), default=None)
+        end = (min(hi, top) if hi else top) if top else None
+        x = f"below {short(hi)}" if lo is None else f"{short(lo)} to {short(end)}"
+        p = (f"below {short(hi * steel * 0.1 / 1e6)}" if lo is None else
+             f"{short(lo * steel * 0.1 / 1e6)}-{short(end * steel * 0.1 / 1e6)}")
+        loads = [v for a, vs in ph.items() if lo is not None and a >= lo * (1 - 1e-9) and (hi is None or a < hi)
+                 for v in vs]
+        band = {}
+        for name, rs in (("elastic", elastic), ("capped", capped)):
+            band[name] = (min(r[5] for r in rs), max(r[6] for r in rs)) if rs else None
+        shown = [b for b in band.values() if b]
+        if not shown:
+            todo = "not measured: `model boundaryElement;` (the exact model) or `check yes;`"
+        elif all(1 - SIGN <= b[0] and b[1] <= 1 + SIGN for b in shown):
+            todo = "use the default law; sign h with this band"
+        else:
+            todo = "wider than 25 %: `check yes;` on your surface, or `model boundaryElement;`"
+        body.append([words, x, p, f"{short(min(loads))} to {short(max(loads))}" if loads else "-",
+                     f"{band['elastic'][0]:.3g}-{band['elastic'][1]:.3g}" if band["elastic"] else "not measured",
+                     f"{band['capped'][0]:.3g}-{band['capped'][1]:.3g}" if band["capped"] else "not measured", todo])
+    return pages.markdown_table(["regime", "p/(E' h')", "p [MPa], steel, h' = 0.1", "P/H", "elastic: h / exact",
+                                 "yielding: h / exact", "what to do"], body)
+
+
 def decade(a, b):
     """A band's range of x as the page shows it: "1e-04 to 0.001", or "0.1 only" where the
     decade was measured at its first load alone."""
-    return f"{a:.3g} only" if b <= a * (1 + 1e-9) else f"{a:.0e} to {b:.3g}"
+    return f"{a:.3g} only" if b <= a * (1 + 1e-5) else f"{a:.0e} to {b:.3g}"
 
 
 def outputs(ctx):
@@ -144,4 +212,5 @@ def outputs(ctx):
     out.table("bands", ["law", "area model", "reference", "p/(E' h')", "law / exact", "surfaces", "measured by"],
               [[law, model or "-", "capped" if capped else "elastic", decade(a, b), f"{lo:.3g}-{hi:.3g}", n,
                 report] for law, model, capped, a, b, lo, hi, n, report in rows])
+    out.block("README.md", "trust", trust(ctx, rows))
     return out

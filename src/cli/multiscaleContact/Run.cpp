@@ -49,6 +49,13 @@ using namespace roughContact;
 
 namespace multiscaleContact {
 
+namespace {
+
+/// Up to this many pressures the regime is said at each; beyond, at the lightest and heaviest.
+constexpr std::size_t maxRegimeLines = 12;
+
+} // namespace
+
 int run(const Options& o)
 {
     if (o.check || !o.table.empty()) {
@@ -229,9 +236,10 @@ int run(const Options& o)
         }
     }
     if (conductance) {
-        // The regime at the run's lightest and heaviest load and the law's measured accuracy there
-        // (InterfaceRegime.hpp), on stderr: the hardness the materials give (2.84 S_y) or
-        // --hardness; the law held to the capped reference where the area model caps the pressure.
+        // The regime at the run's pressures and the law's measured accuracy there (InterfaceRegime.hpp),
+        // on stderr: at each of up to maxRegimeLines pressures, else at the lightest and the heaviest;
+        // the hardness the materials give (2.84 S_y) or --hardness; the law held to the capped
+        // reference where the area model caps the pressure.
         std::vector<double> positive;
         for (double l : loads) {
             if (l > 0.0) {
@@ -248,7 +256,19 @@ int run(const Options& o)
                 interfaceRegime(spectrum, Ep, H, shown, persson != nullptr ? std::string("persson") : o.model,
                                 capped, *lo * Ep, *hi * Ep);
             r.skewness = skewnessOf(o);
-            std::cerr << "multiscaleContact: " << r.describe() << std::endl;
+            if (positive.size() <= maxRegimeLines) {
+                std::vector<std::pair<std::string, double>> at;
+                for (double l : positive) {
+                    at.emplace_back("", l * Ep);
+                }
+                std::cerr << "multiscaleContact: " << r.describeSurface() << r.describeAt(at) << std::endl;
+            } else {
+                std::cerr << "multiscaleContact: " << r.describe() << std::endl;
+            }
+            if (gapInputs) {
+                std::cerr << "multiscaleContact: h_gas and h_radiation (their columns, in h_total): "
+                          << gapConductanceAccuracy << " (docs/gapConductance.md)" << std::endl;
+            }
         }
     }
     const std::optional<double> ks = harmonicConductivityOf(o, conductance);

@@ -189,4 +189,28 @@ void Foam::thermalContactCoupling::couple
             warnedInput |= (1 << k);
         }
     }
+    // The regime at the faces' pressures, summed over processors, when the
+    // core's log says it is due.
+    roughContact::FaceSums s;
+    s.add(out);
+    scalar counts[3] = {scalar(s.inContact), scalar(s.complete), scalar(s.faces)};
+    for (scalar& c : counts)
+    {
+        reduce(c, sumOp<scalar>());
+    }
+    reduce(s.pressureMin, minOp<scalar>());
+    reduce(s.pressureMax, maxOp<scalar>());
+    reduce(s.pressureSum, sumOp<scalar>());
+    reduce(s.contactSum, sumOp<scalar>());
+    reduce(s.gasSum, sumOp<scalar>());
+    reduce(s.radiationSum, sumOp<scalar>());
+    s.inContact = std::size_t(counts[0]);
+    s.complete = std::size_t(counts[1]);
+    s.faces = std::size_t(counts[2]);
+    const std::string regime = regimeLog.update(*settings.interface, s);
+    if (!regime.empty())
+    {
+        Info<< "thermalContactResistance: " << who().c_str() << ": "
+            << regime.c_str() << endl;
+    }
 }

@@ -40,17 +40,17 @@ TEST(MeasuredAccuracy, IsTheReportsRowForTheLawModelReferenceAndDecade)
         }
     }
     // jacksonBhavnaniFerguson on the condition's default model, capped, at p/(E' h') =
-    // 1e-3..1e-2: the engineering-range report's 0.197-1.31 over its 5 surfaces.
+    // 1e-3..1e-2: the engineering-range study's 0.197-1.31 over its 5 surfaces.
     const auto d = measuredAccuracy("jacksonBhavnaniFerguson", "jacksonGreen", true, 3e-3);
     ASSERT_TRUE(d.has_value());
     EXPECT_EQ(d->low, 0.197);
     EXPECT_EQ(d->high, 1.31);
     EXPECT_EQ(d->surfaces, 5);
-    EXPECT_EQ(d->report, "engineering-range report");
-    // The area models that report does not run come from the fidelity report.
+    EXPECT_EQ(d->report, "engineering-range study");
+    // The area models that report does not run come from the fidelity study.
     const auto t = measuredAccuracy("jacksonBhavnaniFerguson", "truncation", true, 3e-3);
     ASSERT_TRUE(t.has_value());
-    EXPECT_EQ(t->report, "fidelity report");
+    EXPECT_EQ(t->report, "fidelity study");
     // The laws that take no area ignore the model; the ones that do, do not.
     EXPECT_TRUE(measuredAccuracy("persson", "hertz", false, 3e-3).has_value());
     EXPECT_EQ(measuredAccuracy("persson", "hertz", false, 3e-3)->high,
@@ -63,7 +63,7 @@ TEST(MeasuredAccuracy, IsTheReportsRowForTheLawModelReferenceAndDecade)
     EXPECT_FALSE(measuredAccuracy("cooperMikicYovanovich", "", false, 3e-3).has_value());
     EXPECT_EQ(describeAccuracy(std::nullopt, 1e-7), "not measured at p/(E' h') = 1e-07");
     EXPECT_EQ(describeAccuracy(d, 3e-3),
-              "0.2-1.3 of exact (5 surfaces of the engineering-range report, p/(E' h') 0.001 to 0.01)");
+              "0.197-1.31 of exact (5 surfaces of the engineering-range study, p/(E' h') 0.001 to 0.01)");
     // Below p/(E' h') = 1e-3 the references are periodic cells (of 8L), which may conduct more than
     // a large joint (engineeringRange.md, "Light loads: how large a period"): the band says so.
     const auto light = measuredAccuracy("fittedElastoPlastic", "", true, 3e-4);
@@ -79,16 +79,16 @@ TEST(MeasuredAccuracy, IsTheReportsRowForTheLawModelReferenceAndDecade)
     // the heavy-load study's surfaces, where the decade's x = 0.1 alone says 0.854-1.05).
     const auto top = measuredAccuracy("fittedElastoPlastic", "", false, 0.1);
     ASSERT_TRUE(top.has_value());
-    EXPECT_EQ(describeAccuracy(top, 0.1), "0.85-1.1 of exact (5 surfaces of the engineering-range report, "
+    EXPECT_EQ(describeAccuracy(top, 0.1), "0.854-1.05 of exact (5 surfaces of the engineering-range study, "
                                           "p/(E' h') = 0.1 only, the largest measured)");
     // Beyond it, elastically, the heavy-load study's band (docs/validation/heavyLoads.md), up to its
     // heaviest load (x = 0.64) and no further; capped, nothing.
     const auto heavy = measuredAccuracy("fittedElastoPlastic", "", false, 0.2);
     ASSERT_TRUE(heavy.has_value());
-    EXPECT_EQ(describeAccuracy(heavy, 0.2), "0.67-1.6 of exact (12 surfaces of the heavy-load study, p/(E' h') 0.1 to 0.64)");
+    EXPECT_EQ(describeAccuracy(heavy, 0.2), "0.672-1.61 of exact (12 surfaces of the heavy-load study, p/(E' h') 0.1 to 0.64)");
     EXPECT_EQ(measuredAccuracy("fittedElastoPlastic", "", false, 0.64)->report, std::string("heavy-load study"));
     EXPECT_EQ(measuredAccuracy("fittedElastoPlastic", "", false, 0.1001)->report, std::string("heavy-load study"));
-    EXPECT_EQ(measuredAccuracy("fittedElastoPlastic", "", false, 0.1)->report, std::string("engineering-range report"));
+    EXPECT_EQ(measuredAccuracy("fittedElastoPlastic", "", false, 0.1)->report, std::string("engineering-range study"));
     EXPECT_FALSE(measuredAccuracy("fittedElastoPlastic", "", false, 0.7).has_value());
     EXPECT_FALSE(measuredAccuracy("fittedElastoPlastic", "", true, 0.2).has_value());
     EXPECT_FALSE(measuredAccuracy("fittedElastoPlastic", "", true, 0.64).has_value());

@@ -106,7 +106,7 @@ TEST(SpectralResampling, LevelsBeyondTheKeptOnesAndBeyondTheGridAreDropped)
     EXPECT_LT(worst(resampledPeriodic(both, 8), longWave, 1e-6), 1e-12);        // 8 points hold |k_x| < 4 only
 }
 
-// What the fidelity report relies on: a synthesized surface refined to 4x the points is the same
+// What the fidelity study relies on: a synthesized surface refined to 4x the points is the same
 // surface (every fourth point is an old one) with the same variance.
 TEST(SpectralResampling, ASynthesizedSurfaceRefinedKeepsItsPointsAndItsVariance)
 {

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace roughContact {
@@ -19,7 +20,9 @@ RegimeAt regimeAt(double P, double Eprime, double gradient, std::optional<double
     RegimeAt r;
     r.pressure = P;
     r.load = P / Eprime;
-    r.loadPerGradient = gradient > 0.0 ? r.load / gradient : 0.0;
+    // (A pressure near the largest double over a small gradient: infinite, not an overflow.)
+    const bool finite = gradient >= 1.0 || r.load < std::numeric_limits<double>::max() * gradient;
+    r.loadPerGradient = gradient <= 0.0 ? 0.0 : finite ? r.load / gradient : std::numeric_limits<double>::infinity();
     if (H) {
         r.perHardness = P / *H;
     }
@@ -72,6 +75,16 @@ InterfaceRegime interfaceRegime(const Spectrum& surface, double Eprime, std::opt
 
 std::string InterfaceRegime::describe() const
 {
+    std::string out = describeSurface();
+    out += describeLine(low, "");
+    if (high.pressure != low.pressure) { // one pressure (a run at one load): said once
+        out += describeLine(high, "");
+    }
+    return out;
+}
+
+std::string InterfaceRegime::describeSurface() const
+{
     std::ostringstream os;
     os << std::setprecision(3);
     os << "regime: h' = " << gradient;
@@ -114,23 +127,45 @@ std::string InterfaceRegime::describe() const
            << fittedLightLoadFactor(s1, 1e-4, c)
            << " at 1e-4; from one profile a noisy number: docs/validation/fittedElastoPlastic.md)";
     }
-    for (const RegimeAt* r : {&low, &high}) {
-        if (r == &high && high.pressure == low.pressure) {
-            break; // one pressure (a run at one load): said once
-        }
-        os << "\n    at " << r->pressure << " Pa: p/E' = " << r->load << ", p/(E' h') = " << r->loadPerGradient;
-        if (r->perHardness) {
-            os << ", P/H = " << *r->perHardness;
-        }
-        os << "; " << law;
-        if (areaModel == "boundaryElement") {
-            os << ": the exact model";
-        } else {
-            os << " on " << areaModel << (capped ? " (capped reference)" : " (elastic reference)") << ": "
-               << describeAccuracy(r->band, r->loadPerGradient);
-        }
+    return os.str();
+}
+
+RegimeAt InterfaceRegime::at(double P) const
+{
+    return regimeAt(P, reducedModulus, gradient, hardness, law, areaModel, capped);
+}
+
+std::string InterfaceRegime::describeLine(const RegimeAt& r, const std::string& label) const
+{
+    std::ostringstream os;
+    os << std::setprecision(3);
+    os << "\n    at " << r.pressure << " Pa";
+    if (!label.empty()) {
+        os << " (" << label << ")";
+    }
+    os << ": p/E' = " << r.load << ", p/(E' h') = " << r.loadPerGradient;
+    if (r.perHardness) {
+        os << ", P/H = " << *r.perHardness;
+    }
+    os << "; " << law;
+    if (areaModel == "boundaryElement") {
+        os << ": the exact model";
+    } else {
+        os << " on " << areaModel << (capped ? " (capped reference)" : " (elastic reference)") << ": "
+           << describeAccuracy(r.band, r.loadPerGradient);
     }
     return os.str();
+}
+
+std::string InterfaceRegime::describeAt(const std::vector<std::pair<std::string, double>>& labelledPressures) const
+{
+    std::string out;
+    for (const auto& [label, P] : labelledPressures) {
+        if (P > 0.0 && std::isfinite(P)) {
+            out += describeLine(at(P), label);
+        }
+    }
+    return out;
 }
 
 } // namespace roughContact

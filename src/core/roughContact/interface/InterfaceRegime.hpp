@@ -11,7 +11,7 @@
 // the equation number not checked: docs/theory.md §5.15), sigma_s and R McCool's summit parameters of the spectrum (SpectralMoments.hpp):
 // below about 0.6 the summits stay elastic, above 1 they flow. For a multi-scale spectrum it
 // depends on the finest level kept (sqrt(sigma_s/R) grows with the slopes); H/(E' h') is printed
-// beside it as the scale-free measure (the report's machined metals: 0.03 to 0.3).
+// beside it as the scale-free measure (the engineering range's pairs: 0.03 to 0.3).
 #pragma once
 
 #include "roughContact/surface/Roughness.hpp"
@@ -19,6 +19,8 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace roughContact {
 
@@ -52,9 +54,30 @@ struct InterfaceRegime {
     RegimeAt low;                              ///< at the range's lowest pressure
     RegimeAt high;                             ///< at its highest
 
-    /// Two lines for a log: the regime at both ends and the band of the law there.
+    /// Lines for a log: the surface and materials (describeSurface), then the regime at both
+    /// ends and the band of the law there.
     std::string describe() const;
+
+    /// One line: h', H, H/(E' h'), the plasticity index, the heights' skewness and s1 as the law
+    /// takes them.
+    std::string describeSurface() const;
+
+    /// The regime at the pressure P [Pa] (> 0), and the chosen law's band there.
+    RegimeAt at(double P) const;
+
+    /// A line a pressure: "at P Pa (label): p/E' = ..., p/(E' h') = ..., P/H = ...; the law's
+    /// band", for the pressures a run or the faces carry (labels such as "min", "mean", "max";
+    /// none: the pressure alone). No line for a pressure <= 0.
+    std::string describeAt(const std::vector<std::pair<std::string, double>>& labelledPressures) const;
+
+private:
+    std::string describeLine(const RegimeAt& r, const std::string& label) const;
 };
+
+/// What is known of the accuracy of the gap's gas and radiation conductance: no measurement or
+/// reference solution has been held to them (docs/gapConductance.md), and the log says so in
+/// these words beside their share of h.
+inline constexpr const char* gapConductanceAccuracy = "not validated";
 
 /// Whether a law on an area model is held to the capped reference: when the model caps the
 /// pressure (jacksonGreen, truncation), or when the law has a plastic branch (fittedElastoPlastic,

@@ -8,7 +8,7 @@
 // of two), as the boundaryElement model solves it (non-periodic unless `periodic`). A 1-D
 // description (profile, spectrum, power law, fractal; the equivalent of two): `seeds` periodic
 // N x N Gaussian surfaces synthesized from its spectrum (synthesizeIsotropic) cut at N/8
-// levels, the shortest wavelength 8 cells (the convention of the fidelity report,
+// levels, the shortest wavelength 8 cells (the convention of the fidelity study,
 // docs/validation/fidelity.md, at which the exact conductance is converged to a few per cent
 // from p/E' of about 1e-3 on). The laws are built on the same cut spectrum, so law and exact
 // see one surface; what the cut leaves out is said (levels kept of levels given).
@@ -39,7 +39,7 @@
 //
 // The ratio of a law is its h_c/k_s over the exact one's geometric mean over the seeds; the
 // seeds' spread is reported beside it. A law holds at a pressure when its ratio is within
-// [1 - checkTolerance, 1 + checkTolerance] (0.75 to 1.25, the band of the fidelity report).
+// [1 - checkTolerance, 1 + checkTolerance] (0.75 to 1.25, the band of the fidelity study).
 #pragma once
 
 #include "roughContact/interface/ContactInterface.hpp"

@@ -6,7 +6,7 @@
 //     z(x, y) = sum over k of c_k exp(2 pi i (k_x x + k_y y) / L),   |k_x|, |k_y| <= n/2,
 // with c_k its discrete Fourier coefficients divided by n^2. Evaluating that polynomial on a finer
 // grid (N > n) gives the same surface with more points per wavelength: a boundary-element solve
-// on both grids then differs only by the discretization, which is how the fidelity report shows
+// on both grids then differs only by the discretization, which is how the fidelity study shows
 // that its references are converged (the synthesis draws its phases on the grid it is given, so
 // --synthesize on two grids gives two different realizations, not one surface twice). A
 // coefficient on a Nyquist line (k_x or k_y = n/2) stands for both +n/2 and -n/2 on the coarse

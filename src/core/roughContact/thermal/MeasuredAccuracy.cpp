@@ -25,11 +25,12 @@ std::optional<AccuracyBand> measuredAccuracy(const std::string& law, const std::
 
 namespace {
 
-/// A band's end to two significant digits, a whole number below 10 with its ".0" (1.0, not 1).
+/// A band's end as the table holds it (three significant digits, as README.md's table and the
+/// pages show it), a whole number below 10 with its ".0" (1.0, not 1).
 std::string bandEnd(double v)
 {
     char text[32];
-    std::snprintf(text, sizeof text, "%.2g", v);
+    std::snprintf(text, sizeof text, "%.3g", v);
     std::string s(text);
     if (s.find_first_of(".e") == std::string::npos && std::fabs(v) < 10.0) {
         s += ".0";
@@ -50,7 +51,7 @@ std::string describeAccuracy(const std::optional<AccuracyBand>& band, double loa
     os << bandEnd(band->low) << "-" << bandEnd(band->high) << " of exact (" << band->surfaces
        << (band->surfaces == 1 ? " surface" : " surfaces") << " of the " << band->report << ", p/(E' h') ";
     if (band->to < 1.01 * band->from) {
-        os << "= " << band->from << " only, the largest measured"; // the top of the report's range
+        os << "= " << band->from << " only, the largest measured"; // the top of the study's range
     } else {
         os << band->from << " to " << band->to;
     }

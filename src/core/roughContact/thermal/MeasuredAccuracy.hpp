@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // How far each conductance law was measured from the exact answer: the band
-// of law / exact the engineering-range report (docs/validation/engineeringRange.md; the fidelity
-// report, docs/validation/fidelity.md, for the area models it does not run) found for a law on
+// of law / exact the engineering-range study (docs/validation/engineeringRange.md; the fidelity
+// study, docs/validation/fidelity.md, for the area models it does not run) found for a law on
 // its area model, against the elastic or the capped (p <= H) reference, in a decade of
-// p/(E' h'). The numbers are the reports', in one place: MeasuredAccuracyTable.hpp, whose rows
+// p/(E' h'). The numbers are the studies', in one place: MeasuredAccuracyTable.hpp, whose rows
 // `python3 -m validation run accuracyTable` writes from the studies' tables (a CTest test keeps
 // them equal).
 #pragma once
@@ -24,24 +24,24 @@ inline constexpr double smallCellLoadPerGradient = 1e-3;
 
 struct AccuracyBand {
     /// The decade of p/(E' h') [from, to) the band was measured in; `to` is below the decade's end
-    /// where the report measured less of it (its top decade: x = 0.1 only; the heavy-load study:
+    /// where the study measured less of it (its top decade: x = 0.1 only; the heavy-load study:
     /// from just above 0.1 to its heaviest load).
     double from = 0.0;
     double to = 0.0;
-    double low = 0.0;  ///< the smallest law / exact over the report's surfaces there
+    double low = 0.0;  ///< the smallest law / exact over the study's surfaces there
     double high = 0.0; ///< the largest
-    int surfaces = 0;  ///< how many of the report's surfaces had a point there
-    std::string report; ///< which report measured it ("engineering-range report", "fidelity report", "heavy-load study")
+    int surfaces = 0;  ///< how many of the study's surfaces had a point there
+    std::string report; ///< which study measured it ("engineering-range study", "fidelity study", "heavy-load study")
 };
 
 /// The band of `law` on `areaModel` (a multi-scale model's name; ignored for the laws that take
 /// no area: persson, mikic, cooperMikicYovanovich) against the capped or the elastic reference,
-/// in the decade of p/(E' h') that holds loadPerGradient; none where the report has no number
+/// in the decade of p/(E' h') that holds loadPerGradient; none where no study has a number
 /// (a law or model it does not measure, a load outside 1e-5 to 1).
 std::optional<AccuracyBand> measuredAccuracy(const std::string& law, const std::string& areaModel, bool capped,
                                              double loadPerGradient);
 
-/// One line: "0.30-0.86 of exact (4 surfaces of the engineering-range report, p/(E' h') 0.0001 to
+/// One line: "0.30-0.86 of exact (4 surfaces of the engineering-range study, p/(E' h') 0.0001 to
 /// 0.001)" or "not measured at
 /// p/(E' h') = ...". A band below smallCellLoadPerGradient adds that it was measured against
 /// periodic cells, which may conduct more than a large joint there.

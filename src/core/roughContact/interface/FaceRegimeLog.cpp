@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "roughContact/interface/FaceRegimeLog.hpp"
+
+#include "roughContact/interface/ContactInterface.hpp"
+#include "roughContact/interface/FaceCoupling.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace roughContact {
+
+void FaceSums::add(const CouplingOutputs& out)
+{
+    for (std::size_t i = 0; i < out.state.size(); ++i) {
+        ++faces;
+        const double P = out.pressure[i];
+        if (out.state[i] != FaceState::apart && P > 0.0) {
+            ++inContact;
+            pressureMin = std::min(pressureMin, P);
+            pressureMax = std::max(pressureMax, P);
+            pressureSum += P * pressureScale;
+        }
+        if (!std::isfinite(out.contactConductance[i])) {
+            ++complete;
+            continue;
+        }
+        contactSum += out.contactConductance[i];
+        gasSum += out.gapConductance[i];
+        radiationSum += out.radiativeConductance[i];
+    }
+}
+
+double FaceSums::meanPressure() const
+{
+    if (inContact == 0) {
+        return 0.0;
+    }
+    // Within [min, max] whatever the rounding, and no overflow when scaled back.
+    const double scaled = pressureSum / double(inContact);
+    const double mean = scaled < std::numeric_limits<double>::max() * pressureScale ? scaled / pressureScale : pressureMax;
+    return std::clamp(mean, pressureMin, pressureMax);
+}
+
+FaceRegimeLog::FaceRegimeLog(double factor) : factor_(factor)
+{
+    if (!(factor > 1.0)) {
+        throw std::invalid_argument("FaceRegimeLog: the factor must be > 1");
+    }
+}
+
+std::string FaceRegimeLog::update(const ContactInterface& iface, const FaceSums& all)
+{
+    if (all.inContact == 0) {
+        return {};
+    }
+    const std::array<double, 3> now{all.pressureMin, all.meanPressure(), all.pressureMax};
+    if (said_) {
+        bool moved = false;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double ratio = now[k] / (*said_)[k];
+            // (A ratio of the factor to round-off, a load that doubled exactly, is no move.)
+            moved = moved || ratio > factor_ * (1.0 + 1e-9) || ratio < 1.0 / (factor_ * (1.0 + 1e-9));
+        }
+        if (!moved) {
+            return {};
+        }
+    }
+    said_ = now;
+    return describe(iface, all);
+}
+
+std::string FaceRegimeLog::describe(const ContactInterface& iface, const FaceSums& all)
+{
+    std::ostringstream os;
+    os << std::setprecision(4);
+    const InterfaceRegime& regime = iface.regime();
+    if (all.inContact == 0) {
+        os << "no face in contact";
+    } else {
+        const double mean = all.meanPressure();
+        os << "the regime at the faces' pressures (" << all.inContact << " of " << all.faces
+           << " faces in contact)";
+        // One pressure when the faces carry the same within 1 % (a uniform load): said once.
+        if (all.pressureMax / 1.01 <= all.pressureMin) {
+            os << regime.describeAt({{all.inContact == 1 ? "the face" : "every face", mean}});
+        } else {
+            os << regime.describeAt({{"min", all.pressureMin}, {"mean", mean}, {"max", all.pressureMax}});
+        }
+    }
+    const std::size_t counted = all.faces - all.complete;
+    if (counted > 0) {
+        const double n = double(counted);
+        const double hc = all.contactSum / n;
+        const double hg = all.gasSum / n;
+        const double hr = all.radiationSum / n;
+        os << "\n    h = h_c + h_gas + h_rad, means over the " << counted
+           << (all.complete > 0 ? " faces not in complete contact" : " faces") << ": " << hc + hg + hr
+           << " = " << hc << " (contact: " << (iface.regime().areaModel == "boundaryElement"
+                                                   ? "the exact model's"
+                                                   : "the band above")
+           << ")";
+        if (iface.hasGap()) {
+            os << " + " << hg << " (gas: " << gapConductanceAccuracy << ") + " << hr
+               << " (radiation: " << gapConductanceAccuracy << ")";
+        } else {
+            os << " (no gap: no gas or radiation)";
+        }
+        os << " W/m^2/K";
+    }
+    return os.str();
+}
+
+} // namespace roughContact
