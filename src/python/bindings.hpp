@@ -43,6 +43,8 @@ void bindFittedLaw(pybind11::module_& m);
 void bindInterface(pybind11::module_& m);
 /// check, SurfaceCheck (check.cpp).
 void bindCheck(pybind11::module_& m);
+/// plot (plot.cpp).
+void bindPlot(pybind11::module_& m);
 
 /// The InterfaceSpec of ContactInterface's keyword arguments (interface.cpp), which check()
 /// takes too.

@@ -30,7 +30,8 @@ namespace roughcontact_py {
 void bindCheck(py::module_& m)
 {
     py::class_<SurfaceCheck>(m, "SurfaceCheck",
-                             "What check() found: the exact h_c/k_s on the user's surface at the checked pressures "
+                             "What check() found: the answer for the user's whole surface (the chosen law, and the exact "
+                             "answer it implies), the exact h_c/k_s of the checked surface at the checked pressures "
                              "and every law's ratio to it.")
         .def_readonly("surface", &SurfaceCheck::surface, "What was solved (the map, or the seeds synthesized).")
         .def_readonly("regime", &SurfaceCheck::regime, "'elastic' or 'capped at H = ... Pa'.")
@@ -53,14 +54,34 @@ void bindCheck(py::module_& m)
                                "The checked pressures [Pa].")
         .def_property_readonly("dropped", [](const SurfaceCheck& c) { return toArray(c.dropped); },
                                "Pressures asked for [Pa] outside the checked range.")
-        .def_property_readonly("exact", [](const SurfaceCheck& c) { return toArray(c.exactHPerK); },
-                               "The exact h_c/k_s [1/m] (geometric mean over the seeds).")
-        .def_property_readonly("exact_low", [](const SurfaceCheck& c) { return toArray(c.exactHPerKLow); },
-                               "The seeds' smallest exact h_c/k_s [1/m].")
-        .def_property_readonly("exact_high", [](const SurfaceCheck& c) { return toArray(c.exactHPerKHigh); },
-                               "The seeds' largest exact h_c/k_s [1/m].")
-        .def_property_readonly("exact_area", [](const SurfaceCheck& c) { return toArray(c.exactArea); },
-                               "The exact A_r/A_n (mean over the seeds).")
+        .def_property_readonly("answer", [](const SurfaceCheck& c) { return toArray(c.answerHPerK); },
+                               "The answer: the chosen law's h_c/k_s [1/m] on the whole surface as given, at the "
+                               "checked pressures (what the condition uses).")
+        .def_property_readonly("answer_exact_low", [](const SurfaceCheck& c) { return toArray(c.answerExactLow); },
+                               "The exact h_c/k_s [1/m] the answer implies (the answer over the law's ratio), at "
+                               "the seeds' smallest; NaN where the exact answer is not trusted.")
+        .def_property_readonly("answer_exact_high", [](const SurfaceCheck& c) { return toArray(c.answerExactHigh); },
+                               "The same at the seeds' largest.")
+        .def_property_readonly("checked_exact", [](const SurfaceCheck& c) { return toArray(c.exactHPerK); },
+                               "The exact h_c/k_s [1/m] of the checked surface (geometric mean over the seeds): a "
+                               "1-D description's band-limited synthesized surfaces, not the whole surface.")
+        .def_property_readonly("checked_exact_low", [](const SurfaceCheck& c) { return toArray(c.exactHPerKLow); },
+                               "The seeds' smallest exact h_c/k_s [1/m] of the checked surface.")
+        .def_property_readonly("checked_exact_high", [](const SurfaceCheck& c) { return toArray(c.exactHPerKHigh); },
+                               "The seeds' largest exact h_c/k_s [1/m] of the checked surface.")
+        .def_property_readonly("checked_area", [](const SurfaceCheck& c) { return toArray(c.exactArea); },
+                               "The exact A_r/A_n of the checked surface (mean over the seeds).")
+        .def_property_readonly(
+            "exact_trusted",
+            [](const SurfaceCheck& c) {
+                py::array_t<bool> a(static_cast<py::ssize_t>(c.exactTrusted.size()));
+                for (std::size_t i = 0; i < c.exactTrusted.size(); ++i) {
+                    a.mutable_at(i) = c.exactTrusted[i];
+                }
+                return a;
+            },
+            "Per pressure: False where the exact answer is not to be trusted (exact_warning); such a pressure counts "
+            "for no law.")
         .def_property_readonly(
             "ratios",
             [](const SurfaceCheck& c) {
@@ -86,9 +107,15 @@ void bindCheck(py::module_& m)
             },
             "{law: why it was not checked}.")
         .def_readonly("chosen_law", &SurfaceCheck::chosenLaw, "The law judged (the conductance given, or the default).")
-        .def_readonly("closest_law", &SurfaceCheck::closestLaw, "The law with the smallest worst factor.")
+        .def_readonly("closest_law", &SurfaceCheck::closestLaw,
+                      "The law with the smallest worst factor over the counted pressures ('' when none is counted).")
+        .def_property_readonly("closest_holds", &SurfaceCheck::closestHolds,
+                               "Whether the closest law is within 25 % at every counted pressure (then it is the law "
+                               "to use; else none is).")
         .def_property_readonly("chosen_misses", [](const SurfaceCheck& c) { return toArray(c.chosenMisses()); },
-                               "The pressures [Pa] at which the chosen law is off by more than 25 %.")
+                               "The counted pressures [Pa] at which the chosen law is off by more than 25 %.")
+        .def_property_readonly("untrusted", [](const SurfaceCheck& c) { return toArray(c.untrusted()); },
+                               "The pressures [Pa] where the exact answer is not to be trusted (not counted).")
         .def_readonly("exact_warning", &SurfaceCheck::exactWarning,
                       "A map solved padded near complete contact: that its exact h_c (and the ratios) are not "
                       "to be trusted at some pressures, and to solve it mirrored; empty otherwise.")

@@ -115,4 +115,5 @@ PYBIND11_MODULE(roughcontact, m)
     // ---- the interface
     roughcontact_py::bindInterface(m);
     roughcontact_py::bindCheck(m);
+    roughcontact_py::bindPlot(m);
 }

@@ -31,8 +31,9 @@ def test_check_is_the_clis(cli):
     cli_numbers = cli_check(cli, "--synthesize", "128", "--pressures", ",".join(repr(p) for p in pressures),
                             "--E", "179.52e9,179.52e9", "--nu", "0.32,0.32", "--Sy", "0.2e9,0.2e9")
     np.testing.assert_array_equal(c.pressures, cli_numbers["nominal_pressure"])
-    np.testing.assert_array_equal(c.exact, cli_numbers["h_per_k_exact"])
-    np.testing.assert_array_equal(c.exact_area, cli_numbers["area_exact"])
+    np.testing.assert_array_equal(c.checked_exact, cli_numbers["h_per_k_checked_surface"])
+    np.testing.assert_array_equal(c.checked_area, cli_numbers["area_checked_surface"])
+    np.testing.assert_array_equal(c.answer, cli_numbers["h_per_k_answer"])
     for law, ratio in c.ratios.items():
         np.testing.assert_array_equal(ratio, cli_numbers["ratio_" + law])
     # Capped at 2.84 S_y (the materials yield), three seeds of 128^2, a progress line per solve.
@@ -46,8 +47,9 @@ def test_check_is_the_clis(cli):
     assert len(lines) == 1 + 3 * 1 + 3 * 2 and lines[-1].startswith("check: surface 6 of 6, pressure 2 of 2")
     assert c.chosen_law == rc.default_conductance_law()
     assert c.closest_law in c.ratios
-    assert "closest: " + c.closest_law in c.report()
-    assert np.all(c.exact_low <= c.exact) and np.all(c.exact <= c.exact_high)
+    assert ("closest: " + c.closest_law in c.report()) == c.closest_holds
+    assert np.all(c.checked_exact_low <= c.checked_exact) and np.all(c.checked_exact <= c.checked_exact_high)
+    assert np.all(c.exact_trusted) and len(c.untrusted) == 0
     assert c.exact_warning == ""  # synthesized surfaces are periodic: no patch correction
     # Up to p/(E' h') = 1e-3 the exact answer is a periodic cell's (four scan lengths): the check says so.
     light = sum(p < 1e-3 * Ep * c.gradient for p in c.pressures)
@@ -69,8 +71,19 @@ def test_check_of_a_padded_map_near_complete_contact_warns(tmp_path):
     padded = rc.check(surfaces=surfaces, side1=soft, side2=soft, pressures=[1e6, 5e7])
     assert "not to be trusted" in padded.exact_warning and "mirror=True" in padded.exact_warning
     assert "warning: " + padded.exact_warning in padded.report()
+    # 50 MPa is that pressure: reported apart, counted for no law (not a miss, not for the closest),
+    # and no exact answer implied there.
+    np.testing.assert_array_equal(padded.exact_trusted, [True, False])
+    np.testing.assert_array_equal(padded.untrusted, [5e7])
+    assert 5e7 not in padded.chosen_misses
+    assert np.isnan(padded.answer_exact_low[1]) and np.isfinite(padded.answer_exact_low[0])
+    assert "not counted (*): 1 of 2 pressures" in padded.report()
+    trusted = {law: r[0] for law, r in padded.ratios.items()}
+    closest = min(trusted, key=lambda law: max(trusted[law], 1 / trusted[law]))
+    assert padded.closest_law == closest
     mirrored = rc.check(surfaces=surfaces, side1=soft, side2=soft, pressures=[1e6, 5e7], mirror=True)
     assert mirrored.exact_warning == ""
+    assert np.all(mirrored.exact_trusted)
 
 
 def test_check_refuses_what_it_cannot_check():
@@ -119,7 +132,7 @@ def test_threads_keyword_sets_the_solves_threads():
         two = rc.check(grid=32, seeds=[1], count=2, light_load_periods=1, **spec)
         one = rc.check(grid=32, seeds=[1], count=2, light_load_periods=1, threads=1, **spec)
         assert rc.threads() == 1
-        np.testing.assert_array_equal(one.exact, two.exact)
+        np.testing.assert_array_equal(one.checked_exact, two.checked_exact)
         rc.ContactInterface(model="boundaryElement", synthesize=16, min_pressure=1e7, max_pressure=1e8,
                             threads=2, **spec)
         assert rc.threads() == 2

@@ -13,13 +13,12 @@ spectra of spectralShapes, elastic and steel). Its data are the checks' CSVs, on
 and pressure (keys: name, regime, periods). docs/validation/checkPeriods.md reads the tables.
 """
 import concurrent.futures
-import csv
 import math
 import os
 import statistics
 import time
 
-from .. import materials, pages, spectra, tables
+from .. import checks, materials, pages, spectra, tables
 from ..context import ROOT
 from ..tables import Table, number
 from . import engineeringRange, spectralShapes
@@ -112,7 +111,7 @@ def run_check(ctx, design, name, regime, ps, k):
                  grid=design.grid, seeds=design.seeds, threads=1, light_load_periods=k)
     if len(c.pressures) != len(ps):
         raise SystemExit(f"checkPeriods: {name} {regime} periods {k}: the check dropped {list(c.dropped)} Pa")
-    return list(csv.DictReader(c.csv().splitlines()))
+    return checks.rows(c.csv(), COLUMNS)
 
 
 def solve(ctx):

@@ -14,14 +14,12 @@ machine), and so does `check`, which compares them with the table digit for digi
 are the check's, on its own surfaces: they are not recomputed from the exact columns). docs/validation/roughness.md reads the table.
 """
 import concurrent.futures
-import csv
-import io
 import os
 import re
 import subprocess
 import time
 
-from .. import materials, pages, tables
+from .. import checks, materials, pages, tables
 from ..tables import Table, number
 
 DATA = ["roughness.csv"]
@@ -75,8 +73,7 @@ def run_check(ctx, design, regime, rq, slope):
                          f"period (update validation/studies/roughness.py):\n{report}")
     facts = dict(zip(REPORT, [v for m in found for v in m.groups()]))
     data = "\n".join(line for line in r.stdout.splitlines() if not line.startswith("#"))
-    return [{**key_of(regime, rq, slope), **facts, **{c: row.get(c, "") for c in COLUMNS}}
-            for row in csv.DictReader(io.StringIO(data))]
+    return [{**key_of(regime, rq, slope), **facts, **row} for row in checks.rows(data, COLUMNS)]
 
 
 def path_of(ctx):

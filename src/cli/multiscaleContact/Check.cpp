@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Run.hpp"
 #include "Inputs.hpp"
+#include "Plot.hpp"
 
 #include "roughContact/Error.hpp"
+#include "roughContact/io/CurvesPlot.hpp"
+#include "roughContact/io/Files.hpp"
 #include "roughContact/Limits.hpp"
 #include "roughContact/interface/InterfaceRegime.hpp"
 #include "roughContact/interface/SurfaceCheck.hpp"
@@ -68,23 +71,7 @@ int runCheck(const Options& o)
     if (o.k1 || o.k2) {
         throw ParameterError(o.k1 ? "--k1" : "--k2", "--check compares h_c/k_s, which the conductivities do not change");
     }
-    SurfaceCheckInputs in;
-    in.surfaces = surfaceSpecsOf(o);
-    in.materials = materialsOf(o);
-    in.model = o.model;
-    if (!isMultiscaleModel(o.model) && o.model != "boundaryElement") {
-        throw ParameterError("--check", "takes a multi-scale --model (the laws' area: hertz, jacksonGreen, ...) or "
-                                        "boundaryElement, not " + o.model);
-    }
-    in.conductanceLaw = o.conductanceLaw;
-    in.hardness = hardnessOf(o, *in.materials, "--check --hardness-from-yield");
-    if (!o.vickers.empty()) {
-        const std::vector<double> c = splitNumbers(o.vickers, ',', "--vickers");
-        if (c.size() != 2) {
-            throw ParameterError("--vickers", "expects C1,C2: c1 [Pa] and c2 of H_v = c1 (d_v/1 um)^c2");
-        }
-        in.vickers = VickersCoefficients{c[0], c[1]};
-    }
+    SurfaceCheckInputs in = interfaceInputsOf(o, "--check");
     if (o.periodic) {
         in.periodic = true;
     }
@@ -148,6 +135,9 @@ int runCheck(const Options& o)
     }
     out << c.csv();
     std::cout << out.str();
+    if (!o.plot.empty()) {
+        writePlot(o, c.pressures, std::nullopt, nullptr, nullptr, &c);
+    }
     return 0;
 }
 

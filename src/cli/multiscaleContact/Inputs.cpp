@@ -641,4 +641,26 @@ void writeGapCells(std::ostream& out, const InterfaceGap& gap, const GapInputs& 
     }
 }
 
+SurfaceCheckInputs interfaceInputsOf(const Options& o, const std::string& who)
+{
+    SurfaceCheckInputs in;
+    in.surfaces = surfaceSpecsOf(o);
+    in.materials = materialsOf(o);
+    in.model = o.model;
+    if (!isMultiscaleModel(o.model) && o.model != "boundaryElement") {
+        throw ParameterError(who, "takes a multi-scale --model (the laws' area: hertz, jacksonGreen, ...) or "
+                                  "boundaryElement, not " + o.model);
+    }
+    in.conductanceLaw = o.conductanceLaw == "all" ? std::string() : o.conductanceLaw;
+    in.hardness = hardnessOf(o, *in.materials, who + " --hardness-from-yield");
+    if (!o.vickers.empty()) {
+        const std::vector<double> c = splitNumbers(o.vickers, ',', "--vickers");
+        if (c.size() != 2) {
+            throw ParameterError("--vickers", "expects C1,C2: c1 [Pa] and c2 of H_v = c1 (d_v/1 um)^c2");
+        }
+        in.vickers = VickersCoefficients{c[0], c[1]};
+    }
+    return in;
+}
+
 } // namespace multiscaleContact

@@ -8,6 +8,7 @@
 
 #include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/interface/InterfaceGap.hpp"
+#include "roughContact/interface/SurfaceCheck.hpp"
 #include "roughContact/io/ArealReader.hpp"
 #include "roughContact/material/Materials.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
@@ -130,5 +131,10 @@ GapRow gapRowOf(const roughContact::InterfaceGap& gap, const GapInputs& g, doubl
 // where hPerK, the row's h_per_k, is NaN: no law).
 void writeGapCells(std::ostream& out, const roughContact::InterfaceGap& gap, const GapInputs& g, double P,
                    bool complete, const std::optional<double>& ks, double hPerK);
+
+// The interface as the check and the picture see it (SurfaceCheckInputs): the surfaces, the
+// materials, the --model (a multi-scale model or boundaryElement), the --conductance-law, the cap
+// (--hardness, --hardness-from-yield) and --vickers; `who` names the option that asks in errors.
+roughContact::SurfaceCheckInputs interfaceInputsOf(const Options& o, const std::string& who);
 
 } // namespace multiscaleContact

@@ -268,6 +268,10 @@ void addOptions(CLI::App& app, Options& o)
                    "periods of K scan lengths, 1 to " + std::to_string(roughContact::Spectrum::maximumPeriodMultiple) +
                        " (default " + std::to_string(roughContact::SurfaceCheckOptions{}.lightLoadPeriods) +
                        "; 1: every pressure on one scan length; docs/checking.md says what each gains)");
+    app.add_option("--plot", o.plot,
+                   "draw the interface as a PNG (gnuplot): every law's h_c/k_s (h with --k1, --k2) against the "
+                   "pressure across the run's pressures, the chosen law's measured band, the gap's h_gas and h_rad, "
+                   "and with --check the exact answer it implies (docs/checking.md)");
 
 }
 

@@ -32,6 +32,7 @@ struct Options {
     std::optional<double> hardness;
     bool hardnessFromYield = false;
     std::string pressureMap; // boundaryElement: the pressure field of the highest load, to this file
+    std::string plot;        // the interface's picture (every law, the band, the gap, the check), a PNG
     std::optional<double> length;
     std::size_t stride = 1;
     std::string model;

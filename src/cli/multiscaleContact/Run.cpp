@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Run.hpp"
 #include "Inputs.hpp"
+#include "Plot.hpp"
 
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
 #include "roughContact/interface/InterfaceRegime.hpp"
 #include "roughContact/interface/SurfaceCheck.hpp"
 #include "roughContact/io/ArealReader.hpp"
+#include "roughContact/io/CurvesPlot.hpp"
+#include "roughContact/io/Files.hpp"
 #include "roughContact/io/Numbers.hpp"
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/io/SpectrumReader.hpp"
@@ -77,6 +80,15 @@ int run(const Options& o)
     if (o.check && !o.table.empty()) {
         throw ParameterError("--table", "is the boundary-element table of an interface; --check solves surfaces of "
                                         "its own and keeps no table: give one or the other");
+    }
+    if (!o.plot.empty() && (o.levels || !o.table.empty() || (o.model == "boundaryElement" && !o.check))) {
+        throw ParameterError("--plot", std::string("draws the laws on the whole surface (and with --check the exact "
+                                                   "answer it implies); it does not go with ") +
+                                           (o.levels ? "--levels" : !o.table.empty() ? "--table" : "--model boundaryElement"));
+    }
+    if (!o.plot.empty()) {
+        requireReplaceable(o.plot, "--plot", "PNG picture", isPngStart); // before anything is computed
+        requireGnuplot("--plot");
     }
     if (o.check) {
         return runCheck(o);
@@ -168,7 +180,7 @@ int run(const Options& o)
     const auto* persson = dynamic_cast<const PerssonModel*>(model.get());
     // A gap implies the conductance columns: its separation is the law's where it has one, and
     // h_total adds its terms to h_c.
-    const bool conductance = o.conductance || !o.conductanceLaw.empty() || gapInputs.has_value();
+    const bool conductance = o.conductance || !o.conductanceLaw.empty() || gapInputs.has_value() || !o.plot.empty();
     const bool allLaws = o.conductanceLaw == "all";
     // persson's own conductance (Barber's relation with its mean separation) unless a law is named.
     const std::string lawName = o.conductanceLaw.empty() || allLaws
@@ -363,6 +375,13 @@ int run(const Options& o)
         out << '\n';
     }
     std::cout << out.str();
+    if (!o.plot.empty()) {
+        std::vector<double> asked;
+        for (std::size_t i = 0; i < loads.size(); ++i) {
+            asked.push_back(pressures.empty() ? loads[i] * Ep : pressures[i]);
+        }
+        writePlot(o, asked, ks, gap ? &*gap : nullptr, gapInputs ? &*gapInputs : nullptr, nullptr);
+    }
     return 0;
 }
 

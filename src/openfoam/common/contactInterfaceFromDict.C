@@ -217,7 +217,12 @@ void contactInterfaces::requestCheck
 }
 
 
-void contactInterfaces::checkOnce(const word& key, const string& who)
+void contactInterfaces::checkOnce
+(
+    const word& key,
+    const string& who,
+    const std::vector<double>& facePressures
+)
 {
     const auto found = checks_.find(key);
     if (found == checks_.end())
@@ -243,13 +248,28 @@ void contactInterfaces::checkOnce(const word& key, const string& who)
     {
         options.lightLoadPeriods = *spec.checkPeriods;
     }
+    // The pressures: the entry's, else the faces' at this first evaluation.
+    options.names.pressures = "checkPressures";
+    options.pressures =
+        spec.checkPressures.empty() ? facePressures : spec.checkPressures;
+    // The faces' pressures may lie beyond what the check can solve: then it
+    // checks the nearer end of its range and says so.
+    options.movePressuresIntoRange = spec.checkPressures.empty();
     options.log = [](const std::string& line)
     {
         Info<< "    " << line.c_str() << endl;
     };
     Info<< "thermalContactResistance: check yes: checking the laws on the"
         << " surface of contact entry '" << name << "' (" << who.c_str()
-        << ")" << endl;
+        << ") at "
+        << (
+               !spec.checkPressures.empty() ? "its checkPressures"
+             : !facePressures.empty()
+             ? "the pressures the patch carries now (min, mean, max)"
+             : "pressures across the table's range (no face in contact yet;"
+               " checkPressures chooses them)"
+           )
+        << endl;
     try
     {
         const roughContact::SurfaceCheck c =
@@ -272,8 +292,16 @@ void contactInterfaces::checkOnce(const word& key, const string& who)
                 << " of this surface by more than "
                 << label(roughContact::checkTolerance*100 + 0.5)
                 << " % at " << label(misses.size()) << " of "
-                << label(c.pressures.size()) << " checked pressures;"
-                << " the closest law here is " << c.closestLaw.c_str()
+                << label(c.pressures.size() - c.untrusted().size())
+                << " counted pressures; "
+                << (
+                       c.closestHolds()
+                     ? "the closest law here is " + c.closestLaw
+                       + " (within 25 % at every counted pressure)"
+                     : std::string("no law holds at every counted pressure:")
+                       + " the exact model (model boundaryElement) is the"
+                       + " answer to trust here"
+                   ).c_str()
                 << " (the check's table is above)" << endl;
         }
     }

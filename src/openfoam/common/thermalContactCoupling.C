@@ -64,8 +64,6 @@ void Foam::thermalContactCoupling::couple
         }
         else
         {
-            // check yes: made once, at the first evaluation
-            contactInterfaces::New(runTime).checkOnce(settings.contactKey, who());
             settings.checkContactUnchanged(runTime, who);
             in.pressure = pressure.cdata();
             in.pressureNbr = nbr.pressure.cdata();
@@ -207,6 +205,12 @@ void Foam::thermalContactCoupling::couple
     s.inContact = std::size_t(counts[0]);
     s.complete = std::size_t(counts[1]);
     s.faces = std::size_t(counts[2]);
+    // check yes: made once, at the first evaluation, at the faces' pressures
+    // unless the entry gives checkPressures.
+    contactInterfaces::New(runTime).checkOnce
+    (
+        settings.contactKey, who(), s.pressuresToCheck()
+    );
     const std::string regime = regimeLog.update(*settings.interface, s);
     if (!regime.empty())
     {

@@ -234,27 +234,28 @@ void Foam::functionObjects::thermalContactMonitor::writeSeries
           + region + "/" + side.patch().name() + " and " + nbrRegion + "/"
           + nbrPatchName;
         std::ofstream header(series, std::ios::trunc);
-        header
-            << ::roughContact::interfaceSeriesHeader
-               (
-                   description, region, nbrRegion
-               );
+        header << ::roughContact::interfaceSeriesHeader(region, nbrRegion);
         std::ofstream table(dir/"table.csv", std::ios::trunc);
-        ::roughContact::writeInterfaceTable
-        (
-            table, side.contactInterface(), description
-        );
-        if (!header || !table)
+        ::roughContact::writeInterfaceTable(table, side.contactInterface());
+        std::ofstream about(dir/"about.txt", std::ios::trunc);
+        about
+            << ::roughContact::interfaceAbout
+               (
+                   description, side.contactInterface()
+               );
+        if (!header || !table || !about)
         {
             WarningInFunction
                 << side.who().c_str() << ": cannot write " << series
-                << " or " << dir/"table.csv" << endl;
+                << ", " << dir/"table.csv" << " or " << dir/"about.txt"
+                << endl;
         }
         else
         {
             Info<< "thermalContactResistance: " << side.who().c_str()
                 << ": writing the interface's time series to " << series
-                << " and its table to " << dir/"table.csv" << endl;
+                << ", its table to table.csv and what they are to"
+                << " about.txt beside it" << endl;
         }
     }
     std::ofstream os(series, std::ios::app);

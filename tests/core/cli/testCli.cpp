@@ -1025,7 +1025,7 @@ TEST(Cli, ColumnNamesSayWhatTheyAre)
     const CommandResult check = run("--profile '" + standin + "' --model jacksonGreen --E 200e9,200e9 --nu 0.3,0.3 "
                                     "--Sy 0.4e9,0.4e9 --check --synthesize 128 --pressures 1e6");
     ASSERT_EQ(check.status, 0) << check.err;
-    EXPECT_NE(check.out.find("\nnominal_pressure,nominal_pressure_per_Eprime,area_exact,"), std::string::npos)
+    EXPECT_NE(check.out.find("\nnominal_pressure,nominal_pressure_per_Eprime,h_per_k_answer,"), std::string::npos)
         << check.out;
 }
 

@@ -307,3 +307,36 @@ TEST(CliRefusals, ThreadsBeyondTheCoresAreNotStarted)
     ASSERT_EQ(one.status, 0) << one.err;
     EXPECT_EQ(many.out, one.out);
 }
+
+TEST(CliRefusals, PlotReplacesOnlyAPictureAndOnlyWhereItCanDraw)
+{
+    // --plot FILE draws the laws on the whole surface: a PNG it replaces; any other file is
+    // refused before anything is computed and left byte for byte; with --levels, --table or the
+    // boundary-element model's load curve (no law to draw) it is refused; without gnuplot it says
+    // so before it computes anything and writes nothing.
+    TempDir dir;
+    const std::string standinRun = "--profile '" + standin + "' --model jacksonGreen --E 200e9 --nu 0.3 --Sy 0.4e9";
+    const std::string png = (dir.path() / "h.png").string();
+    const CommandResult drawn = run(standinRun + " --pressures 1e5,1e8 --plot '" + png + "'");
+    ASSERT_EQ(drawn.status, 0) << drawn.err;
+    EXPECT_EQ(contents(png).rfind(std::string("\x89PNG\r\n\x1a\n", 8), 0), 0U);
+    EXPECT_NE(drawn.err.find("the picture of the interface is in " + png), std::string::npos) << drawn.err;
+    // The CSV is the run's conductance (--plot implies --conductance): an h_per_k column.
+    EXPECT_NE(drawn.out.substr(0, drawn.out.find('\n')).find(",h_per_k"), std::string::npos) << drawn.out;
+    ASSERT_EQ(run(standinRun + " --pressures 1e6 --plot '" + png + "'").status, 0); // a PNG is replaced
+
+    const std::string profile = (dir.path() / "profile.csv").string();
+    std::filesystem::copy_file(standin, profile);
+    const std::string before = contents(profile);
+    expectRefused(run(standinRun + " --pressures 1e6 --plot '" + profile + "'"), {"--plot", "is left as it is"});
+    EXPECT_EQ(contents(profile), before);
+
+    const std::string other = (dir.path() / "other.png").string();
+    expectRefused(run(standinRun + " --loads 1e-4 --levels --plot '" + other + "'"), {"--plot", "--levels"});
+    expectRefused(run(tableArgs((dir.path() / "t.table").string()) + " --plot '" + other + "'"), {"--plot", "--table"});
+    expectRefused(run(bem + " --plot '" + other + "'"), {"--plot", "--check"});
+    const CommandResult noGnuplot =
+        runCommand("PATH=/nonexistent '" + cli + "' " + standinRun + " --pressures 1e6 --plot '" + other + "'");
+    expectRefused(noGnuplot, {"--plot", "needs gnuplot, which is not installed"}); // before any solve
+    EXPECT_FALSE(std::filesystem::exists(other));
+}

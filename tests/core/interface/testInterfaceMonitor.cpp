@@ -32,11 +32,10 @@ std::vector<std::string> fields(const std::string& line)
 
 TEST(InterfaceMonitor, HeaderNamesTheSidesAndTheColumns)
 {
-    const std::string h = interfaceSeriesHeader("interface of contact 'plates'", "bottom", "top");
-    EXPECT_EQ(h.rfind("# thermalContactResistance: interface of contact 'plates'\n", 0), 0U) << h;
-    const std::string columns = h.substr(h.rfind('\n', h.size() - 2) + 1);
-    EXPECT_EQ(columns, "time,Q_from_bottom_W,Q_into_top_W,h_mean_touching,h_mean_all,h_gap_mean_all,P_mean_Pa,"
-                       "Ar_An_mean_touching,faces_apart,faces_partial,faces_complete\n");
+    // One line, the header of a plain CSV file (no comment lines: numpy and pandas read it as is).
+    EXPECT_EQ(interfaceSeriesHeader("bottom", "top"),
+              "time,Q_from_bottom_W,Q_into_top_W,h_mean_touching,h_mean_all,h_gap_mean_all,P_mean_Pa,"
+              "Ar_An_mean_touching,faces_apart,faces_partial,faces_complete\n");
 }
 
 // Four faces of areas 1, 2, 3, 4 (the summary of testFaceCoupling's
@@ -89,17 +88,20 @@ TEST(InterfaceMonitor, TableHasEveryPointOfTheInterfacesTable)
     spec.side2 = spec.side1;
     const ContactInterface ci(spec);
     std::ostringstream os;
-    writeInterfaceTable(os, ci, "the test's interface");
+    writeInterfaceTable(os, ci);
     std::istringstream is(os.str());
     std::string line;
-    std::size_t comments = 0;
     std::vector<std::string> rows;
     while (std::getline(is, line)) {
-        (line.rfind('#', 0) == 0 ? (void)++comments : rows.push_back(line));
+        rows.push_back(line);
     }
-    // The description, the summary (its first line and the regime's three), the formula.
-    EXPECT_EQ(comments, 6U);
-    EXPECT_NE(os.str().find("#     regime: h' = "), std::string::npos) << os.str();
+    // A header line and a row a point: plain CSV. What it is goes to about.txt: the description,
+    // the formula, the summary with its regime, and how to plot it.
+    const std::string about = interfaceAbout("the test's interface", ci);
+    EXPECT_EQ(about.rfind("thermalContactResistance: the test's interface\n", 0), 0U) << about;
+    EXPECT_NE(about.find("h_c = k_s * hc_per_ks_per_m"), std::string::npos) << about;
+    EXPECT_NE(about.find(ci.summary()), std::string::npos) << about;
+    EXPECT_NE(about.find("numpy.genfromtxt('table.csv', delimiter=',', names=True)"), std::string::npos) << about;
     ASSERT_EQ(rows.size(), ci.table().pressures().size() + 1);
     EXPECT_EQ(rows[0], "P_Pa,Ar_An,hc_per_ks_per_m");
     // The first and last points, to the 10 digits written.
@@ -110,5 +112,5 @@ TEST(InterfaceMonitor, TableHasEveryPointOfTheInterfacesTable)
                 1e-9 * ci.table().conductancesPerConductivity().front());
     const std::vector<std::string> last = fields(rows.back());
     EXPECT_NEAR(std::stod(last[1]), ci.table().areaFractions().back(), 1e-9);
-    EXPECT_NE(os.str().find("complete contact (h infinite) from"), std::string::npos);
+    EXPECT_NE(about.find("complete contact (h infinite) from"), std::string::npos);
 }

@@ -444,6 +444,24 @@ TEST(InterfaceSpecReader, CheckPeriodsIsTheChecksLightLoadPeriodOfAProfileOrSpec
               std::string::npos);
 }
 
+TEST(InterfaceSpecReader, CheckPressuresAreTheChecksPressures)
+{
+    // checkPressures (P ...): empty by default (the front-end's pressures then), 1 to 5 pressures
+    // above 0 with check yes; otherwise an error naming the entry.
+    SpecValues c = contact();
+    c.set("check", true);
+    EXPECT_TRUE(readInterfaceSpec(c).checkPressures.empty());
+    c.set("checkPressures", std::vector<double>{5e6, 2e7});
+    EXPECT_EQ(readInterfaceSpec(c).checkPressures, (std::vector<double>{5e6, 2e7}));
+    c.set("checkPressures", std::vector<double>{1e6, 2e6, 3e6, 4e6, 5e6, 6e6});
+    EXPECT_NE(messageOf([&] { readInterfaceSpec(c); }, "--checkPressures").find("give 1 to 5 pressures"),
+              std::string::npos);
+    c.set("checkPressures", std::vector<double>{1e6, 0.0});
+    EXPECT_NE(messageOf([&] { readInterfaceSpec(c); }, "--checkPressures").find("above 0"), std::string::npos);
+    c.set("checkPressures", std::vector<double>{1e6}).set("check", false);
+    EXPECT_NE(messageOf([&] { readInterfaceSpec(c); }, "--checkPressures").find("needs check yes"), std::string::npos);
+}
+
 // A source that can say where an entry is written (as a dictionary gives its line).
 class LocatingValues final : public SpecSource {
 public:

@@ -240,8 +240,9 @@ TEST(SurfaceCheck, TheExactConductanceIsTheBoundaryElementModelsOnTheSurfacesSai
                                  " scan lengths, joining one scan length's by 0.01)"),
                   std::string::npos)
             << c.surface;
-        EXPECT_EQ(c.csv().rfind("nominal_pressure,nominal_pressure_per_Eprime,area_exact,h_per_k_exact,"
-                                "h_per_k_exact_min,h_per_k_exact_max,ratio_",
+        EXPECT_EQ(c.csv().rfind("nominal_pressure,nominal_pressure_per_Eprime,h_per_k_answer,h_per_k_answer_exact_low,"
+                                "h_per_k_answer_exact_high,area_checked_surface,h_per_k_checked_surface,"
+                                "h_per_k_checked_surface_min,h_per_k_checked_surface_max,exact_trusted,ratio_",
                                 0),
                   0U);
     }
@@ -597,4 +598,95 @@ TEST(SurfaceCheck, APaddedMapNearCompleteContactSaysItsExactAnswerIsNotToBeTrust
     std::printf("%s", mirrored.report().c_str());
     EXPECT_TRUE(mirrored.exactWarning.empty()) << mirrored.exactWarning;
     std::remove(file.c_str());
+}
+
+// The answer (SurfaceCheck.hpp): the chosen law on the whole surface as given, the h_c/k_s the
+// condition's table holds (to its interpolation, 0.5 %), not the law on the checked surface's cut
+// spectrum; and the exact answer it implies is the answer over the law's ratio at each seed.
+TEST(SurfaceCheck, TheAnswerIsTheChosenLawOnTheWholeSurface)
+{
+    const InterfaceSpec spec = powerLawSpec(true);
+    const double P = 3e7;
+    SurfaceCheckOptions o = small();
+    o.pressures = {P};
+    o.lightLoadPeriods = 1;
+    const SurfaceCheck c = checkSurface(spec, o);
+    ASSERT_EQ(c.answerHPerK.size(), 1U);
+    const ContactInterface ci(spec);
+    EXPECT_NEAR(c.answerHPerK[0] / ci.conductancePerConductivity(P), 1.0, 5e-3);
+    // The whole surface holds 200 levels, the checked one 16: the law differs between them.
+    EXPECT_LT(c.levelsKept, c.levelsGiven);
+    EXPECT_GT(std::fabs(c.answerHPerK[0] / c.chosen().hPerK[0] - 1.0), 1e-3);
+    const double scale = c.answerHPerK[0] / c.chosen().hPerK[0];
+    EXPECT_NEAR(c.answerExactLow[0], scale * c.exactHPerKLow[0], 1e-12 * c.answerExactLow[0]);
+    EXPECT_NEAR(c.answerExactHigh[0], scale * c.exactHPerKHigh[0], 1e-12 * c.answerExactHigh[0]);
+    EXPECT_NE(c.report().find("the answer for your whole surface"), std::string::npos) << c.report();
+}
+
+// Where the exact answer is not trusted the pressure counts for no law, and the verdict names a
+// law to use only when it holds at every counted pressure (the report alone, on made-up numbers).
+TEST(SurfaceCheck, TheVerdictCountsTrustedPressuresAndNamesNoLawThatMisses)
+{
+    SurfaceCheck c;
+    c.reducedModulus = 1e11;
+    c.gradient = 0.1;
+    c.pressures = {1e6, 1e7, 1e8};
+    c.exactHPerK = c.exactHPerKLow = c.exactHPerKHigh = {100.0, 1000.0, 1e4};
+    c.exactArea = {0.001, 0.01, 0.1};
+    c.exactTrusted = {true, true, false};
+    const auto law = [](const std::string& name, std::vector<double> ratio) {
+        CheckedLaw l;
+        l.name = name;
+        l.ratio = ratio;
+        l.hPerK = ratio;
+        for (std::size_t i = 0; i < 2; ++i) { // the counted pressures
+            l.worstFactor = std::max(l.worstFactor, std::max(ratio[i], 1.0 / ratio[i]));
+        }
+        return l;
+    };
+    // a: within 25 % where counted, far off where not; b: off by 1.5.
+    c.laws = {law("a", {0.9, 1.2, 5.0}), law("b", {1.5, 1.1, 1.0})};
+    c.chosenLaw = "a";
+    c.closestLaw = "a";
+    EXPECT_TRUE(c.closestHolds());
+    EXPECT_TRUE(c.chosenMisses().empty()); // 5.0 at 1e8 Pa is not counted
+    EXPECT_EQ(c.untrusted(), std::vector<double>{1e8});
+    std::string r = c.report();
+    EXPECT_NE(r.find("closest: a (within 25 % at every counted pressure"), std::string::npos) << r;
+    EXPECT_NE(r.find("not counted (*): 1 of 3 pressures"), std::string::npos) << r;
+    EXPECT_NE(r.find("is within 25 % of the exact conductance at every counted pressure"), std::string::npos) << r;
+    // Both off somewhere they count: no law is named to use.
+    c.laws = {law("a", {0.7, 1.2, 1.0}), law("b", {1.5, 1.1, 1.0})};
+    c.closestLaw = "a";
+    EXPECT_FALSE(c.closestHolds());
+    r = c.report();
+    EXPECT_EQ(r.find("closest: "), std::string::npos) << r;
+    EXPECT_NE(r.find("no law is within 25 % of the exact conductance at every counted pressure; the closest, a, "
+                     "is off by a factor of up to 1.429"),
+              std::string::npos)
+        << r;
+    EXPECT_NE(r.find("misses the exact conductance by more than 25 % at 1 of 2 counted pressures"), std::string::npos)
+        << r;
+    // The CSV says which pressures are trusted.
+    EXPECT_NE(c.csv().find(",0,"), std::string::npos) << c.csv();
+}
+
+// The condition's default pressures (the faces') may lie outside the checked range: moved to its
+// nearer end and said, not dropped (movePressuresIntoRange); asked for explicitly, dropped.
+TEST(SurfaceCheck, PressuresOutsideTheRangeAreMovedToItsEndWhenAskedTo)
+{
+    const InterfaceSpec spec = powerLawSpec(false);
+    SurfaceCheckOptions o = small();
+    o.lightLoadPeriods = 1;
+    o.pressures = {1.0, 3e7};
+    const SurfaceCheck dropped = checkSurface(spec, o);
+    EXPECT_EQ(dropped.dropped, std::vector<double>{1.0});
+    EXPECT_EQ(dropped.pressures, std::vector<double>{3e7});
+    o.movePressuresIntoRange = true;
+    const SurfaceCheck moved = checkSurface(spec, o);
+    EXPECT_TRUE(moved.dropped.empty());
+    EXPECT_EQ(moved.moved, std::vector<double>{1.0});
+    ASSERT_EQ(moved.pressures.size(), 2U);
+    EXPECT_EQ(moved.pressures[0], moved.lowestCheckable);
+    EXPECT_NE(moved.report().find("checked at its nearer end instead"), std::string::npos) << moved.report();
 }

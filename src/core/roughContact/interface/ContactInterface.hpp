@@ -119,6 +119,10 @@ struct InterfaceSpec {
     /// are solved on periods of this many scan lengths (SurfaceCheckOptions::lightLoadPeriods);
     /// unset: that option's default. ContactInterface does not use it.
     std::optional<std::size_t> checkPeriods;
+    /// Front-ends, with check: the pressures [Pa] it checks (1 to maximumCheckedPressures, each
+    /// > 0); empty: the front-end's (the condition: the pressures the patch carries at its first
+    /// evaluation). ContactInterface does not use it.
+    std::vector<double> checkPressures;
     /// Front-ends: the threads of the boundary-element solves of this entry's table and check
     /// (setThreads, parallel/Threads.hpp); unset: the front-end's default (the condition: 1 in a
     /// parallel run, where every core has a rank, else what the machine has). ContactInterface

@@ -45,6 +45,20 @@ double FaceSums::meanPressure() const
     return std::clamp(mean, pressureMin, pressureMax);
 }
 
+std::vector<double> FaceSums::pressuresToCheck() const
+{
+    std::vector<double> out;
+    if (inContact == 0) {
+        return out;
+    }
+    for (double P : {pressureMin, meanPressure(), pressureMax}) {
+        if (out.empty() || P / 1.01 > out.back()) {
+            out.push_back(P);
+        }
+    }
+    return out;
+}
+
 FaceRegimeLog::FaceRegimeLog(double factor) : factor_(factor)
 {
     if (!(factor > 1.0)) {

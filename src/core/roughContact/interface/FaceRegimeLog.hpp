@@ -12,6 +12,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace roughContact {
 
@@ -38,6 +39,11 @@ struct FaceSums {
 
     /// The mean pressure of the faces in contact [Pa] (0 with none).
     double meanPressure() const;
+
+    /// The pressures the condition's check takes by default (checkPressures unset): the min, mean
+    /// and max of the faces in contact, each kept when more than 1 % from the one before; none
+    /// without a face in contact.
+    std::vector<double> pressuresToCheck() const;
 };
 
 /// When and what the log says of the faces' regime; one per patch.

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // What a run writes about an interface besides its fields: a time series, one CSV row per
-// write time, and the pressure table the run used, once. The boundary condition (on the master
-// processor, from one of the interface's two sides) writes both under
-// postProcessing/thermalContactResistance/; the formatting is here so that it is tested.
+// write time (interface.csv), the pressure table the run used, once (table.csv), and what both
+// are (about.txt). The function object thermalContactMonitor (on the master processor, from one
+// of the interface's two sides) writes them under postProcessing/thermalContactResistance/; the
+// formatting is here so that it is tested. The CSV files are plain CSV, a header line and rows,
+// which numpy (genfromtxt with names=True) and pandas (read_csv) read without options.
 //
 // The time series' columns (interfaceSeriesHeader):
 //   time                   the run's time [s]
@@ -29,15 +31,18 @@ namespace roughContact {
 
 class ContactInterface;
 
-/// The comment lines and the column names of the time series (ending in a newline).
-std::string interfaceSeriesHeader(const std::string& description, const std::string& side1,
-                                  const std::string& side2);
+/// The column names of the time series (a line).
+std::string interfaceSeriesHeader(const std::string& side1, const std::string& side2);
 /// One row (ending in a newline): the time, both sides' heat [W] and the summary (summed over
 /// every processor) of the faces of side 1.
 std::string interfaceSeriesRow(double time, double heatFromSide1, double heatIntoSide2, const CouplingSummary& s);
 
-/// The interface's table as CSV: comment lines naming the model, the law and the range, then
-/// P_Pa, Ar_An, hc_per_ks_per_m at every table point (h_c = k_s times the last).
-void writeInterfaceTable(std::ostream& os, const ContactInterface& iface, const std::string& description);
+/// The interface's table as CSV: P_Pa, Ar_An, hc_per_ks_per_m at every table point (h_c = k_s
+/// times the last).
+void writeInterfaceTable(std::ostream& os, const ContactInterface& iface);
+
+/// about.txt: what the interface is (`description`), what each file holds, the interface's
+/// summary (model, law, range, the regime) and a line of Python that plots the table.
+std::string interfaceAbout(const std::string& description, const ContactInterface& iface);
 
 } // namespace roughContact

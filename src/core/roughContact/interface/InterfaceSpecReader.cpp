@@ -166,7 +166,7 @@ const std::vector<std::string>& interfaceEntries()
         "model",     "surface",        "surfaces",  "side1",    "side2",   "conductance",     "microhardness",
         "vickers",   "minPressure",    "maxPressure", "pointsPerDecade", "synthesize", "seed", "periodic",
         "mirror",    "detrend",   "hardness",       "hardnessFromYield", "gap", "check", "checkPeriods",
-        "threads",   "tableRanks"};
+        "checkPressures", "threads", "tableRanks"};
     return names;
 }
 
@@ -444,6 +444,24 @@ void readInterfaceSettings(const SpecSource& source, InterfaceSpec& spec)
         }
         spec.checkPeriods =
             checkedLightLoadPeriods(source.whole("checkPeriods"), spec.surfaces, source.name("checkPeriods"));
+    }
+    if (source.has("checkPressures")) {
+        const std::string name = source.name("checkPressures");
+        if (!spec.check) {
+            throw ParameterError(name, "are the pressures of the check; it needs check yes");
+        }
+        spec.checkPressures = source.numbers("checkPressures");
+        if (spec.checkPressures.empty() || spec.checkPressures.size() > maximumCheckedPressures) {
+            throw ParameterError(name, "give 1 to " + std::to_string(maximumCheckedPressures) +
+                                           " pressures [Pa] (the check solves each), not " +
+                                           std::to_string(spec.checkPressures.size()));
+        }
+        for (double P : spec.checkPressures) {
+            if (!(P > 0.0) || !std::isfinite(P)) {
+                throw ParameterError(name, "a pressure is " + limits::valueText(P, "Pa") +
+                                               ": give nominal pressures above 0 in Pa");
+            }
+        }
     }
     if (source.has("threads")) {
         const std::uint64_t t = source.whole("threads");

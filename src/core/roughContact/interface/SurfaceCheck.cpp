@@ -4,6 +4,7 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
 #include "roughContact/interface/BoundaryElementTable.hpp"
+#include "roughContact/interface/InterfaceCurves.hpp"
 #include "roughContact/io/Numbers.hpp"
 #include "roughContact/models/BoundaryElement.hpp"
 #include "roughContact/models/ModelFactory.hpp"
@@ -126,11 +127,40 @@ std::vector<double> SurfaceCheck::chosenMisses() const
     std::vector<double> out;
     const CheckedLaw& l = chosen();
     for (std::size_t i = 0; i < l.ratio.size(); ++i) {
-        if (!(std::fabs(l.ratio[i] - 1.0) <= checkTolerance)) {
+        const bool counted = i >= exactTrusted.size() || exactTrusted[i];
+        if (counted && !(std::fabs(l.ratio[i] - 1.0) <= checkTolerance)) {
             out.push_back(pressures[i]);
         }
     }
     return out;
+}
+
+std::vector<double> SurfaceCheck::untrusted() const
+{
+    std::vector<double> out;
+    for (std::size_t i = 0; i < exactTrusted.size() && i < pressures.size(); ++i) {
+        if (!exactTrusted[i]) {
+            out.push_back(pressures[i]);
+        }
+    }
+    return out;
+}
+
+bool SurfaceCheck::closestHolds() const
+{
+    for (const CheckedLaw& l : laws) {
+        if (l.name == closestLaw) {
+            // A ratio r holds when |r - 1| <= tolerance; the factor max(r, 1/r) of one that holds is
+            // at most 1/(1 - tolerance).
+            for (std::size_t i = 0; i < l.ratio.size(); ++i) {
+                if ((i >= exactTrusted.size() || exactTrusted[i]) && !(std::fabs(l.ratio[i] - 1.0) <= checkTolerance)) {
+                    return false;
+                }
+            }
+            return true;
+        }
+    }
+    return false;
 }
 
 std::string SurfaceCheck::report() const
@@ -179,54 +209,121 @@ std::string SurfaceCheck::report() const
            << withDigits(highestCheckable, digits)
            << " Pa: p/(E' h') within [1e-4, 1e-1]" << (hardness ? ", at most 0.9 H" : "") << ")\n";
     }
+    if (!moved.empty()) {
+        os << "  asked for at";
+        for (double P : moved) {
+            os << " " << number(P);
+        }
+        os << " Pa, outside the checked range " << number(lowestCheckable) << " to " << number(highestCheckable)
+           << " Pa (p/(E' h') within [1e-4, 1e-1]" << (hardness ? ", at most 0.9 H" : "")
+           << "): checked at its nearer end instead; what it says holds there, not at those pressures\n";
+    }
     const std::size_t width = 13;
-    os << "  " << std::left << std::setw(26) << "P [Pa]";
+    const std::size_t label = 30;
+    const auto row = [&](const std::string& name) -> std::ostream& {
+        return os << "\n  " << std::left << std::setw(label) << name;
+    };
+    const auto cell = [&](const std::string& text) { os << std::right << std::setw(width) << text; };
+    const auto counted = [&](std::size_t i) { return i >= exactTrusted.size() || exactTrusted[i]; };
+    os << "  " << std::left << std::setw(label) << "P [Pa]";
     for (double P : pressures) {
-        os << std::right << std::setw(width) << number(P);
+        cell(number(P));
     }
-    os << "\n  " << std::left << std::setw(26) << "p/(E' h')";
+    row("p/(E' h')");
     for (double P : pressures) {
-        os << std::right << std::setw(width) << number(P / (reducedModulus * gradient));
+        cell(number(P / (reducedModulus * gradient)));
     }
-    os << "\n  " << std::left << std::setw(26) << "exact A_r/A_n";
+    // The answer first: the number for the joint (SurfaceCheck.hpp, "The answer").
+    if (!answerHPerK.empty()) {
+        os << "\n  the answer for your whole surface: the chosen law " << chosenLaw
+           << ", and the exact answer it implies (the answer over the law's ratio below, over the seeds)";
+        row("  h_c/k_s of the law [1/m]");
+        for (double h : answerHPerK) {
+            cell(number(h));
+        }
+        bool oneValue = true; // one seed, or a map: the exact answer it implies is one number
+        for (std::size_t i = 0; i < pressures.size(); ++i) {
+            oneValue = oneValue && (!counted(i) || answerExactLow[i] == answerExactHigh[i]);
+        }
+        row(oneValue ? "  exact it implies [1/m]" : "  exact it implies, from");
+        for (std::size_t i = 0; i < pressures.size(); ++i) {
+            cell(counted(i) ? number(answerExactLow[i]) : std::string("not trusted"));
+        }
+        if (!oneValue) {
+            row("                    to");
+            for (std::size_t i = 0; i < pressures.size(); ++i) {
+                cell(counted(i) ? number(answerExactHigh[i]) : std::string("-"));
+            }
+        }
+    }
+    os << (surface.rfind("the map ", 0) == 0
+               ? "\n  the checked surface: the map itself"
+               : "\n  the checked surface (synthesized from your surface's spectrum and band-limited: its exact "
+                 "answer is not your whole surface's; the laws' ratios to it carry over)");
+    row("  exact A_r/A_n");
     for (double a : exactArea) {
-        os << std::right << std::setw(width) << number(a);
+        cell(number(a));
     }
-    os << "\n  " << std::left << std::setw(26) << "exact h_c/k_s [1/m]";
+    row("  exact h_c/k_s [1/m]");
     for (double h : exactHPerK) {
-        os << std::right << std::setw(width) << number(h);
+        cell(number(h));
     }
-    os << "\n  " << std::left << std::setw(26) << "  seeds' spread";
+    row("    seeds' spread");
     for (std::size_t i = 0; i < pressures.size(); ++i) {
         std::ostringstream spread;
         spread << std::fixed << std::setprecision(2) << exactHPerKLow[i] / exactHPerK[i] << "-"
                << exactHPerKHigh[i] / exactHPerK[i];
-        os << std::right << std::setw(width) << (exactHPerKLow[i] == exactHPerKHigh[i] ? std::string("-") : spread.str());
+        cell(exactHPerKLow[i] == exactHPerKHigh[i] ? std::string("-") : spread.str());
+    }
+    if (!untrusted().empty()) {
+        row("  exact answer trusted");
+        for (std::size_t i = 0; i < pressures.size(); ++i) {
+            cell(counted(i) ? "yes" : "no");
+        }
     }
     os << "\n  law / exact:\n";
     for (const CheckedLaw& l : laws) {
-        os << "  " << (l.name == chosenLaw ? "* " : "  ") << std::left << std::setw(24) << l.name;
+        os << "  " << (l.name == chosenLaw ? "* " : "  ") << std::left << std::setw(label - 2) << l.name;
         if (!l.unavailable.empty()) {
             os << "  (not checked: " << l.unavailable << ")\n";
             continue;
         }
-        for (double r : l.ratio) {
-            os << std::right << std::setw(width) << number(r);
+        for (std::size_t i = 0; i < l.ratio.size(); ++i) {
+            cell(number(l.ratio[i]) + (counted(i) ? "" : "*"));
         }
         os << "\n";
     }
+    const int tolerance = int(checkTolerance * 100 + 0.5);
+    const std::vector<double> notTrusted = untrusted();
+    if (!notTrusted.empty()) {
+        os << "  not counted (*): " << notTrusted.size() << " of " << pressures.size()
+           << " pressures, where the exact answer is not to be trusted (below): no law's ratio there counts\n";
+    }
     for (const CheckedLaw& l : laws) {
         if (l.name == closestLaw) {
-            os << "  closest: " << closestLaw << " (off by a factor of at most " << number(l.worstFactor) << ")\n";
+            if (closestHolds()) {
+                os << "  closest: " << closestLaw << " (within " << tolerance << " % at every counted pressure; off by a "
+                   << "factor of at most " << number(l.worstFactor) << ")\n";
+            } else {
+                os << "  no law is within " << tolerance << " % of the exact conductance at every counted pressure; "
+                   << "the closest, " << closestLaw << ", is off by a factor of up to " << number(l.worstFactor)
+                   << ": the exact model (model boundaryElement) is the answer to trust here\n";
+            }
         }
     }
+    if (closestLaw.empty()) {
+        os << "  no pressure is counted: the exact answer is trusted at none, and no law is judged\n";
+    }
     const std::vector<double> misses = chosenMisses();
+    const std::size_t countedPressures = pressures.size() - notTrusted.size();
     os << "  the chosen law (*) " << chosenLaw;
-    if (misses.empty()) {
-        os << " is within " << int(checkTolerance * 100 + 0.5) << " % of the exact conductance at every checked pressure";
+    if (countedPressures == 0) {
+        os << " is not judged";
+    } else if (misses.empty()) {
+        os << " is within " << tolerance << " % of the exact conductance at every counted pressure";
     } else {
-        os << " misses the exact conductance by more than " << int(checkTolerance * 100 + 0.5) << " % at "
-           << misses.size() << " of " << pressures.size() << " checked pressures";
+        os << " misses the exact conductance by more than " << tolerance << " % at " << misses.size() << " of "
+           << countedPressures << " counted pressures";
     }
     os << " (" << number(seconds) << " s)\n";
     if (!exactWarning.empty()) {
@@ -241,7 +338,9 @@ std::string SurfaceCheck::report() const
 std::string SurfaceCheck::csv() const
 {
     std::ostringstream os;
-    os << "nominal_pressure,nominal_pressure_per_Eprime,area_exact,h_per_k_exact,h_per_k_exact_min,h_per_k_exact_max";
+    os << "nominal_pressure,nominal_pressure_per_Eprime,h_per_k_answer,h_per_k_answer_exact_low,"
+          "h_per_k_answer_exact_high,area_checked_surface,h_per_k_checked_surface,h_per_k_checked_surface_min,"
+          "h_per_k_checked_surface_max,exact_trusted";
     for (const CheckedLaw& l : laws) {
         if (l.unavailable.empty()) {
             os << ",ratio_" << l.name;
@@ -249,9 +348,13 @@ std::string SurfaceCheck::csv() const
     }
     os << '\n';
     for (std::size_t i = 0; i < pressures.size(); ++i) {
+        const bool trusted = i >= exactTrusted.size() || exactTrusted[i];
         os << formatNumber(pressures[i]) << ',' << formatNumber(pressures[i] / reducedModulus) << ','
+           << (i < answerHPerK.size() ? formatNumber(answerHPerK[i]) : std::string()) << ','
+           << (i < answerHPerK.size() && trusted ? formatNumber(answerExactLow[i]) : std::string()) << ','
+           << (i < answerHPerK.size() && trusted ? formatNumber(answerExactHigh[i]) : std::string()) << ','
            << formatNumber(exactArea[i]) << ',' << formatNumber(exactHPerK[i]) << ','
-           << formatNumber(exactHPerKLow[i]) << ',' << formatNumber(exactHPerKHigh[i]);
+           << formatNumber(exactHPerKLow[i]) << ',' << formatNumber(exactHPerKHigh[i]) << ',' << (trusted ? 1 : 0);
         for (const CheckedLaw& l : laws) {
             if (l.unavailable.empty()) {
                 os << ',' << formatNumber(l.ratio[i]);
@@ -425,6 +528,9 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
         for (double P : options.pressures) {
             if (P >= lo * (1 - 1e-12) && P <= hi * (1 + 1e-12)) {
                 out.pressures.push_back(P);
+            } else if (options.movePressuresIntoRange && hi >= lo) {
+                out.moved.push_back(P);
+                out.pressures.push_back(P < lo ? lo : hi);
             } else {
                 out.dropped.push_back(P);
             }
@@ -572,6 +678,11 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
         }
     }
 
+    // The answer's law: the chosen one on the whole surface as given, as the condition builds it
+    // (the surfaces' roughness and skewness; SurfaceCheck.hpp, "The answer").
+    const MultiscaleModel wholeModel(given, Ep, makeAsperityModel(areaModel, materials));
+    const std::unique_ptr<ConductanceLaw> answerLaw = wholeSurfaceLaw(out.chosenLaw, spec, given, wholeModel);
+
     // The exact conductance on every solved surface: per part and pressure, the log-mean over
     // the seeds, the mean area and the seeds' extremes.
     BoundaryElementOptions bo;
@@ -582,6 +693,7 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     struct Exact {
         std::vector<double> logMean, area, logLow, logHigh;
     };
+    out.exactTrusted.assign(count, true);
     std::vector<Exact> exact(parts.size(), Exact{std::vector<double>(count, 0.0), std::vector<double>(count, 0.0),
                                                  std::vector<double>(count, std::numeric_limits<double>::infinity()),
                                                  std::vector<double>(count, -std::numeric_limits<double>::infinity())});
@@ -623,6 +735,9 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
             }
             for (std::size_t j = 0; j < part.at.size(); ++j) {
                 const std::size_t i = part.at[j];
+                if (points[j].patchCorrectionGain > patchCorrectionGainLimit) {
+                    out.exactTrusted[i] = false; // the pressures patchCorrectionWarning names
+                }
                 const double h = points[j].conductancePerConductivity;
                 if (!(h > 0.0) || !std::isfinite(h)) {
                     // A padded map's spots conducting as the bonded map (h infinite below complete
@@ -685,16 +800,35 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
                 joined(i, [&](std::size_t k) { return laws[k][l].second->perConductivity(out.pressures[i]); });
             checked.ratio[i] = checked.hPerK[i] / out.exactHPerK[i];
         }
-        for (double r : checked.ratio) {
+        bool counted = false;
+        for (std::size_t i = 0; i < count; ++i) {
+            if (!out.exactTrusted[i]) {
+                continue; // reported apart, counted for no law
+            }
+            counted = true;
+            const double r = checked.ratio[i];
             const double factor = r >= 1.0 ? r : 1.0 / r;
             checked.worstFactor =
                 std::max(checked.worstFactor, std::isnan(factor) ? std::numeric_limits<double>::infinity() : factor);
         }
-        if (checked.worstFactor < best) {
+        if (counted && checked.worstFactor < best) {
             best = checked.worstFactor;
             out.closestLaw = checked.name;
         }
         out.laws.push_back(checked);
+    }
+    // The answer, and the exact answer it implies at the seeds' extremes.
+    {
+        const CheckedLaw& checked = out.chosen();
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        for (std::size_t i = 0; i < count; ++i) {
+            const double answer = answerLaw->perConductivity(out.pressures[i]);
+            out.answerHPerK.push_back(answer);
+            // exact = law / ratio, the ratio at each seed's extreme: law_checked / exact_seed.
+            const double scale = answer / checked.hPerK[i];
+            out.answerExactLow.push_back(out.exactTrusted[i] ? scale * out.exactHPerKLow[i] : nan);
+            out.answerExactHigh.push_back(out.exactTrusted[i] ? scale * out.exactHPerKHigh[i] : nan);
+        }
     }
     out.seconds = seconds();
     return out;

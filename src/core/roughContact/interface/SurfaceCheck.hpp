@@ -40,6 +40,17 @@
 // The ratio of a law is its h_c/k_s over the exact one's geometric mean over the seeds; the
 // seeds' spread is reported beside it. A law holds at a pressure when its ratio is within
 // [1 - checkTolerance, 1 + checkTolerance] (0.75 to 1.25, the band of the fidelity study).
+// Where the exact answer is not to be trusted (a map solved padded near complete contact:
+// patchCorrectionWarning) the pressure is reported apart and counts for no law: not as a miss,
+// not for the closest law. The verdict names a law to use only when it holds at every counted
+// pressure; else it says that none does.
+//
+// The answer. What was solved is the checked surface (a 1-D description's band-limited
+// synthesized surfaces; a map itself), not the user's whole surface: its exact h_c/k_s is not
+// the number for the joint, the law's ratio to it is what carries over. So the check gives as
+// its answer the chosen law on the whole surface as given (the h_c/k_s the condition uses) and,
+// beside it, where the exact answer for the whole surface lies if the law misses it as it
+// missed the checked one: the answer over the law's ratio, over the seeds' spread.
 #pragma once
 
 #include "roughContact/interface/ContactInterface.hpp"
@@ -80,6 +91,10 @@ struct SurfaceCheckOptions {
     /// Pressures [Pa] to check instead of the spec's range, at most maximumCheckedPressures and
     /// finite (each within the clipped range is kept; none left is a ParameterError).
     std::vector<double> pressures;
+    /// With pressures: one outside the checked range is checked at the range's nearer end instead
+    /// (and said: SurfaceCheck::moved), not dropped. The condition's default, the pressures its
+    /// faces carry, which may lie beyond what the check can solve.
+    bool movePressuresIntoRange = false;
     /// A profile's or spectrum's pressures up to p/(E' h') = smallCellLoadPerGradient are solved
     /// on periods of this many scan lengths, and joined with one scan length's up to
     /// checkBlendEnd (1 to 64; 1: one scan length at every pressure).
@@ -102,7 +117,7 @@ struct CheckedLaw {
     std::string unavailable;
     std::vector<double> hPerK; ///< h_c/k_s [1/m] per checked pressure
     std::vector<double> ratio; ///< hPerK / exact
-    /// The largest of max(ratio, 1/ratio) over the pressures: 1 is exact.
+    /// The largest of max(ratio, 1/ratio) over the counted pressures (exactTrusted): 1 is exact.
     double worstFactor = 0.0;
 };
 
@@ -131,15 +146,28 @@ struct SurfaceCheck {
     std::vector<double> pressures;       ///< [Pa]
     /// Pressures asked for (SurfaceCheckOptions::pressures) outside the checked range [Pa].
     std::vector<double> dropped;
+    /// Of those, the ones checked at the range's nearer end instead (movePressuresIntoRange).
+    std::vector<double> moved;
     double lowestCheckable = 0.0;        ///< the checked range [Pa] (SurfaceCheck.hpp)
     double highestCheckable = 0.0;
+    /// The exact answer of the checked surface (not the whole surface: The answer, above).
     std::vector<double> exactHPerK;      ///< geometric mean over the seeds [1/m]
     std::vector<double> exactHPerKLow;   ///< the seeds' smallest
     std::vector<double> exactHPerKHigh;  ///< the seeds' largest
     std::vector<double> exactArea;       ///< A_r/A_n, the mean over the seeds
+    /// Per pressure: false where the exact answer is not to be trusted (exactWarning); such a
+    /// pressure counts for no law.
+    std::vector<bool> exactTrusted;
     std::vector<CheckedLaw> laws;        ///< every law, in conductanceLawNames() order
     std::string chosenLaw;               ///< the spec's (or the default)
-    std::string closestLaw;              ///< the smallest worstFactor
+    /// The smallest worstFactor over the counted pressures; empty when none is counted.
+    std::string closestLaw;
+    /// The answer (SurfaceCheck.hpp): the chosen law's h_c/k_s [1/m] on the whole surface as
+    /// given, per pressure; and the exact answer it implies, answer / the law's ratio, at the
+    /// seeds' extremes [1/m] (NaN where the exact answer is not trusted).
+    std::vector<double> answerHPerK;
+    std::vector<double> answerExactLow;
+    std::vector<double> answerExactHigh;
     /// A map solved padded near complete contact: that its exact h_c is not to be trusted at
     /// some pressures (patchCorrectionWarning) and the ratios there neither; empty otherwise.
     std::string exactWarning;
@@ -152,13 +180,21 @@ struct SurfaceCheck {
     /// The chosen law's entry (ParameterError when it is not among laws).
     const CheckedLaw& chosen() const;
     /// The pressures at which the chosen law misses the exact conductance by more than
-    /// checkTolerance.
+    /// checkTolerance (counted pressures only).
     std::vector<double> chosenMisses() const;
+    /// The pressures whose exact answer is not trusted (exactTrusted false).
+    std::vector<double> untrusted() const;
+    /// Whether the closest law holds (within checkTolerance) at every counted pressure: then it is
+    /// the law to use; else no law does.
+    bool closestHolds() const;
     /// A table for a log or a terminal: the exact h_c/k_s per pressure with the seeds' spread,
     /// each law's ratio, the closest law and the chosen law's verdict (and exactWarning).
     std::string report() const;
-    /// The numbers as CSV: nominal_pressure [Pa], nominal_pressure_per_Eprime (F/(A_n E')), the
-    /// exact area and h_c/k_s (with the spread), one ratio_NAME column per law that could be built.
+    /// The numbers as CSV: nominal_pressure [Pa], nominal_pressure_per_Eprime (F/(A_n E')),
+    /// h_per_k_answer and the exact answer it implies (h_per_k_answer_exact_low, _high), the
+    /// checked surface's exact area and h_c/k_s (area_checked_surface, h_per_k_checked_surface,
+    /// its seeds' _min and _max), exact_trusted (1 or 0), one ratio_NAME column per law that
+    /// could be built.
     std::string csv() const;
 };
 
