@@ -12,9 +12,6 @@
 #include <string>
 
 namespace roughContact {
-
-class Spectrum;
-
 namespace limits {
 
 /// Lengths [m]: sample spacings, scan lengths L (A_n = L^2) and wavelengths 1/f. From a
@@ -151,9 +148,6 @@ double requireLength(const std::string& what, double value);
 /// Throws ParameterError(what, ...) naming the count, the cap and the memory it would need,
 /// when levels > maximumLevels; `hint` ends the message (how to get fewer levels).
 void requireLevelCount(const std::string& what, double levels, const std::string& hint = "");
-/// A surface a contact model can work with: rms height at least minimumRoughness and at least
-/// one level that is not flat. ParameterError naming the surface otherwise.
-void requireRoughness(const Spectrum& surface);
 
 } // namespace limits
 } // namespace roughContact

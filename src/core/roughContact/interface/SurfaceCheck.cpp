@@ -10,6 +10,7 @@
 #include "roughContact/models/ModelFactory.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
+#include "roughContact/surface/Roughness.hpp"
 #include "roughContact/surface/SpectralMoments.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/MeasuredAccuracy.hpp"
@@ -502,7 +503,7 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     Part& one = *onePart;
     // A surface too smooth to have contact spots is said as such, before any range is derived
     // from its gradient.
-    limits::requireRoughness(one.lawSpectrum);
+    requireRoughness(one.lawSpectrum);
     out.levelsKept = one.lawSpectrum.size();
     out.gradient = arealRmsGradient(spectralMoments(one.lawSpectrum));
 

@@ -12,6 +12,7 @@
 #include "roughContact/models/MajumdarBhushan.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
 #include "roughContact/models/Persson.hpp"
+#include "roughContact/surface/Roughness.hpp"
 
 #include <algorithm>
 
@@ -79,7 +80,7 @@ std::unique_ptr<ContactModel> makeContactModel(const std::string& name, const Sp
         return std::make_unique<MultiscaleModel>(spectrum, m.reducedModulus(), makeAsperityModel(name, m));
     }
     if (name == "greenwoodWilliamson" || name == "greenwoodWilliamsonJG" || name == "majumdarBhushan") {
-        limits::requireRoughness(spectrum);
+        requireRoughness(spectrum);
     }
     if (name == "greenwoodWilliamson" || name == "greenwoodWilliamsonJG") {
         return GreenwoodWilliamson::fromSpectrum(spectrum, m, name == "greenwoodWilliamsonJG");

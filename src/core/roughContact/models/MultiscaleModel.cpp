@@ -3,6 +3,7 @@
 
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
+#include "roughContact/surface/Roughness.hpp"
 
 #include <cmath>
 #include <limits>
@@ -17,7 +18,7 @@ MultiscaleModel::MultiscaleModel(const Spectrum& spectrum, double Eprime,
     if (!asperity_) {
         throw ParameterError("asperity model", "none given");
     }
-    limits::requireRoughness(spectrum);
+    requireRoughness(spectrum);
     for (std::size_t i = 0; i < spectrum.size(); ++i) {
         // Zero amplitude carries nothing; a flat level (Limits.hpp) is in complete contact at
         // every load the model accepts: both are skipped, with the same result.

@@ -5,6 +5,7 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
+#include "roughContact/surface/Roughness.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 
 #include <algorithm>
@@ -209,7 +210,7 @@ PerssonModel::PerssonModel(const Spectrum& lineScan, double Eprime, PerssonOptio
         os << "the construction's work budget must be within [1e5, 1e12], got " << options_.workBudget;
         throw ParameterError("workBudget", os.str());
     }
-    limits::requireRoughness(lineScan);
+    requireRoughness(lineScan);
     const IsotropicSpectrum iso(lineScan);
     const double fLow = iso.lowestFrequency();
     const double fHigh = iso.highestFrequency();

@@ -222,4 +222,31 @@ SurfaceRoughness combined(const SurfaceRoughness& a, const SurfaceRoughness& b)
     return SurfaceRoughness{std::hypot(a.sigma, b.sigma), std::hypot(a.meanAbsoluteSlope, b.meanAbsoluteSlope)};
 }
 
+void requireRoughness(const Spectrum& surface)
+{
+    const std::string what =
+        "surface " + (surface.source().empty() ? std::string("(spectrum)") : surface.source());
+    const double rms = std::sqrt(surface.profileVariance());
+    if (rms == 0.0) {
+        throw ParameterError(what, "has zero roughness (every amplitude is 0): perfectly smooth surfaces "
+                                   "conform and are in complete contact at any load; there is no contact "
+                                   "resistance to model");
+    }
+    if (rms < limits::minimumRoughness) {
+        std::ostringstream os;
+        os << "rms height " << rms << " m is below " << limits::minimumRoughness
+           << " m (a femtometre): not a physical roughness; check the units";
+        throw ParameterError(what, os.str());
+    }
+    for (std::size_t i = 0; i < surface.size(); ++i) {
+        if (surface.amplitude(i) * surface.frequency(i) > limits::flatSlope) {
+            return;
+        }
+    }
+    std::ostringstream os;
+    os << "every level is flat (slope beta f <= " << limits::flatSlope
+       << "): the surfaces are in complete contact at any load the models accept";
+    throw ParameterError(what, os.str());
+}
+
 } // namespace roughContact

@@ -22,6 +22,10 @@ struct SurfaceRoughness {
 /// it on its input.
 void checkRoughness(const SurfaceRoughness& r);
 
+/// A surface a contact model can work with: rms height at least limits::minimumRoughness and at
+/// least one level steeper than limits::flatSlope. ParameterError naming the surface otherwise.
+void requireRoughness(const Spectrum& surface);
+
 /// sigma and m of a line profile, after removing its mean and linear tilt (Profile::detrended,
 /// least squares): sigma = rms of the detrended heights; m = (1/(N-1)) sum_i |z_{i+1} - z_i| / dx,
 /// the forward difference of neighbouring samples (first order in dx; on a sinusoid of
