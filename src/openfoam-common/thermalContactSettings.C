@@ -31,9 +31,10 @@ namespace
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::thermalContactSettings::thermalContactSettings()
+Foam::thermalContactSettings::thermalContactSettings(const fileName& file)
 :
-    Tnbr("undefined-Tnbr")
+    Tnbr("undefined-Tnbr"),
+    dictName(file)
 {}
 
 
@@ -155,7 +156,7 @@ Foam::thermalContactSettings::thermalContactSettings
             << e.what() << exit(FatalIOError);
     }
     contactDigest = entryText(props.subDict(contactName));
-    contactCheckedTimeIndex = runTime.timeIndex();
+    readTimeIndex = runTime.timeIndex();
     checkRecordedSurface(dict, who, fieldFile);
 
     // The width of the gap where the surfaces do not touch (P <= 0).
@@ -233,19 +234,21 @@ void Foam::thermalContactSettings::checkRecordedSurface
 void Foam::thermalContactSettings::checkContactUnchanged
 (
     const Time& runTime,
-    const std::function<string()>& who
-)
+    const std::function<string()>& who,
+    contactWatch& watch
+) const
 {
     if
     (
-        warnedChanged
-     || runTime.timeIndex() == contactCheckedTimeIndex
+        watch.warned
+     || runTime.timeIndex() == watch.checkedTimeIndex
+     || runTime.timeIndex() == readTimeIndex
     )
     {
         return;
     }
     // Files are re-read between time steps: one comparison per step.
-    contactCheckedTimeIndex = runTime.timeIndex();
+    watch.checkedTimeIndex = runTime.timeIndex();
     const IOdictionary& props =
         runTime.lookupObject<IOdictionary>("thermalContactProperties");
     const dictionary* entry = foamCompat::findDict(props, contactName);
@@ -258,7 +261,7 @@ void Foam::thermalContactSettings::checkContactUnchanged
             << " change is ignored: the contact table stays as it was built"
             << " at the start (surface, materials, model, pressure range)"
             << " until the run is restarted." << endl;
-        warnedChanged = true;
+        watch.warned = true;
     }
 }
 

@@ -35,7 +35,7 @@ Foam::thermalContactCoupling::thermalContactCoupling(const label n)
 
 void Foam::thermalContactCoupling::couple
 (
-    thermalContactSettings& settings,
+    const thermalContactSettings& settings,
     const Time& runTime,
     const std::function<string()>& who,
     const scalarField& kappa,
@@ -64,7 +64,7 @@ void Foam::thermalContactCoupling::couple
         }
         else
         {
-            settings.checkContactUnchanged(runTime, who);
+            settings.checkContactUnchanged(runTime, who, contactWatch);
             in.pressure = pressure.cdata();
             in.pressureNbr = nbr.pressure.cdata();
             in.cellTemperatureNbr = nbr.T.cdata();

@@ -7,7 +7,7 @@
 #include "addToRunTimeSelectionTable.H"
 #include "foamCompat.H"
 #include "fvMesh.H"
-#include "mappedPatchBase.H"
+#include "thermalContactLine.H"
 #include "OSspecific.H"
 #include "Time.H"
 #include "volFields.H"
@@ -102,7 +102,7 @@ namespace
     {
         return Foam::gSum
         (
-            side.kappa(side)*side.snGrad()*side.patch().magSf()
+            side.sideKappa()*side.snGrad()*side.patch().magSf()
         );
     }
 }
@@ -196,11 +196,10 @@ void Foam::functionObjects::thermalContactMonitor::writeSeries
     const thermalContactResistanceFvPatchScalarField& side
 )
 {
-    const mappedPatchBase& mpp =
-        refCast<const mappedPatchBase>(side.patch().patch());
+    const thermalContactLine::neighbourMap nbrMap(side.patch());
     const word region(side.patch().boundaryMesh().mesh().name());
-    const word nbrRegion(mpp.sampleRegion());
-    const word nbrPatchName(mpp.samplePatch());
+    const word nbrRegion(nbrMap.regionName());
+    const word nbrPatchName(nbrMap.patchName());
     // One of the two sides writes: the one whose region (then patch) name
     // comes first.
     if
@@ -275,7 +274,11 @@ Foam::functionObjects::thermalContactMonitor::thermalContactMonitor
     const dictionary& dict
 )
 :
+#if defined(ROUGHCONTACT_FOUNDATION)
+    functionObject(name, runTime),
+#else
     timeFunctionObject(name, runTime),
+#endif
     fieldName_("T")
 {
     read(dict);
@@ -317,7 +320,7 @@ bool Foam::functionObjects::thermalContactMonitor::read(const dictionary& dict)
                 << foamCompat::listed(allowed) << exit(FatalIOError);
         }
     }
-    fieldName_ = dict.getOrDefault<word>("field", "T");
+    fieldName_ = foamCompat::getOrDefault<word>(dict, "field", "T");
     dictName_ = dict.name();
     fieldChecked_ = false;
     return true;
@@ -408,6 +411,14 @@ Foam::functionObjects::thermalContactMonitor::regions() const
     // are collective).
     return time_.lookupClass<fvMesh>().sortedToc();
 }
+
+
+#if defined(ROUGHCONTACT_FOUNDATION)
+Foam::wordList Foam::functionObjects::thermalContactMonitor::fields() const
+{
+    return wordList(1, fieldName_);
+}
+#endif
 
 
 bool Foam::functionObjects::thermalContactMonitor::execute()

@@ -2,26 +2,23 @@
 // Part of roughContact, licensed GPL-3.0-or-later (LICENSE). This OpenFOAM glue builds on
 // OpenFOAM (Copyright OpenCFD Ltd. and The OpenFOAM Foundation; GPL-3.0-or-later): the
 // coupled-baffle arithmetic and structure follow compressible::
-// turbulentTemperatureCoupledBaffleMixedFvPatchScalarField and temperatureCoupledBase.
+// turbulentTemperatureCoupledBaffleMixedFvPatchScalarField (ESI) and
+// coupledTemperatureFvPatchScalarField (Foundation). One body for both lines: what a line does
+// its own way is thermalContactLine.H of the folder wmake builds in; `#if` marks the lines where
+// the patch-field API differs.
 #include "thermalContactResistanceFvPatchScalarField.H"
 
 #include "addToRunTimeSelectionTable.H"
-#include "fvPatchFieldMapper.H"
 #include "volFields.H"
-#include "mappedPatchBase.H"
 #include "foamCompat.H"
 
 #include <algorithm>
-#include <cmath>
-#include <exception>
 #include <string>
 
 // An error found at run time (not while reading the dictionary): FatalIOError
 // naming the file and lines the condition was read from.
 #define RuntimeIOError                                                         \
-    FatalIOErrorAt(settings_.dictName, settings_.dictStart, settings_.dictEnd)
-
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+    FatalIOErrorAt(settings_->dictName, settings_->dictStart, settings_->dictEnd)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -33,52 +30,12 @@ Foam::string Foam::thermalContactResistanceFvPatchScalarField::who() const
 }
 
 
-void Foam::thermalContactResistanceFvPatchScalarField::checkPatch
-(
-    const dictionary& dict
-) const
-{
-    if (!isA<mappedPatchBase>(patch().patch()))
-    {
-        FatalIOErrorInFunction(dict)
-            << who().c_str() << ": thermalContactResistance needs a mapped"
-            << " patch (mappedWall) coupling two regions; this patch is of"
-            << " type '" << patch().patch().type() << "'"
-            << exit(FatalIOError);
-    }
-}
-
-
-void Foam::thermalContactResistanceFvPatchScalarField::checkKappaField() const
-{
-    if (method_ != mtLookup)
-    {
-        return;
-    }
-    const fvMesh& mesh = patch().boundaryMesh().mesh();
-    if
-    (
-        !mesh.foundObject<volScalarField>(kappaName_)
-     && !mesh.foundObject<volSymmTensorField>(kappaName_)
-    )
-    {
-        RuntimeIOError
-            << who().c_str() << ": entry 'kappa " << kappaName_ << "'"
-            << " (kappaMethod lookup): region " << mesh.name() << " has no"
-            << " volScalarField or volSymmTensorField '" << kappaName_
-            << "' (volScalarFields: "
-            << flatOutput(mesh.sortedNames<volScalarField>()) << ")"
-            << exit(FatalIOError);
-    }
-}
-
-
 void Foam::thermalContactResistanceFvPatchScalarField::checkNeighbour
 (
     const thermalContactResistanceFvPatchScalarField& nbr
 )
 {
-    const string problem = settings_.disagreement(nbr.settings_);
+    const string problem = settings_->disagreement(*nbr.settings_);
     if (!problem.empty())
     {
         RuntimeIOError
@@ -97,42 +54,35 @@ Foam::thermalContactResistanceFvPatchScalarField::neighbourField
     const bool mustExist
 ) const
 {
-    const mappedPatchBase& mpp =
-        refCast<const mappedPatchBase>(patch().patch());
-    if
-    (
-        !mustExist
-     && (
-            mpp.sameRegion()
-         || !db().time().foundObject<polyMesh>(mpp.sampleRegion())
-        )
-    )
+    const thermalContactLine::neighbourMap nbrMap(patch());
+    if (!mustExist && !nbrMap.ready(db().time()))
     {
         return nullptr;
     }
-    const polyMesh& nbrMesh = mpp.sampleMesh();
-    if (!nbrMesh.foundObject<volScalarField>(settings_.Tnbr))
+    const fvMesh& nbrMesh = nbrMap.mesh();
+    const word& Tnbr = settings_->Tnbr;
+    if (!nbrMesh.foundObject<volScalarField>(Tnbr))
     {
         if (!mustExist)
         {
             return nullptr;
         }
         RuntimeIOError
-            << who().c_str() << ": entry 'Tnbr " << settings_.Tnbr << "': the"
+            << who().c_str() << ": entry 'Tnbr " << Tnbr << "': the"
             << " neighbour region " << nbrMesh.name() << " has no"
-            << " volScalarField '" << settings_.Tnbr << "' (it has: "
-            << flatOutput(nbrMesh.sortedNames<volScalarField>()) << ")"
-            << exit(FatalIOError);
+            << " volScalarField '" << Tnbr << "' (it has: "
+            << foamCompat::listed(foamCompat::namesOf<volScalarField>(nbrMesh)).c_str()
+            << ")" << exit(FatalIOError);
     }
     const fvPatchScalarField& nbrPf =
-        nbrMesh.lookupObject<volScalarField>(settings_.Tnbr)
-       .boundaryField()[mpp.samplePolyPatch().index()];
+        nbrMesh.lookupObject<volScalarField>(Tnbr)
+       .boundaryField()[nbrMap.patchIndex()];
     if (!isA<thermalContactResistanceFvPatchScalarField>(nbrPf))
     {
         RuntimeIOError
             << who().c_str() << ": the neighbour patch "
             << nbrPf.patch().name() << " of region " << nbrMesh.name()
-            << " has " << settings_.Tnbr << " of type '" << nbrPf.type()
+            << " has " << Tnbr << " of type '" << nbrPf.type()
             << "' (" << nbrPf.internalField().objectPath() << "); both sides"
             << " of the interface must be thermalContactResistance"
             << exit(FatalIOError);
@@ -141,25 +91,18 @@ Foam::thermalContactResistanceFvPatchScalarField::neighbourField
 }
 
 
-const Foam::dictionary&
-Foam::thermalContactResistanceFvPatchScalarField::checkedKappaMethod
-(
-    const fvPatch& p,
-    const DimensionedField<scalar, volMesh>& iF,
-    const dictionary& dict
-)
+Foam::tmp<Foam::scalarField>
+Foam::thermalContactResistanceFvPatchScalarField::sideKappa() const
 {
-    const word method(dict.get<word>("kappaMethod"));
-    if (!temperatureCoupledBase::KMethodTypeNames_.found(method))
-    {
-        FatalIOErrorInFunction(dict)
-            << "patch " << p.name() << " of field " << iF.name()
-            << " in region " << p.boundaryMesh().mesh().name()
-            << ": entry 'kappaMethod " << method << "': unknown; one of "
-            << flatOutput(temperatureCoupledBase::KMethodTypeNames_.sortedToc())
-            << exit(FatalIOError);
-    }
-    return dict;
+    return kappaOf(*this, who(), [this]() -> OSstream& { return RuntimeIOError; });
+}
+
+
+void Foam::thermalContactResistanceFvPatchScalarField::forgetMapped()
+{
+    coupling_.clearCache();
+    nbrDeltaCoeffs_.clear();
+    haveNbrDeltaCoeffs_ = false;
 }
 
 
@@ -175,6 +118,7 @@ Foam::thermalContactResistanceFvPatchScalarField::neighbour() const
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+#if !defined(ROUGHCONTACT_FOUNDATION)
 Foam::thermalContactResistanceFvPatchScalarField::
 thermalContactResistanceFvPatchScalarField
 (
@@ -183,27 +127,15 @@ thermalContactResistanceFvPatchScalarField
 )
 :
     mixedFvPatchScalarField(p, iF),
-#if OPENFOAM >= 2212
-    // The word-based constructor was removed in v2212; as the stock
-    // turbulentTemperatureCoupledBaffleMixed: the default method (fluidThermo)
-    temperatureCoupledBase(patch()),
-#else
-    temperatureCoupledBase
-    (
-        patch(), "undefined", "undefined", "undefined-K", "undefined-alpha"
-    ),
-#endif
-    settings_(),
-    pressure_(),
-    coupling_(p.size()),
-    evaluated_(false),
-    checkedNeighbour_(false)
+    thermalContactLine::kappaSource(patch()),
+    settings_(std::make_shared<const thermalContactSettings>(iF.objectPath())),
+    coupling_(p.size())
 {
-    settings_.dictName = iF.objectPath();
     this->refValue() = 0.0;
     this->refGrad() = 0.0;
     this->valueFraction() = 1.0;
 }
+#endif
 
 
 Foam::thermalContactResistanceFvPatchScalarField::
@@ -214,29 +146,47 @@ thermalContactResistanceFvPatchScalarField
     const dictionary& dict
 )
 :
+#if defined(ROUGHCONTACT_FOUNDATION)
+    mixedFvPatchScalarField(p, iF, dict, false),
+#else
     mixedFvPatchScalarField(p, iF),
-    temperatureCoupledBase(patch(), checkedKappaMethod(p, iF, dict)),
-    settings_(),
-    pressure_(),
-    coupling_(p.size()),
-    evaluated_(false),
-    checkedNeighbour_(false)
+#endif
+    thermalContactLine::kappaSource(patch(), dict, who()),
+    coupling_(p.size())
 {
-    checkPatch(dict);
-    settings_ = thermalContactSettings
+    // FatalIOError unless the patch is a mapped one
+    const thermalContactLine::neighbourMap mapped(patch(), &dict, who());
+#if defined(ROUGHCONTACT_FOUNDATION)
+    mappedPatchBaseBase::validateMapForField
+    (
+        *this, iF, dict, mappedPatchBaseBase::from::differentPatch
+    );
+#endif
+    settings_ = std::make_shared<const thermalContactSettings>
     (
         dict, db().time(), who(), internalField().objectPath()
     );
-    if (settings_.pressureGiven)
+    if (settings_->pressureGiven)
     {
-        pressure_ =
-            PatchFunction1<scalar>::New(patch().patch(), "pressure", dict);
+        pressure_ = thermalContactLine::newPressure(patch(), dict, db().time());
     }
     // The neighbour's field exists already when this region is read after
     // it: a neighbour of another type is reported here, before that other
     // condition (evaluated first) fails on it with no patch or file named.
     neighbourField(false);
 
+#if defined(ROUGHCONTACT_FOUNDATION)
+    const dimensionSet& dims = iF.dimensions();
+    fvPatchScalarField::operator=(scalarField("value", dims, dict, p.size()));
+    if (dict.found("refValue"))
+    {
+        // Restart: the mixed condition's state as written
+        refValue() = scalarField("refValue", dims, dict, p.size());
+        refGrad() = scalarField("refGradient", dims/dimLength, dict, p.size());
+        valueFraction() =
+            scalarField("valueFraction", unitFraction, dict, p.size());
+    }
+#else
     fvPatchScalarField::operator=(scalarField("value", dict, p.size()));
     if (dict.found("refValue"))
     {
@@ -245,6 +195,7 @@ thermalContactResistanceFvPatchScalarField
         refGrad() = scalarField("refGradient", dict, p.size());
         valueFraction() = scalarField("valueFraction", dict, p.size());
     }
+#endif
     else
     {
         refValue() = *this;
@@ -260,28 +211,35 @@ thermalContactResistanceFvPatchScalarField
     const thermalContactResistanceFvPatchScalarField& ptf,
     const fvPatch& p,
     const DimensionedField<scalar, volMesh>& iF,
-    const fvPatchFieldMapper& mapper
+    const thermalContactLine::mapper& mapper
 )
 :
     mixedFvPatchScalarField(ptf, p, iF, mapper),
-    temperatureCoupledBase(patch(), ptf),
+    thermalContactLine::kappaSource(patch(), ptf),
     settings_(ptf.settings_),
-    pressure_(),
     coupling_(ptf.coupling_),
-    evaluated_(ptf.evaluated_),
-    checkedNeighbour_(false)
+    evaluated_(ptf.evaluated_)
 {
+#if defined(ROUGHCONTACT_FOUNDATION)
+    // As the stock coupledTemperature: the mixed condition's faces without a
+    // source take the cell's temperature; the output fields follow their
+    // faces, the core's results and cache are rebuilt at the next evaluation
+    if (ptf.pressure_.valid())
+    {
+        pressure_.reset(ptf.pressure_().clone().ptr());
+    }
+    map(ptf, mapper);
+#else
     // The output fields follow their faces; the core's results and cache
     // are rebuilt at the next evaluation
-    coupling_.areaFraction = scalarField(ptf.coupling_.areaFraction, mapper);
-    coupling_.conductance = scalarField(ptf.coupling_.conductance, mapper);
-    coupling_.contactPressure =
-        scalarField(ptf.coupling_.contactPressure, mapper);
-    coupling_.contactState = scalarField(ptf.coupling_.contactState, mapper);
-    coupling_.gapConductance =
-        scalarField(ptf.coupling_.gapConductance, mapper);
-    coupling_.totalConductance =
-        scalarField(ptf.coupling_.totalConductance, mapper);
+    coupling_.forEachField
+    (
+        ptf.coupling_,
+        [&](scalarField& mine, const scalarField& theirs)
+        {
+            mine = scalarField(theirs, mapper);
+        }
+    );
     coupling_.clearCache();
     if (ptf.pressure_.valid())
     {
@@ -292,9 +250,11 @@ thermalContactResistanceFvPatchScalarField
         onOld->autoMap(mapper);
         pressure_.reset(onOld().clone(p.patch()).ptr());
     }
+#endif
 }
 
 
+#if !defined(ROUGHCONTACT_FOUNDATION)
 Foam::thermalContactResistanceFvPatchScalarField::
 thermalContactResistanceFvPatchScalarField
 (
@@ -302,7 +262,7 @@ thermalContactResistanceFvPatchScalarField
 )
 :
     mixedFvPatchScalarField(ptf),
-    temperatureCoupledBase(patch(), ptf),
+    thermalContactLine::kappaSource(patch(), ptf),
     settings_(ptf.settings_),
     pressure_
     (
@@ -318,6 +278,7 @@ thermalContactResistanceFvPatchScalarField
     // evaluation), as before they were shared
     coupling_.clearCache();
 }
+#endif
 
 
 Foam::thermalContactResistanceFvPatchScalarField::
@@ -328,12 +289,16 @@ thermalContactResistanceFvPatchScalarField
 )
 :
     mixedFvPatchScalarField(ptf, iF),
-    temperatureCoupledBase(patch(), ptf),
+    thermalContactLine::kappaSource(patch(), ptf),
     settings_(ptf.settings_),
     pressure_
     (
         ptf.pressure_.valid()
+#if defined(ROUGHCONTACT_FOUNDATION)
+      ? ptf.pressure_().clone().ptr()
+#else
       ? ptf.pressure_().clone(patch().patch()).ptr()
+#endif
       : nullptr
     ),
     coupling_(ptf.coupling_),
@@ -353,13 +318,14 @@ Foam::thermalContactResistanceFvPatchScalarField::interfacePressure() const
 {
     if (pressure_.valid())
     {
-        return pressure_->value(db().time().timeOutputValue());
+        return
+            thermalContactLine::pressureValues(pressure_(), patch(), db().time());
     }
-    if (!settings_.pressureFieldName.empty())
+    if (!settings_->pressureFieldName.empty())
     {
-        return settings_.patchValues
+        return settings_->patchValues
         (
-            patch(), settings_.pressureFieldName, "pressureField",
+            patch(), settings_->pressureFieldName, "pressureField",
             [this] { return who(); }
         );
     }
@@ -370,41 +336,87 @@ Foam::thermalContactResistanceFvPatchScalarField::interfacePressure() const
 Foam::tmp<Foam::scalarField>
 Foam::thermalContactResistanceFvPatchScalarField::interfaceGapWidth() const
 {
-    if (!settings_.gapFieldName.empty())
+    if (!settings_->gapFieldName.empty())
     {
-        return settings_.patchValues
+        return settings_->patchValues
         (
-            patch(), settings_.gapFieldName, "gapField",
+            patch(), settings_->gapFieldName, "gapField",
             [this] { return who(); }
         );
     }
-    return tmp<scalarField>(new scalarField(size(), max(settings_.gapWidth, 0.0)));
+    return tmp<scalarField>
+    (
+        new scalarField(size(), max(settings_->gapWidth, scalar(0)))
+    );
 }
 
 
+#if defined(ROUGHCONTACT_FOUNDATION)
+void Foam::thermalContactResistanceFvPatchScalarField::map
+(
+    const fvPatchScalarField& ptf,
+    const fieldMapper& mapper
+)
+{
+    const auto& tiptf =
+        refCast<const thermalContactResistanceFvPatchScalarField>(ptf);
+    // As the stock coupledTemperature: faces with no source (a topology
+    // change) are adiabatic, at the cell's temperature
+    mapper(*this, tiptf, [&](){ return patchInternalField(); });
+    mapper(refValue(), tiptf.refValue(), [&](){ return patchInternalField(); });
+    mapper(refGrad(), tiptf.refGrad(), scalar(0));
+    mapper(valueFraction(), tiptf.valueFraction(), scalar(0));
+    coupling_.forEachField
+    (
+        tiptf.coupling_,
+        [&](scalarField& mine, const scalarField& theirs)
+        {
+            mapper(mine, theirs);
+        }
+    );
+    forgetMapped();
+}
+
+
+void Foam::thermalContactResistanceFvPatchScalarField::reset
+(
+    const fvPatchScalarField& ptf
+)
+{
+    mixedFvPatchScalarField::reset(ptf);
+    const auto& tiptf =
+        refCast<const thermalContactResistanceFvPatchScalarField>(ptf);
+    coupling_.forEachField
+    (
+        tiptf.coupling_,
+        [](scalarField& mine, const scalarField& theirs)
+        {
+            mine.reset(theirs);
+        }
+    );
+    forgetMapped();
+}
+#else
 void Foam::thermalContactResistanceFvPatchScalarField::autoMap
 (
     const fvPatchFieldMapper& m
 )
 {
     mixedFvPatchScalarField::autoMap(m);
-#if OPENFOAM >= 2112
-    // kappaMethod function (v2112): its PatchFunction1 is mapped by the base
-    temperatureCoupledBase::autoMap(m);
-#endif
+    mapKappa(m);
     if (pressure_.valid())
     {
         pressure_->autoMap(m);
     }
-    coupling_.areaFraction.autoMap(m);
-    coupling_.conductance.autoMap(m);
-    coupling_.contactPressure.autoMap(m);
-    coupling_.contactState.autoMap(m);
-    coupling_.gapConductance.autoMap(m);
-    coupling_.totalConductance.autoMap(m);
-    coupling_.clearCache();
-    nbrDeltaCoeffs_.clear();
-    haveNbrDeltaCoeffs_ = false;
+    coupling_.forEachField
+    (
+        coupling_,
+        [&](scalarField& mine, const scalarField&)
+        {
+            mine.autoMap(m);
+        }
+    );
+    forgetMapped();
 }
 
 
@@ -415,25 +427,24 @@ void Foam::thermalContactResistanceFvPatchScalarField::rmap
 )
 {
     mixedFvPatchScalarField::rmap(ptf, addr);
-#if OPENFOAM >= 2112
-    temperatureCoupledBase::rmap(ptf, addr);
-#endif
+    rmapKappa(ptf, addr);
     const auto& tiptf =
         refCast<const thermalContactResistanceFvPatchScalarField>(ptf);
     if (pressure_.valid() && tiptf.pressure_.valid())
     {
         pressure_->rmap(tiptf.pressure_(), addr);
     }
-    coupling_.areaFraction.rmap(tiptf.coupling_.areaFraction, addr);
-    coupling_.conductance.rmap(tiptf.coupling_.conductance, addr);
-    coupling_.contactPressure.rmap(tiptf.coupling_.contactPressure, addr);
-    coupling_.contactState.rmap(tiptf.coupling_.contactState, addr);
-    coupling_.gapConductance.rmap(tiptf.coupling_.gapConductance, addr);
-    coupling_.totalConductance.rmap(tiptf.coupling_.totalConductance, addr);
-    coupling_.clearCache();
-    nbrDeltaCoeffs_.clear();
-    haveNbrDeltaCoeffs_ = false;
+    coupling_.forEachField
+    (
+        tiptf.coupling_,
+        [&](scalarField& mine, const scalarField& theirs)
+        {
+            mine.rmap(theirs, addr);
+        }
+    );
+    forgetMapped();
 }
+#endif
 
 
 void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
@@ -447,13 +458,8 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
     const int oldTag = UPstream::msgType();
     UPstream::msgType() = oldTag + 1;
 
-    const mappedPatchBase& mpp =
-        refCast<const mappedPatchBase>(patch().patch());
-    const polyMesh& nbrMesh = mpp.sampleMesh();
-    const label samplePatchi = mpp.samplePolyPatch().index();
-    const fvPatch& nbrPatch =
-        refCast<const fvMesh>(nbrMesh).boundary()[samplePatchi];
-
+    const thermalContactLine::neighbourMap nbrMap(patch());
+    const fvPatch& nbrPatch = nbrMap.mesh().boundary()[nbrMap.patchIndex()];
     const auto& nbrField =
         refCast<const thermalContactResistanceFvPatchScalarField>
         (
@@ -463,23 +469,20 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
     {
         checkNeighbour(nbrField);
     }
-
-    checkKappaField();
-    nbrField.checkKappaField();
-    const scalarField myKappa(kappa(*this));
+    const scalarField myKappa(sideKappa());
 
     // What this side needs of the neighbour, in one exchange: its cell
     // temperature (contact) or face temperature (h), kappa and pressure per
     // face; with a gap also its face temperature and gap width. Then (once,
     // while the mesh does not change) its deltaCoeffs.
-    const bool withGap = settings_.withGap();
+    const bool withGap = settings_->withGap();
     const scalarField nbrT
     (
-        settings_.mode == thermalContactSettings::conductanceMode::constantH
+        settings_->mode == conductanceMode::constantH
       ? scalarField(nbrField)
       : nbrField.patchInternalField()()
     );
-    const scalarField nbrK(nbrField.kappa(nbrField));
+    const scalarField nbrK(nbrField.sideKappa());
     const scalarField nbrP(nbrField.interfacePressure());
     const scalarField nbrW
     (
@@ -496,18 +499,16 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
                 withGap && nbrField.hasGapWidth() ? &nbrW : nullptr
             },
             size(),
-            [&mpp](auto f)
+            [&nbrMap](const auto& f)
             {
-                mpp.distribute(f);
-                return f;
+                return std::decay_t<decltype(f)>(nbrMap.toThisSide(f));
             }
         );
-    // distribute() is collective: decide on what every processor knows
+    // The exchange is collective: decide on what every processor knows
     // alike (not on this processor's, possibly empty, face count).
-    if (!haveNbrDeltaCoeffs_ || nbrMesh.changing())
+    if (!haveNbrDeltaCoeffs_ || nbrMap.mesh().changing())
     {
-        nbrDeltaCoeffs_ = nbrPatch.deltaCoeffs();
-        mpp.distribute(nbrDeltaCoeffs_);
+        nbrDeltaCoeffs_ = nbrMap.toThisSide(nbrPatch.deltaCoeffs());
         haveNbrDeltaCoeffs_ = true;
     }
 
@@ -518,20 +519,20 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
     );
     coupling_.couple
     (
-        settings_, db().time(), [this] { return who(); },
+        *settings_, db().time(), [this] { return who(); },
         myKappa, patch().deltaCoeffs(), *this, patch().Cf(), myP,
         withGap && hasGapWidth() ? &myW : nullptr,
         nbr, nbrDeltaCoeffs_
     );
 
     const roughContact::CouplingOutputs& out = coupling_.outputs;
-    std::copy(out.refValue.begin(), out.refValue.end(), this->refValue().begin());
+    std::copy(out.refValue.begin(), out.refValue.end(), refValue().begin());
     std::copy
     (
         out.valueFraction.begin(), out.valueFraction.end(),
-        this->valueFraction().begin()
+        valueFraction().begin()
     );
-    this->refGrad() = 0.0;
+    refGrad() = 0.0;
 
     mixedFvPatchScalarField::updateCoeffs();
 
@@ -544,30 +545,17 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
 void Foam::thermalContactResistanceFvPatchScalarField::write(Ostream& os) const
 {
     mixedFvPatchScalarField::write(os);
-    settings_.write(os);
+    settings_->write(os);
     if (pressure_.valid())
     {
-        if (pressure_->type() == "uniformValue")
-        {
-            // v1912's UniformValueField writes only its Function1
-            // ("pressure table (...)"), which does not read back as a
-            // PatchFunction1; the dictionary form does.
-            os.beginBlock("pressure");
-            os.writeEntry("type", pressure_->type());
-            pressure_->writeData(os);
-            os.endBlock();
-        }
-        else
-        {
-            pressure_->writeData(os);
-        }
+        thermalContactLine::writePressure(os, pressure_(), db().time());
     }
-    else if (!settings_.pressureFieldName.empty())
+    else if (!settings_->pressureFieldName.empty())
     {
-        os.writeEntry("pressureField", settings_.pressureFieldName);
+        foamCompat::writeEntry(os, "pressureField", settings_->pressureFieldName);
     }
-    settings_.writeGap(os);
-    temperatureCoupledBase::write(os);
+    settings_->writeGap(os);
+    writeKappa(os);
 }
 
 
