@@ -94,7 +94,12 @@ Foam::thermalContactResistanceFvPatchScalarField::neighbourField
 Foam::tmp<Foam::scalarField>
 Foam::thermalContactResistanceFvPatchScalarField::sideKappa() const
 {
-    return kappaOf(*this, who(), [this]() -> OSstream& { return RuntimeIOError; });
+    return kappaOf
+    (
+        *this,
+        [this] { return who(); },
+        [this]() -> OSstream& { return RuntimeIOError; }
+    );
 }
 
 
