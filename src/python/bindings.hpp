@@ -47,16 +47,19 @@ void bindCheck(pybind11::module_& m);
 void bindPlot(pybind11::module_& m);
 
 /// The InterfaceSpec of ContactInterface's keyword arguments (interface.cpp), which check()
-/// takes too.
+/// and plot() take too. An argument left None is not given: the core's default stands. check:
+/// the spec of a check or of a picture of every law (InterfaceSpec::check: the laws' entries
+/// are taken beside any law or model).
 roughContact::InterfaceSpec interfaceSpec(
     const std::vector<roughContact::SurfaceSpec>& surfaces, const roughContact::Material& side1,
-    const roughContact::Material& side2, const std::string& model, const std::string& conductance,
-    std::optional<double> microhardness, std::optional<std::pair<double, double>> vickers,
-    std::optional<double> minPressure, std::optional<double> maxPressure, std::size_t pointsPerDecade,
-    std::optional<std::size_t> synthesize, std::uint64_t seed, std::optional<bool> periodic,
-    std::optional<double> hardness, bool hardnessFromYield, std::size_t bemPointsPerDecade,
+    const roughContact::Material& side2, const std::optional<std::string>& model,
+    const std::optional<std::string>& conductance, std::optional<double> microhardness,
+    std::optional<std::pair<double, double>> vickers, std::optional<double> minPressure,
+    std::optional<double> maxPressure, std::optional<std::size_t> pointsPerDecade,
+    std::optional<std::size_t> synthesize, std::optional<std::uint64_t> seed, std::optional<bool> periodic,
+    std::optional<double> hardness, bool hardnessFromYield, std::optional<std::size_t> bemPointsPerDecade,
     std::optional<roughContact::GapSpec> gap, std::optional<std::string> detrend,
-    std::optional<bool> mirror = std::nullopt);
+    std::optional<bool> mirror = std::nullopt, bool check = false);
 
 /// A contact model built by name, with the spectrum and E' it was built from.
 struct Model {

@@ -27,6 +27,20 @@ using namespace roughContact;
 
 namespace roughcontact_py {
 
+namespace {
+
+// [1, 2, 3]: a list of seeds as Python writes it, for a docstring.
+std::string seedList(const std::vector<std::uint64_t>& seeds)
+{
+    std::string out;
+    for (std::uint64_t s : seeds) {
+        out += (out.empty() ? "[" : ", ") + std::to_string(s);
+    }
+    return out + "]";
+}
+
+} // namespace
+
 void bindCheck(py::module_& m)
 {
     py::class_<SurfaceCheck>(m, "SurfaceCheck",
@@ -151,34 +165,39 @@ void bindCheck(py::module_& m)
 
     // The signature's default light-load period is the core's (one place for it).
     static const std::string checkDoc =
-        "check(*, surfaces, side1, side2, model='jacksonGreen', conductance='', ..., pressures=[], grid=512, "
-        "seeds=[1, 2, 3], count=4, progress=None, threads=None, mirror=None, light_load_periods=None): the exact model (boundaryElement) on the user's "
+        "check(*, surfaces, side1, side2, model=None, conductance=None, ..., pressures=[], grid=None, "
+        "seeds=None, count=None, progress=None, threads=None, mirror=None, light_load_periods=None): the exact model "
+        "(boundaryElement) on the user's "
         "own surface (an areal map as it is, or mirror=True: mirrored about its edges into a periodic surface; a 1-D description as `seeds` surfaces of grid x grid synthesized from its "
         "spectrum, cut at grid/8 levels, up to p/(E' h') = 1e-3 on periods of light_load_periods scan lengths, 1 to 64, None: " +
         std::to_string(SurfaceCheckOptions{}.lightLoadPeriods) + "; refused for a map; joined with one scan length's up to 1e-2; "
         "each surface holding at least 4 of the spectrum's levels) at `pressures` [Pa] (at most 5) or `count` pressures across "
         "[min_pressure, max_pressure], within p/(E' h') 1e-4 to 1e-1; capped at H where hardness, "
         "hardness_from_yield or S_y say, elastic otherwise; every law's ratio to it. The interface's keyword "
-        "arguments are ContactInterface's. progress: a callable given a line after each solve. threads: the "
+        "arguments are ContactInterface's. None: grid " + std::to_string(SurfaceCheckOptions{}.gridSize) +
+        ", seeds " + seedList(SurfaceCheckOptions{}.seeds) + ", count " + std::to_string(SurfaceCheckOptions{}.pressureCount) + ". progress: a callable given a line after each solve. threads: the "
         "process's threads of the solves (set_threads; None: as they are). About 0.5 s "
         "a pressure and seed at 512^2.";
     m.def(
         "check",
         [](const std::vector<SurfaceSpec>& surfaces, const Material& side1, const Material& side2,
-           const std::string& model, const std::string& conductance, std::optional<double> microhardness,
+           const std::optional<std::string>& model, const std::optional<std::string>& conductance,
+           std::optional<double> microhardness,
            std::optional<std::pair<double, double>> vickers, std::optional<double> minPressure,
            std::optional<double> maxPressure, std::optional<bool> periodic, std::optional<double> hardness,
            bool hardnessFromYield, std::optional<std::string> detrend, const std::vector<double>& pressures,
-           std::size_t grid, const std::vector<std::uint64_t>& seeds, std::size_t count, const py::object& progress,
+           std::optional<std::size_t> grid, const std::optional<std::vector<std::uint64_t>>& seeds,
+           std::optional<std::size_t> count, const py::object& progress,
            const py::object& threads, std::optional<bool> mirror, std::optional<std::uint64_t> lightLoadPeriods) {
             const InterfaceSpec spec = interfaceSpec(surfaces, side1, side2, model, conductance, microhardness, vickers,
-                                                     minPressure, maxPressure, 40, std::nullopt, 1, periodic, hardness,
-                                                     hardnessFromYield, 6, std::nullopt, detrend, mirror);
-            SurfaceCheckOptions o;
+                                                     minPressure, maxPressure, std::nullopt, std::nullopt, std::nullopt,
+                                                     periodic, hardness, hardnessFromYield, std::nullopt,
+                                                     std::nullopt, detrend, mirror, true);
+            SurfaceCheckOptions o; // what is left None: the core's
             o.names = {"grid", "seeds", "pressures", "light_load_periods"};
-            o.gridSize = grid;
-            o.seeds = seeds;
-            o.pressureCount = count;
+            o.gridSize = grid.value_or(o.gridSize);
+            o.seeds = seeds.value_or(o.seeds);
+            o.pressureCount = count.value_or(o.pressureCount);
             o.pressures = pressures;
             if (lightLoadPeriods) {
                 o.lightLoadPeriods = checkedLightLoadPeriods(*lightLoadPeriods, surfaces, "light_load_periods");
@@ -200,12 +219,12 @@ void bindCheck(py::module_& m)
             py::gil_scoped_release release;
             return checkSurface(spec, o);
         },
-        py::kw_only(), py::arg("surfaces"), py::arg("side1"), py::arg("side2"), py::arg("model") = "jacksonGreen",
-        py::arg("conductance") = "", py::arg("microhardness") = py::none(), py::arg("vickers") = py::none(),
+        py::kw_only(), py::arg("surfaces"), py::arg("side1"), py::arg("side2"), py::arg("model") = py::none(),
+        py::arg("conductance") = py::none(), py::arg("microhardness") = py::none(), py::arg("vickers") = py::none(),
         py::arg("min_pressure") = py::none(), py::arg("max_pressure") = py::none(), py::arg("periodic") = py::none(),
         py::arg("hardness") = py::none(), py::arg("hardness_from_yield") = false, py::arg("detrend") = py::none(),
-        py::arg("pressures") = std::vector<double>{}, py::arg("grid") = 512,
-        py::arg("seeds") = std::vector<std::uint64_t>{1, 2, 3}, py::arg("count") = 4, py::arg("progress") = py::none(),
+        py::arg("pressures") = std::vector<double>{}, py::arg("grid") = py::none(),
+        py::arg("seeds") = py::none(), py::arg("count") = py::none(), py::arg("progress") = py::none(),
         py::arg("threads") = py::none(), py::arg("mirror") = py::none(), py::arg("light_load_periods") = py::none(),
         checkDoc.c_str());
 }

@@ -11,6 +11,7 @@
 #include "bindings.hpp"
 #include "convert.hpp"
 
+#include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/Error.hpp"
 #include "roughContact/interface/BoundaryElementTable.hpp"
 #include "roughContact/interface/ContactInterface.hpp"
@@ -94,13 +95,14 @@ SpecValues parametric(const char* type, const char* const (&keys)[4], const doub
 } // namespace
 
 InterfaceSpec interfaceSpec(const std::vector<SurfaceSpec>& surfaces, const Material& side1, const Material& side2,
-                            const std::string& model, const std::string& conductance,
+                            const std::optional<std::string>& model, const std::optional<std::string>& conductance,
                             std::optional<double> microhardness, std::optional<std::pair<double, double>> vickers,
                             std::optional<double> minPressure, std::optional<double> maxPressure,
-                            std::size_t pointsPerDecade, std::optional<std::size_t> synthesize, std::uint64_t seed,
-                            std::optional<bool> periodic, std::optional<double> hardness, bool hardnessFromYield,
-                            std::size_t bemPointsPerDecade, std::optional<GapSpec> gap, std::optional<std::string> detrend,
-                            std::optional<bool> mirror)
+                            std::optional<std::size_t> pointsPerDecade, std::optional<std::size_t> synthesize,
+                            std::optional<std::uint64_t> seed, std::optional<bool> periodic,
+                            std::optional<double> hardness, bool hardnessFromYield,
+                            std::optional<std::size_t> bemPointsPerDecade, std::optional<GapSpec> gap,
+                            std::optional<std::string> detrend, std::optional<bool> mirror, bool check)
 {
     // The parts are objects already read (SurfaceSpec and GapSpec through the core's reader,
     // Material checked by the pair); the settings through the core's reader of them.
@@ -110,10 +112,8 @@ InterfaceSpec interfaceSpec(const std::vector<SurfaceSpec>& surfaces, const Mate
     s.side2 = side2;
     s.gap = gap;
     SpecValues v = arguments("ContactInterface");
-    v.set("model", model);
-    if (!conductance.empty()) {
-        v.set("conductance", conductance);
-    }
+    setIf(v, "model", model);
+    setIf(v, "conductance", conductance);
     setIf(v, "microhardness", microhardness);
     if (vickers) {
         v.set("vickers", std::vector<double>{vickers->first, vickers->second});
@@ -123,9 +123,7 @@ InterfaceSpec interfaceSpec(const std::vector<SurfaceSpec>& surfaces, const Mate
     if (synthesize) {
         v.set("synthesize", std::uint64_t(*synthesize));
     }
-    if (synthesize || seed != 1) {
-        v.set("seed", seed);
-    }
+    setIf(v, "seed", seed); // the reader: a seed is of synthesize N
     setIf(v, "periodic", periodic);
     setIf(v, "mirror", mirror);
     setIf(v, "hardness", hardness);
@@ -133,10 +131,14 @@ InterfaceSpec interfaceSpec(const std::vector<SurfaceSpec>& surfaces, const Mate
         v.set("hardnessFromYield", true);
     }
     setIf(v, "detrend", detrend);
+    if (check) {
+        v.set("check", true);
+    }
+    // Python has an argument for each table's points (the dictionary one entry, for the model
+    // named); unset: InterfaceSpec's.
+    s.pointsPerDecade = pointsPerDecade.value_or(s.pointsPerDecade);
+    s.bemPointsPerDecade = bemPointsPerDecade.value_or(s.bemPointsPerDecade);
     readInterfaceSettings(v, s);
-    // Python has an argument for each table's points (the dictionary one entry, for the model named).
-    s.pointsPerDecade = pointsPerDecade;
-    s.bemPointsPerDecade = bemPointsPerDecade;
     return s;
 }
 
@@ -148,15 +150,15 @@ void bindInterface(py::module_& m)
         .def_static(
             "profile",
             [](const std::string& path, std::optional<std::string> units, std::optional<double> spacing,
-               std::size_t stride) {
+               std::optional<std::uint64_t> stride) {
                 SpecValues v = arguments("SurfaceSpec.profile");
                 v.set("type", std::string("profile")).set("file", path);
                 setIf(v, "units", units);
                 setIf(v, "spacing", spacing);
-                v.set("stride", std::uint64_t(stride));
+                setIf(v, "stride", stride); // None: the reader's (every sample)
                 return surfaceOf(v);
             },
-            py::arg("path"), py::arg("units") = py::none(), py::arg("spacing") = py::none(), py::arg("stride") = 1,
+            py::arg("path"), py::arg("units") = py::none(), py::arg("spacing") = py::none(), py::arg("stride") = py::none(),
             "A profile file (read_profile's units and spacing), every stride-th sample.")
         .def_static(
             "spectrum",
@@ -222,16 +224,38 @@ void bindInterface(py::module_& m)
              "areal map's, detrended), or None for a spectrum: fittedElastoPlastic takes it with chance's share out "
              "(shrunk_skewness), the other laws assume 0 (Gaussian heights).");
 
+    // The defaults it names are the core's (InterfaceSpec, defaultConductanceLaw): one place for them.
+    const InterfaceSpec defaults;
+    static const std::string interfaceDoc =
+        "ContactInterface(*, surfaces, side1, side2, model=None, conductance=None, ...): "
+        "surfaces a list of one or two SurfaceSpec; side1, side2 the Materials of the two solids; model a "
+        "multi-scale model or 'boundaryElement' (None: " + defaults.model + "); conductance a law name (None: " +
+        defaultConductanceLaw() + "); microhardness "
+        "[Pa] or vickers (c1 [Pa], c2) for cooperMikicYovanovich; min_pressure, max_pressure [Pa] the "
+        "table's range (default 1e-9 E' to E'); points_per_decade (None: " + std::to_string(defaults.pointsPerDecade) +
+        "); boundaryElement only: synthesize N "
+        "(an N x N surface from the 1-D surfaces), seed (None: " + std::to_string(defaults.seed) + "), periodic, "
+        "mirror (a map mirrored about its edges into "
+        "one period of a periodic surface), detrend ('none', 'mean' or 'plane'; None: "
+        "'mean' when periodic, 'plane' otherwise), hardness [Pa], hardness_from_yield, "
+        "bem_points_per_decade (None: " + std::to_string(defaults.bemPointsPerDecade) + "), table_file (the "
+        "boundary-element table's cache file, as the condition's "
+        "constant/boundaryElementTable.NAME.csv: read when it holds this table, else built and written); "
+        "gap a GapSpec (gas and/or radiation beside the contact) or None; threads the process's threads of the "
+        "boundary-element solves (set_threads; None: as they are). Building the table takes a fraction of a second "
+        "for the multi-scale models, far longer for boundaryElement.";
     py::class_<ContactInterface>(m, "ContactInterface",
                                  "Surfaces + materials + model + conductance law -> the pressure table "
                                  "a boundary condition interpolates: A_r/A_n and h_c/k_s at a nominal pressure [Pa].")
         .def(py::init([](const std::vector<SurfaceSpec>& surfaces, const Material& side1, const Material& side2,
-                         const std::string& model, const std::string& conductance,
+                         const std::optional<std::string>& model, const std::optional<std::string>& conductance,
                          std::optional<double> microhardness, std::optional<std::pair<double, double>> vickers,
                          std::optional<double> minPressure, std::optional<double> maxPressure,
-                         std::size_t pointsPerDecade, std::optional<std::size_t> synthesize, std::uint64_t seed,
-                         std::optional<bool> periodic, std::optional<double> hardness, bool hardnessFromYield,
-                         std::size_t bemPointsPerDecade, std::optional<GapSpec> gap, std::optional<std::string> detrend,
+                         std::optional<std::size_t> pointsPerDecade, std::optional<std::size_t> synthesize,
+                         std::optional<std::uint64_t> seed, std::optional<bool> periodic,
+                         std::optional<double> hardness, bool hardnessFromYield,
+                         std::optional<std::size_t> bemPointsPerDecade, std::optional<GapSpec> gap,
+                         std::optional<std::string> detrend,
                          std::optional<std::string> tableFile, const py::object& threads, std::optional<bool> mirror) {
                  const InterfaceSpec s =
                      interfaceSpec(surfaces, side1, side2, model, conductance, microhardness, vickers, minPressure,
@@ -275,27 +299,15 @@ void bindInterface(py::module_& m)
                  }
                  return made;
              }),
-             py::kw_only(), py::arg("surfaces"), py::arg("side1"), py::arg("side2"), py::arg("model") = "jacksonGreen",
-             py::arg("conductance") = "", py::arg("microhardness") = py::none(), py::arg("vickers") = py::none(),
+             py::kw_only(), py::arg("surfaces"), py::arg("side1"), py::arg("side2"), py::arg("model") = py::none(),
+             py::arg("conductance") = py::none(), py::arg("microhardness") = py::none(), py::arg("vickers") = py::none(),
              py::arg("min_pressure") = py::none(), py::arg("max_pressure") = py::none(),
-             py::arg("points_per_decade") = 40, py::arg("synthesize") = py::none(), py::arg("seed") = 1,
+             py::arg("points_per_decade") = py::none(), py::arg("synthesize") = py::none(), py::arg("seed") = py::none(),
              py::arg("periodic") = py::none(), py::arg("hardness") = py::none(),
-             py::arg("hardness_from_yield") = false, py::arg("bem_points_per_decade") = 6,
+             py::arg("hardness_from_yield") = false, py::arg("bem_points_per_decade") = py::none(),
              py::arg("gap") = py::none(), py::arg("detrend") = py::none(), py::arg("table_file") = py::none(),
              py::arg("threads") = py::none(), py::arg("mirror") = py::none(),
-             "ContactInterface(*, surfaces, side1, side2, model='jacksonGreen', conductance='', ...): "
-             "surfaces a list of one or two SurfaceSpec; side1, side2 the Materials of the two solids; model a "
-             "multi-scale model or 'boundaryElement'; conductance a law name ('' the default); microhardness "
-             "[Pa] or vickers (c1 [Pa], c2) for cooperMikicYovanovich; min_pressure, max_pressure [Pa] the "
-             "table's range (default 1e-9 E' to E'); points_per_decade; boundaryElement only: synthesize N "
-             "(an N x N surface from the 1-D surfaces), seed, periodic, mirror (a map mirrored about its edges into "
-             "one period of a periodic surface), detrend ('none', 'mean' or 'plane'; None: "
-             "'mean' when periodic, 'plane' otherwise), hardness [Pa], hardness_from_yield, "
-             "bem_points_per_decade, table_file (the boundary-element table's cache file, as the condition's "
-             "constant/boundaryElementTable.NAME.csv: read when it holds this table, else built and written); "
-             "gap a GapSpec (gas and/or radiation beside the contact) or None; threads the process's threads of the "
-             "boundary-element solves (set_threads; None: as they are). Building the table takes a fraction of a second for the multi-scale "
-             "models, far longer for boundaryElement.")
+             interfaceDoc.c_str())
         .def(
             "area_fraction",
             [](const ContactInterface& ci, const py::object& P) {

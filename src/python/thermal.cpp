@@ -160,17 +160,19 @@ void bindThermal(py::module_& m)
                        "Gas conduction across the gap: h_g = k_g(T)/(Y + M), M the rarefaction parameter "
                        "from the accommodation coefficients, gamma, Pr and the mean free path at the gas "
                        "pressure.")
-        .def(py::init([](const GasProperties& gas, double pressure,
+        .def(py::init([](const GasProperties& gas, std::optional<double> pressure,
                          std::optional<std::pair<double, double>> accommodation) {
-                 GasGapSpec spec{gas, pressure, std::nullopt, std::nullopt};
+                 GasGapSpec spec;
+                 spec.gas = gas;
+                 spec.pressure = pressure.value_or(spec.pressure); // None: the core's, one atmosphere
                  if (accommodation) {
                      spec.accommodation1 = accommodation->first;
                      spec.accommodation2 = accommodation->second;
                  }
                  return GasGap(spec);
              }),
-             py::arg("gas"), py::arg("pressure") = standardAtmosphere, py::arg("accommodation") = py::none(),
-             "gas a Gas; pressure P_g [Pa]; accommodation (a1, a2), each in (0, 1], or None for the gas's "
+             py::arg("gas"), py::arg("pressure") = py::none(), py::arg("accommodation") = py::none(),
+             "gas a Gas; pressure P_g [Pa] (None: one standard atmosphere); accommodation (a1, a2), each in (0, 1], or None for the gas's "
              "default.")
         .def_property_readonly("accommodation",
                                [](const GasGap& g) {
@@ -225,7 +227,8 @@ void bindThermal(py::module_& m)
     py::class_<GapSpec>(m, "GapSpec",
                         "What is in the gap of a ContactInterface: a gas and/or radiation (the OpenFOAM "
                         "dictionary's gap entry).")
-        .def(py::init([](const py::object& gas, double pressure, std::optional<std::pair<double, double>> accommodation,
+        .def(py::init([](const py::object& gas, std::optional<double> pressure,
+                         std::optional<std::pair<double, double>> accommodation,
                          std::optional<std::pair<double, double>> emissivity) {
                  // Through the core's reader of a gap (InterfaceSpecReader.hpp): the dictionary's
                  // rules. A Gas object goes in as its properties and keeps its name.
@@ -246,8 +249,8 @@ void bindThermal(py::module_& m)
                          .set("accommodation", object->accommodation);
                      v.set("gas", std::make_shared<const SpecValues>(p));
                  }
-                 if (!gas.is_none() || pressure != standardAtmosphere) {
-                     v.set("pressure", pressure);
+                 if (pressure) {
+                     v.set("pressure", *pressure); // None: the reader's default (one atmosphere)
                  }
                  if (accommodation) {
                      v.set("accommodation", std::vector<double>{accommodation->first, accommodation->second});
@@ -261,9 +264,9 @@ void bindThermal(py::module_& m)
                  }
                  return g;
              }),
-             py::kw_only(), py::arg("gas") = py::none(), py::arg("pressure") = standardAtmosphere,
+             py::kw_only(), py::arg("gas") = py::none(), py::arg("pressure") = py::none(),
              py::arg("accommodation") = py::none(), py::arg("emissivity") = py::none(),
-             "gas a name ('air'), a Gas or None (vacuum); pressure P_g [Pa]; accommodation (a1, a2), each in "
+             "gas a name ('air'), a Gas or None (vacuum); pressure P_g [Pa] (None: one standard atmosphere); accommodation (a1, a2), each in "
              "(0, 1], or None for the gas's default; emissivity (e1, e2) for radiation, or None. "
              "ContactInterface checks it.");
 }

@@ -214,3 +214,26 @@ def test_regime_and_band_at_pressures(interface):
     assert "not measured" in interface.regime_at([1e-9 * Ep * gradient])
     assert interface.regime_at([0.0, -1.0]) == ""
     assert np.all(np.isnan(interface.accuracy_band([0.0])[0]))
+
+
+def test_keywords_left_out_are_the_cores_defaults():
+    # Issue 52: the keywords default to None, "the core's default", not to copies of its values:
+    # left out, the interface is the one the dictionary gives without those entries.
+    surfaces = [rc.SurfaceSpec.profile(STANDIN)]
+    plain = rc.ContactInterface(surfaces=surfaces, side1=STEEL_M, side2=STEEL_M)
+    assert plain.model_name == "jacksonGreen" and plain.conductance_law == rc.default_conductance_law()
+    named = rc.ContactInterface(surfaces=surfaces, side1=STEEL_M, side2=STEEL_M, model="jacksonGreen",
+                                conductance=rc.default_conductance_law(), points_per_decade=40)
+    np.testing.assert_array_equal(plain.table_pressures, named.table_pressures)
+    np.testing.assert_array_equal(plain.table_conductances_per_conductivity,
+                                  named.table_conductances_per_conductivity)
+    # The docstring names the core's defaults, taken from the core.
+    assert "model=None" in rc.ContactInterface.__init__.__doc__
+    assert "(None: jacksonGreen)" in rc.ContactInterface.__init__.__doc__
+    assert "(None: " + rc.default_conductance_law() + ")" in rc.ContactInterface.__init__.__doc__
+    # A seed is of synthesize N: given alone, even as 1, it is refused (1 was a sentinel).
+    with pytest.raises(rc.ParameterError, match="^seed: is the phases' seed of synthesize N"):
+        rc.ContactInterface(surfaces=surfaces, side1=STEEL_M, side2=STEEL_M, model="boundaryElement", seed=1)
+    # The model's rules with the entries of another, named as Python writes them.
+    with pytest.raises(rc.ParameterError, match="^hardness_from_yield: is for model boundaryElement"):
+        rc.ContactInterface(surfaces=surfaces, side1=STEEL_M, side2=STEEL_M, hardness_from_yield=True)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Run.hpp"
 #include "Inputs.hpp"
+#include "GapInputs.hpp"
 
 #include "roughContact/Error.hpp"
 #include "roughContact/io/Files.hpp"
@@ -57,14 +58,13 @@ int runBoundaryElement(const Options& o)
         throw ParameterError("--levels", "the per-level trace exists for the multi-scale models only");
     }
     const std::optional<GapInputs> gapInputs = gapOf(o); // its errors before minutes of solving
+    const InterfaceSpec spec = interfaceSpecOf(o);         // the model's rules, the core's
     const auto [surface, periodic] = arealSurfaceOf(o);
     const ContactMaterials materials = materialsOf(o);
     BoundaryElementOptions bo;
     bo.periodic = periodic;
-    bo.mirrored = o.mirror;
-    if (o.detrend) {
-        bo.detrend = parseDetrend(*o.detrend, "--detrend");
-    }
+    bo.mirrored = spec.mirror.value_or(false);
+    bo.detrend = spec.detrend;
     bo.hardness = hardnessOf(o, materials, "boundaryElement --hardness-from-yield");
     std::vector<double> pressures; // --pressures [Pa]: the first column
     const std::vector<double> loads = loadsOf(o, materials.reducedModulus(), &pressures);

@@ -72,15 +72,6 @@ int runCheck(const Options& o)
         throw ParameterError(o.k1 ? "--k1" : "--k2", "--check compares h_c/k_s, which the conductivities do not change");
     }
     SurfaceCheckInputs in = interfaceInputsOf(o, "--check");
-    if (o.periodic) {
-        in.periodic = true;
-    }
-    if (o.mirror) {
-        in.mirror = true;
-    }
-    if (o.detrend) {
-        in.detrend = parseDetrend(*o.detrend, "--detrend");
-    }
     // The pressures [Pa]: --pressures as given (no round trip through the load), or the loads x E'.
     const double Ep = in.materials->reducedModulus();
     std::vector<double> given;
@@ -105,11 +96,11 @@ int runCheck(const Options& o)
         if (comma != std::string::npos) {
             throw ParameterError("--synthesize", "with --check takes the grid size N only (the check solves seeds 1, 2 and 3)");
         }
-        so.gridSize = static_cast<std::size_t>(wholeNumber(o.synthesize, "--synthesize", "the grid size N"));
+        so.gridSize = static_cast<std::size_t>(parseWholeNumber(o.synthesize, "--synthesize", "the grid size N"));
     }
     if (!o.checkPeriods.empty()) {
         so.lightLoadPeriods = checkedLightLoadPeriods(
-            wholeNumber(o.checkPeriods, "--check-periods", "the light loads' period K in scan lengths"), in.surfaces,
+            parseWholeNumber(o.checkPeriods, "--check-periods", "the light loads' period K in scan lengths"), in.surfaces,
             "--check-periods");
     }
     in.minPressure = pressures.front();

@@ -32,7 +32,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -68,22 +67,6 @@ std::vector<double> splitNumbers(const std::string& text, char sep, const std::s
         out.push_back(v);
     }
     return out;
-}
-
-// A whole number 0 .. 2^64 - 1 written in decimal digits ("--synthesize 8,SEED"); ParameterError
-// naming the option and the item otherwise (a sign, a fraction, an exponent, more than 2^64 - 1).
-std::uint64_t wholeNumber(const std::string& text, const std::string& option, const std::string& what)
-{
-    std::uint64_t v = 0;
-    const char* end = text.data() + text.size();
-    const std::from_chars_result r = std::from_chars(text.data(), end, v);
-    if (text.empty() || r.ptr != end || r.ec == std::errc::invalid_argument) {
-        throw ParameterError(option, what + " must be a whole number of decimal digits, got '" + text + "'");
-    }
-    if (r.ec == std::errc::result_out_of_range) {
-        throw ParameterError(option, what + " " + text + " is beyond the largest, 2^64 - 1 = 18446744073709551615");
-    }
-    return v;
 }
 
 // The loads F/(A_n E') to compute: --loads, --load-range, or --pressures [Pa] divided by E' (Ep);
@@ -140,25 +123,6 @@ std::vector<double> loadsOf(const Options& o, double Ep, std::vector<double>* gi
     return out;
 }
 
-Spectrum surfaceOf(const Options& o)
-{
-    return equivalentSurface(surfaceSpecsOf(o));
-}
-
-// sigma and the mean absolute slope of the surfaces, for the correlations (the same surfaces
-// surfaceOf reads; two combined): a profile's and a map's from their heights, a spectrum's from
-// its moments (Roughness.hpp).
-SurfaceRoughness roughnessOf(const Options& o)
-{
-    return equivalentRoughness(surfaceSpecsOf(o));
-}
-
-// The heights' skewness of the same surfaces (equivalentSkewness): none for a spectrum.
-std::optional<HeightSkewness> skewnessOf(const Options& o)
-{
-    return equivalentSkewness(surfaceSpecsOf(o));
-}
-
 namespace {
 
 // How an entry of a solid is written on the command line (the reader names it so).
@@ -203,7 +167,7 @@ std::pair<std::size_t, std::uint64_t> synthesisOf(const Options& o)
     const std::uint64_t n = gridSizeOf(o.synthesize.substr(0, comma), "--synthesize");
     const auto seed = comma == std::string::npos
                           ? std::uint64_t(1)
-                          : wholeNumber(o.synthesize.substr(comma + 1), "--synthesize", "the seed SEED");
+                          : parseWholeNumber(o.synthesize.substr(comma + 1), "--synthesize", "the seed SEED");
     return {static_cast<std::size_t>(n), seed};
 }
 
@@ -248,31 +212,11 @@ std::optional<double> hardnessOf(const Options& o, const ContactMaterials& mater
     return std::nullopt;
 }
 
-void printInfo(const Spectrum& s, std::ostream& os)
-{
-    os << "# surface: " << s.source() << "\n# levels: " << s.size() << ", f = " << s.frequencies().front()
-       << " .. " << s.frequencies().back() << " 1/m, L = " << s.length() << " m, A_n = " << s.nominalArea()
-       << " m^2\n# rms height (Parseval): " << std::sqrt(s.profileVariance()) << " m\n";
-    try {
-        const SummitParameters p = mcCoolParameters(s);
-        os << "# McCool: eta = " << p.eta << " 1/m^2, R = " << p.R << " m, sigma_s = " << p.sigmaS
-           << " m, alpha = " << p.alpha << "\n";
-    } catch (const std::exception& e) {
-        os << "# McCool: " << e.what() << "\n";
-    }
-    try {
-        const FractalParameters f = fitFractal(s);
-        os << "# fractal fit: D = " << f.D << ", G = " << f.G << " m\n";
-    } catch (const std::exception& e) {
-        os << "# fractal fit: " << e.what() << "\n";
-    }
-}
-
 // The grid size N of --synthesize N[,SEED] or --resample N[,K]: a whole number, even, within
 // the synthesis limits; ParameterError naming the option otherwise.
 std::uint64_t gridSizeOf(const std::string& text, const std::string& option)
 {
-    const std::uint64_t n = wholeNumber(text, option, "the grid size N");
+    const std::uint64_t n = parseWholeNumber(text, option, "the grid size N");
     if (n < limits::minimumSynthesisSize || n > limits::maximumSynthesisSize || n % 2 != 0) {
         std::ostringstream os;
         os << "the grid size N must be even and within [" << limits::minimumSynthesisSize << ", "
@@ -315,9 +259,6 @@ std::pair<ArealSurface, bool> arealSurfaceOf(const Options& o)
                              "needs an areal surface: --areal FILE, or --synthesize N[,SEED] with a profile or "
                              "spectrum");
     }
-    if (o.mirror) {
-        throw ParameterError("--mirror", "is for --areal maps; a --synthesize'd surface is periodic already");
-    }
     const auto [n, seed] = synthesisOf(o);
     const Spectrum lineScan = surfaceOf(o);
     // A synthesized surface is periodic: it is solved so (the option is for measured maps).
@@ -331,7 +272,7 @@ std::pair<ArealSurface, bool> arealSurfaceOf(const Options& o)
     const std::uint64_t m = gridSizeOf(o.resample.substr(0, rc), "--resample");
     std::optional<double> levels;
     if (rc != std::string::npos) {
-        const std::uint64_t k = wholeNumber(o.resample.substr(rc + 1), "--resample", "the levels kept K");
+        const std::uint64_t k = parseWholeNumber(o.resample.substr(rc + 1), "--resample", "the levels kept K");
         if (k < 1) {
             throw ParameterError("--resample", "keeps at least 1 level (K >= 1), got " + o.resample.substr(rc + 1));
         }
@@ -390,261 +331,71 @@ std::optional<double> harmonicConductivityOf(const Options& o, bool conductance)
     return harmonicMeanConductivity(*o.k1, *o.k2);
 }
 
-// The surfaces as SurfaceSpecs, read by the core's reader of a surface (InterfaceSpecReader.hpp)
-// from the options as a dictionary's entries, each named by its option. An option goes to the
-// surfaces whose type takes it (--units to a profile and an areal map, not to a spectrum beside
-// them); one that no surface takes is the core's error for the first surface.
-std::vector<SurfaceSpec> surfaceSpecsOf(const Options& o)
-{
-    struct Given {
-        std::string key;       ///< the entry's name in a dictionary
-        std::string arealKey;  ///< ... for an areal surface (--dx: a profile's spacing, a map's dx)
-        SpecValues::Value value;
-        std::string option;
-    };
-    std::vector<Given> given;
-    if (o.units) {
-        given.push_back({"units", "units", *o.units, "--units"});
-    }
-    if (o.dx) {
-        given.push_back({"spacing", "dx", *o.dx, "--dx"});
-    }
-    if (o.dy) {
-        given.push_back({"dy", "dy", *o.dy, "--dy"});
-    }
-    if (o.fillInvalid) {
-        given.push_back({"fillInvalid", "fillInvalid", true, "--fill-invalid"});
-    }
-    if (o.direction) {
-        given.push_back({"direction", "direction", *o.direction, "--direction"});
-    }
-    if (o.stride != 1) {
-        given.push_back({"stride", "stride", std::uint64_t(o.stride), "--stride"});
-    }
-    if (o.length) {
-        given.push_back({"length", "length", *o.length, "--length"});
-    }
-
-    std::vector<SpecValues> surfaces;
-    const auto add = [&](const char* type, const std::string& option, const std::string& file) {
-        SpecValues v(option + " " + file);
-        v.set("type", std::string(type), option);
-        if (!file.empty()) {
-            v.set("file", file, option);
-        }
-        surfaces.push_back(v);
-        return &surfaces.back();
-    };
-    for (const std::string& f : o.profiles) {
-        add("profile", "--profile", f);
-    }
-    for (const std::string& f : o.areals) {
-        add("areal", "--areal", f);
-    }
-    for (const std::string& f : o.spectra) {
-        add("spectrum", "--spectrum", f);
-    }
-    if (!o.powerLaw.empty()) {
-        SpecValues* v = add("powerLaw", "--power-law", "");
-        const char* keys[] = {"bm", "m", "fmin", "fmax"};
-        for (std::size_t i = 0; i < o.powerLaw.size() && i < 4; ++i) {
-            v->set(keys[i], o.powerLaw[i], "--power-law");
-        }
-    }
-    if (!o.roughness.empty()) {
-        SpecValues* v = add("roughness", "--roughness", "");
-        const char* keys[] = {"Rq", "slope", "cutoff", "shortCutoff"};
-        for (std::size_t i = 0; i < o.roughness.size() && i < 4; ++i) {
-            // RQ, CUTOFF and SHORTCUTOFF are lengths (SI, or with a unit: 0.8um); SLOPE a number
-            const std::string& item = o.roughness[i];
-            double value = 0.0;
-            if (i == 1) {
-                if (!parseNumber(item, value)) {
-                    throw ParameterError("--roughness", "SLOPE (the rms slope, a number) is '" + item + "'");
-                }
-            } else {
-                value = parseQuantity(item, Quantity::length, "--roughness");
-            }
-            v->set(keys[i], value, "--roughness");
-        }
-        // A length without a unit beside lengths with one is most likely a slip (0.8um,0.1,0.8
-        // meant 0.8 mm, not 0.8 m): said, and read as written (SI).
-        const char* names[] = {"RQ", "SLOPE", "CUTOFF", "SHORTCUTOFF"};
-        double plain = 0.0;
-        bool anyUnit = false;
-        for (std::size_t i = 0; i < o.roughness.size() && i < 4; ++i) {
-            anyUnit = anyUnit || (i != 1 && !parseNumber(o.roughness[i], plain));
-        }
-        for (std::size_t i = 0; anyUnit && i < o.roughness.size() && i < 4; ++i) {
-            if (i != 1 && parseNumber(o.roughness[i], plain)) {
-                std::cerr << "multiscaleContact: warning: --roughness: " << names[i] << " '" << o.roughness[i]
-                          << "' has no unit and is read as " << o.roughness[i]
-                          << " m, while another length there has one; give it a unit (0.8mm, 2.5um) if another "
-                             "was meant\n";
-            }
-        }
-    }
-    if (!o.fractal.empty()) {
-        SpecValues* v = add("fractal", "--fractal", "");
-        const char* keys[] = {"D", "G", "fmin", "fmax"};
-        for (std::size_t i = 0; i < o.fractal.size() && i < 4; ++i) {
-            v->set(keys[i], o.fractal[i], "--fractal");
-        }
-    }
-    for (const Given& g : given) {
-        bool taken = false;
-        for (SpecValues& v : surfaces) {
-            const SurfaceSpec::Kind kind = parseSurfaceKind(v.word("type"));
-            const std::string& key = kind == SurfaceSpec::Kind::areal ? g.arealKey : g.key;
-            const std::vector<std::string>& entries = surfaceEntries(kind);
-            if (std::find(entries.begin(), entries.end(), key) != entries.end()) {
-                v.set(key, g.value, g.option);
-                taken = true;
-            }
-        }
-        if (!taken && !surfaces.empty()) {
-            SpecValues first = surfaces.front();
-            first.set(g.key, g.value, g.option);
-            readSurfaceSpec(first); // throws: no surface of this run takes the option
-        }
-    }
-    std::vector<SurfaceSpec> out;
-    for (const SpecValues& v : surfaces) {
-        out.push_back(readSurfaceSpec(v));
-    }
-    return out;
-}
-
 namespace {
 
-// How an entry of the gap is written on the command line (the reader names it so).
-std::string gapOption(const std::string& key)
+// How an entry of a specification's settings is written on the command line.
+std::string settingOption(const std::string& key)
 {
-    return key == "pressure" ? "--gas-pressure" : "--" + key;
+    static const std::pair<const char*, const char*> options[] = {
+        {"conductance", "--conductance-law"}, {"microhardness", "--hardness"}, {"hardnessFromYield", "--hardness-from-yield"},
+        {"seed", "--synthesize"}};
+    for (const auto& [entry, option] : options) {
+        if (key == entry) {
+            return option;
+        }
+    }
+    return "--" + key;
 }
 
 } // namespace
 
-std::optional<GapInputs> gapOf(const Options& o)
+InterfaceSpec interfaceSpecOf(const Options& o)
 {
-    const bool given =
-        !o.gas.empty() || o.gasPressure.has_value() || !o.accommodation.empty() || !o.emissivity.empty();
-    if (!given) {
-        for (const auto& [set, what] : {std::pair<bool, const char*>{!o.temperature.empty(), "--temperature"},
-                                        {o.gapWidth.has_value(), "--gap-width"}}) {
-            if (set) {
-                throw ParameterError(what, "is for the gap beside the contact: add --gas NAME and/or --emissivity "
-                                           "E1,E2");
-            }
-        }
-        return std::nullopt;
+    InterfaceSpec spec;
+    spec.surfaces = surfaceSpecsOf(o);
+    const bool exact = o.model == "boundaryElement";
+    SpecValues v("the command line", settingOption);
+    v.set("model", o.model);
+    if (!exact && o.conductanceLaw != "all") {
+        // The law of the run's h_per_k, named: what --vickers and the model's rules are held to.
+        v.set("conductance", o.conductanceLaw.empty() ? defaultConductanceLaw() : o.conductanceLaw);
+    } else if (exact && !o.conductanceLaw.empty()) {
+        v.set("conductance", o.conductanceLaw);
     }
-    // The options as the condition's gap sub-dictionary, through the core's reader.
-    SpecValues v("gap", gapOption);
-    if (!o.gas.empty()) {
-        v.set("gas", o.gas);
+    if (!o.vickers.empty()) {
+        v.set("vickers", splitNumbers(o.vickers, ',', "--vickers"));
     }
-    if (o.gasPressure) {
-        v.set("pressure", *o.gasPressure);
+    if (o.hardness) {
+        v.set(exact ? "hardness" : "microhardness", *o.hardness, "--hardness");
     }
-    if (!o.accommodation.empty()) {
-        v.set("accommodation", splitNumbers(o.accommodation, ',', "--accommodation"));
+    if (o.hardnessFromYield && exact) {
+        v.set("hardnessFromYield", true); // else the laws' H_c = 2.84 S_y (hardnessOf)
     }
-    if (!o.emissivity.empty()) {
-        v.set("emissivity", splitNumbers(o.emissivity, ',', "--emissivity"));
+    if (!o.synthesize.empty() && !o.check) {
+        const auto [n, seed] = synthesisOf(o);
+        v.set("synthesize", std::uint64_t(n)).set("seed", seed);
     }
-    GapInputs g;
-    g.spec = readGapSpec(v);
-    if (o.temperature.empty()) {
-        throw ParameterError("--temperature", std::string("the gap's conductance (") +
-                                                  (g.spec.gas ? "--gas" : "--emissivity") +
-                                                  ") is taken at the interface temperature: give --temperature T [K]");
+    if (o.periodic) {
+        v.set("periodic", true);
     }
-    const std::vector<double> T = splitNumbers(o.temperature, ',', "--temperature");
-    if (T.size() > 2) {
-        throw ParameterError("--temperature", "expects T or T1,T2 [K], the two faces' temperatures");
+    if (o.mirror) {
+        v.set("mirror", true);
     }
-    for (double t : T) {
-        limits::requireInRange("--temperature", t, limits::minimumTemperature, limits::maximumTemperature, "K");
+    if (o.detrend) {
+        v.set("detrend", *o.detrend);
     }
-    g.T1 = T.front();
-    g.T2 = T.back();
-    if (o.gapWidth) {
-        g.width = limits::requireInRange("--gap-width", *o.gapWidth, 0.0, limits::maximumLength, "m");
+    if (o.check) {
+        v.set("check", true);
     }
-    return g;
-}
-
-InterfaceGap interfaceGapOf(const Options& o, const GapInputs& g, const ContactMaterials& materials,
-                            std::function<double(double)> separation, double firstTouchPressure)
-{
-    double sigma = 0.0;
-    double Hc = 0.0;
-    if (!separation) {
-        // The correlation's inputs, as ContactInterface::buildGap takes them: the surfaces'
-        // combined rms height and the microhardness (--hardness, else 2.84 S_y).
-        sigma = roughnessOf(o).sigma;
-        const std::optional<double> H = hardnessOf(o, materials, "--hardness-from-yield");
-        if (H) {
-            Hc = *H;
-        } else {
-            try {
-                Hc = materials.hardness("the gap's separation");
-            } catch (const ParameterError&) {
-                throw ParameterError(g.spec.gas ? "--gas" : "--emissivity",
-                                     "the gap's separation Y (the plastic Gaussian correlation of sigma and P/H_c; "
-                                     "this model and law define no mean separation) needs the microhardness H_c: "
-                                     "give --Sy (H_c = 2.84 S_y), --hardness H_C or --hardness-from-yield");
-            }
-        }
-    }
-    return InterfaceGap(g.spec, std::move(separation), sigma, Hc, firstTouchPressure);
-}
-
-GapRow gapRowOf(const InterfaceGap& gap, const GapInputs& g, double P, bool complete)
-{
-    GapRow row;
-    if (complete) {
-        return row; // no gap: Y 0, h_g = h_r = 0 (h infinite)
-    }
-    double Y = 0.0;
-    if (P > 0.0) {
-        Y = gap.separation(P);
-        row.separation = Y;
-    } else if (g.width) {
-        Y = *g.width;
-        row.separation = Y;
-    } else if (gap.hasGas()) {
-        throw ParameterError("--gap-width", "at load 0 the surfaces do not touch, and the gas conductance "
-                                            "k_g/(Y + M) needs their separation Y: give --gap-width W [m]");
-    } else {
-        row.separation = std::numeric_limits<double>::quiet_NaN(); // radiation alone needs none
-    }
-    row.h = gap.conductances(Y, g.T1, g.T2);
-    return row;
-}
-
-void writeGapCells(std::ostream& out, const InterfaceGap& gap, const GapInputs& g, double P, bool complete,
-                   const std::optional<double>& ks, double hPerK)
-{
-    const GapRow row = gapRowOf(gap, g, P, complete);
-    out << ',';
-    if (!std::isnan(row.separation)) {
-        out << row.separation;
-    }
-    out << ',' << row.h.gas << ',' << row.h.radiative;
-    if (ks) {
-        out << ',';
-        if (!std::isnan(hPerK)) {
-            out << *ks * hPerK + row.h.gas + row.h.radiative; // inf at complete contact
-        }
-    }
+    readInterfaceSettings(v, spec);
+    return spec;
 }
 
 SurfaceCheckInputs interfaceInputsOf(const Options& o, const std::string& who)
 {
+    const InterfaceSpec spec = interfaceSpecOf(o);
     SurfaceCheckInputs in;
-    in.surfaces = surfaceSpecsOf(o);
+    in.surfaces = spec.surfaces;
     in.materials = materialsOf(o);
     in.model = o.model;
     if (!isMultiscaleModel(o.model) && o.model != "boundaryElement") {
@@ -653,13 +404,10 @@ SurfaceCheckInputs interfaceInputsOf(const Options& o, const std::string& who)
     }
     in.conductanceLaw = o.conductanceLaw == "all" ? std::string() : o.conductanceLaw;
     in.hardness = hardnessOf(o, *in.materials, who + " --hardness-from-yield");
-    if (!o.vickers.empty()) {
-        const std::vector<double> c = splitNumbers(o.vickers, ',', "--vickers");
-        if (c.size() != 2) {
-            throw ParameterError("--vickers", "expects C1,C2: c1 [Pa] and c2 of H_v = c1 (d_v/1 um)^c2");
-        }
-        in.vickers = VickersCoefficients{c[0], c[1]};
-    }
+    in.vickers = spec.vickers;
+    in.periodic = spec.periodic;
+    in.mirror = spec.mirror;
+    in.detrend = spec.detrend;
     return in;
 }
 

@@ -36,10 +36,6 @@ using roughContact::SurfaceSpec;
 
 std::vector<double> splitNumbers(const std::string& text, char sep, const std::string& option);
 
-// A whole number 0 .. 2^64 - 1 written in decimal digits ("--synthesize 8,SEED"); ParameterError
-// naming the option and the item otherwise (a sign, a fraction, an exponent, more than 2^64 - 1).
-std::uint64_t wholeNumber(const std::string& text, const std::string& option, const std::string& what);
-
 // The loads F/(A_n E') to compute: --loads, --load-range, or --pressures [Pa] divided by E' (Ep);
 // `given` (optional) receives the --pressures as given, one per load.
 std::vector<double> loadsOf(const Options& o, double Ep, std::vector<double>* given = nullptr);
@@ -95,42 +91,16 @@ std::optional<double> harmonicConductivityOf(const Options& o, bool conductance)
 // The surfaces as SurfaceSpecs (the boundary condition's description of the same options).
 std::vector<SurfaceSpec> surfaceSpecsOf(const Options& o);
 
-// The gap beside the contact: --gas, --gas-pressure, --accommodation, --emissivity read by the
-// core's reader of a gap (readGapSpec, the condition's gap entries and rules, each error naming
-// the option), the face temperatures of --temperature T[,T2] [K] and the --gap-width [m].
-struct GapInputs {
-    roughContact::GapSpec spec;
-    double T1 = 0.0; ///< face temperatures [K] (the gas at their mean)
-    double T2 = 0.0;
-    std::optional<double> width; ///< the separation at load 0 (the surfaces apart)
-};
-// None without a gap option; ParameterError naming the option: --temperature missing with a gap,
-// --temperature or --gap-width without one, any rule of the reader.
-std::optional<GapInputs> gapOf(const Options& o);
-
-// The run's gap (InterfaceGap, as ContactInterface builds it): Y(P) from `separation`, the
-// contact model's or the law's mean separation (the separation column), where the run has one;
-// else the gap's correlation of sigma (the surfaces combined, roughnessOf) and H_c (--hardness,
-// --hardness-from-yield, else 2.84 S_y). firstTouchPressure [Pa] > 0: a pressure `separation`
-// can be asked at (InterfaceGap's first touch; the CLI asks for --gap-width at load 0 instead).
-roughContact::InterfaceGap interfaceGapOf(const Options& o, const GapInputs& g, const ContactMaterials& materials,
-                                          std::function<double(double)> separation, double firstTouchPressure);
-
-// One row's gap columns at the nominal pressure P [Pa]: the separation Y [m] the gas term is
-// taken at (NaN where none is: radiation alone, surfaces apart) and h_g, h_r [W/(m^2 K)]
-// (InterfaceGap::conductances). complete: complete contact, no gap (Y 0, both 0). P = 0: Y is
-// --gap-width (required with a gas).
-struct GapRow {
-    double separation = 0.0;
-    roughContact::GapConductances h;
-};
-GapRow gapRowOf(const roughContact::InterfaceGap& gap, const GapInputs& g, double P, bool complete);
-
-// The gap's cells of a row at P [Pa], each after a comma: gap_separation (empty where none is
-// used), h_gas, h_radiation, and with ks (k_s [W/(m K)]) h_total = k_s hPerK + h_g + h_r (empty
-// where hPerK, the row's h_per_k, is NaN: no law).
-void writeGapCells(std::ostream& out, const roughContact::InterfaceGap& gap, const GapInputs& g, double P,
-                   bool complete, const std::optional<double>& ks, double hPerK);
+// The options as a contact specification, read by the core's reader of a specification's settings
+// (readInterfaceSettings) from them as its entries, each named by its option: the surfaces
+// (surfaceSpecsOf); --model; the law (--conductance-law, else the default where a multi-scale or
+// correlation model's curve is asked: the law the run's h_per_k is; none for boundaryElement and
+// for all); --vickers; --hardness (boundaryElement's cap, else the laws' microhardness);
+// --hardness-from-yield (boundaryElement's); --synthesize N[,SEED]; --periodic, --mirror,
+// --detrend; --check. The reader ends with the model's rules with the entries of another
+// (InterfaceSpec::checkEntries), so each stands once for the CLI, the condition and Python. The
+// solids are not in it (materialsOf: --Eprime and one solid against a flat are the CLI's).
+roughContact::InterfaceSpec interfaceSpecOf(const Options& o);
 
 // The interface as the check and the picture see it (SurfaceCheckInputs): the surfaces, the
 // materials, the --model (a multi-scale model or boundaryElement), the --conductance-law, the cap

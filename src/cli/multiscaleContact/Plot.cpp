@@ -13,11 +13,6 @@ using namespace roughContact;
 
 namespace multiscaleContact {
 
-namespace {
-/// Points of a picture's curves.
-constexpr std::size_t plotPoints = 60;
-} // namespace
-
 void writePlot(const Options& o, const std::vector<double>& pressures, const std::optional<double>& ks,
                const InterfaceGap* gap, const GapInputs* gapInputs, const SurfaceCheck* check)
 {
@@ -32,7 +27,7 @@ void writePlot(const Options& o, const std::vector<double>& pressures, const std
     }
     const auto [lo, hi] = std::minmax_element(positive.begin(), positive.end());
     const SurfaceCheckInputs in = interfaceInputsOf(o, "--plot");
-    const InterfaceCurves curves = interfaceCurves(in, plotPressures(*lo, *hi, check != nullptr, plotPoints));
+    const InterfaceCurves curves = interfaceCurves(in, plotPressures(*lo, *hi, check != nullptr));
     PlotExtras extras;
     extras.conductivity = ks;
     if (gap && gapInputs) {

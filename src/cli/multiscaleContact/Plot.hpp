@@ -3,6 +3,7 @@
 #pragma once
 
 #include "Inputs.hpp"
+#include "GapInputs.hpp"
 #include "Options.hpp"
 
 #include "roughContact/interface/InterfaceGap.hpp"

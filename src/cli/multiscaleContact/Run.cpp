@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Run.hpp"
 #include "Inputs.hpp"
+#include "GapInputs.hpp"
 #include "Plot.hpp"
 
 #include "roughContact/Error.hpp"
@@ -99,28 +100,24 @@ int run(const Options& o)
     if (o.model == "boundaryElement") {
         return runBoundaryElement(o);
     }
-    const bool cmy = o.conductanceLaw == "cooperMikicYovanovich" || o.conductanceLaw == "all";
     const std::optional<GapInputs> gapInputs = gapOf(o);
-    // --hardness is also the gap's microhardness H_c (its separation correlation).
-    const bool hardnessUsed = cmy || gapInputs.has_value();
-    for (const auto& [given, what] : {std::pair<bool, const char*>{!o.synthesize.empty(), "--synthesize"},
-                                      {!o.resample.empty(), "--resample"},
-                                      {o.periodic, "--periodic"},
-                                      {o.mirror, "--mirror"},
-                                      {o.detrend.has_value(), "--detrend"},
-                                      {o.hardness.has_value() && !hardnessUsed, "--hardness"},
-                                      {o.hardnessFromYield && !hardnessUsed, "--hardness-from-yield"},
+    // The model's rules with the entries of another (--synthesize, --periodic, --mirror,
+    // --detrend; --vickers beside another law): the core's, through the specification.
+    const InterfaceSpec spec = interfaceSpecOf(o);
+    for (const auto& [given, what] : {std::pair<bool, const char*>{!o.resample.empty(), "--resample"},
                                       {!o.pressureMap.empty(), "--pressure-map"}}) {
         if (given) {
-            throw ParameterError(what, std::string("is for --model boundaryElement") +
-                                           (std::string(what).rfind("--hardness", 0) == 0
-                                                ? ", --conductance-law cooperMikicYovanovich and the gap (--gas, "
-                                                  "--emissivity)"
-                                                : ""));
+            throw ParameterError(what, "is for --model boundaryElement");
         }
     }
-    if (!o.vickers.empty() && !cmy) {
-        throw ParameterError("--vickers", "is for --conductance-law cooperMikicYovanovich");
+    // A gap implies the conductance columns: its separation is the law's where it has one, and
+    // h_total adds its terms to h_c.
+    const bool conductance = o.conductance || !o.conductanceLaw.empty() || gapInputs.has_value() || !o.plot.empty();
+    if ((o.hardness || o.hardnessFromYield) && !conductance) {
+        throw ParameterError(o.hardness ? "--hardness" : "--hardness-from-yield",
+                             "is the cap of --model boundaryElement, or the microhardness of the conductance laws "
+                             "(cooperMikicYovanovich's H_c, the cap of fittedElastoPlastic) and of the gap: add "
+                             "--conductance, a --conductance-law or the gap (--gas, --emissivity)");
     }
     const Spectrum spectrum = surfaceOf(o);
     if (o.info) {
@@ -178,9 +175,6 @@ int run(const Options& o)
     }
     const auto* ms = dynamic_cast<const MultiscaleModel*>(model.get());
     const auto* persson = dynamic_cast<const PerssonModel*>(model.get());
-    // A gap implies the conductance columns: its separation is the law's where it has one, and
-    // h_total adds its terms to h_c.
-    const bool conductance = o.conductance || !o.conductanceLaw.empty() || gapInputs.has_value() || !o.plot.empty();
     const bool allLaws = o.conductanceLaw == "all";
     // persson's own conductance (Barber's relation with its mean separation) unless a law is named.
     const std::string lawName = o.conductanceLaw.empty() || allLaws
@@ -202,13 +196,7 @@ int run(const Options& o)
         if ((allLaws || lawName == "fittedElastoPlastic") && o.synthesize.empty()) {
             in.skewness = skewnessOf(o);
         }
-        if (!o.vickers.empty()) {
-            const std::vector<double> c = splitNumbers(o.vickers, ',', "--vickers");
-            if (c.size() != 2) {
-                throw ParameterError("--vickers", "expects C1,C2: c1 [Pa] and c2 of H_v = c1 (d_v/1 um)^c2");
-            }
-            in.vickers = VickersCoefficients{c[0], c[1]};
-        }
+        in.vickers = spec.vickers;
     }
     // Why a law cannot be built here, or "" when it can.
     const auto missing = [&](const std::string& name) -> std::string {

@@ -43,26 +43,10 @@ int runTable(const Options& o)
                                        "loads are its own, its columns fixed");
         }
     }
-    InterfaceSpec spec;
-    spec.model = "boundaryElement";
-    spec.surfaces = surfaceSpecsOf(o);
+    InterfaceSpec spec = interfaceSpecOf(o); // the surfaces and the exact model's entries
     const std::vector<Material> sides = solidsOf(o);
     spec.side1 = sides[0];
     spec.side2 = sides[1];
-    if (!o.synthesize.empty()) {
-        std::tie(spec.synthesize, spec.seed) = synthesisOf(o);
-    }
-    if (o.periodic) {
-        spec.periodic = true;
-    }
-    if (o.mirror) {
-        spec.mirror = true;
-    }
-    if (o.detrend) {
-        spec.detrend = parseDetrend(*o.detrend, "--detrend");
-    }
-    spec.hardness = o.hardness;
-    spec.hardnessFromYield = o.hardnessFromYield;
     if (!o.pressures.empty()) {
         std::vector<double> range;
         for (const std::string& item : o.pressures) {

@@ -7,8 +7,9 @@
 // P/E') adds a first column nominal_pressure [Pa]; the gap options (--gas, --emissivity) the
 // columns gap_separation, h_gas, h_radiation and h_total.
 //
-// The program in files: Options (the command line), Inputs (options to the core's objects), Run,
-// Check, BoundaryElementRun, Table (what it computes); this file only parses and reports errors.
+// The program in files: Options (the command line), Inputs, SurfaceInputs, GapInputs (options to
+// the core's objects, through its readers), Run, Check, BoundaryElementRun, Table (what it
+// computes); this file only parses and reports errors.
 #include "Options.hpp"
 #include "Run.hpp"
 #include "roughContact/Error.hpp"

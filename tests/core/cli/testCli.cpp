@@ -275,7 +275,27 @@ TEST(Cli, ConductanceLawColumnIsTheLibrarys)
                 {"--hardness", "cooperMikicYovanovich"});
     expectError("--profile '" + standin + "' --model jacksonGreen" + steel +
                     " --loads 1e-4 --conductance-law cooperMikicYovanovich --vickers 5e9",
-                {"--vickers", "C1,C2"});
+                {"--vickers", "two values"});
+    // The rules of the specification (InterfaceSpec::checkEntries), as the condition's: --vickers
+    // beside the default law, which it does not change; with all it is cooperMikicYovanovich's.
+    expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --loads 1e-4 --conductance --vickers 5e9,-0.2",
+                {"--vickers", "is for the conductance law cooperMikicYovanovich, not " + defaultConductanceLaw()});
+    const CommandResult all = run("--profile '" + standin + "' --model jacksonGreen" + steel +
+                                  " --loads 1e-4 --conductance-law all --vickers 5e9,-0.2");
+    EXPECT_EQ(all.status, 0) << all.err;
+    EXPECT_GE(column(parseCsv(all.out), "h_per_k_cooperMikicYovanovich"), 0);
+    // --hardness with the default law is its cap H (conductanceLawHardness), as the condition's
+    // microhardness: taken, and it changes h where the cap binds (a load near 0.1 H/E').
+    const std::string capped = "--profile '" + standin + "' --model jacksonGreen" + steel + " --loads 1e-3 --conductance";
+    const CommandResult sy = run(capped);
+    const CommandResult soft = run(capped + " --hardness 5e8");
+    ASSERT_EQ(sy.status, 0) << sy.err;
+    ASSERT_EQ(soft.status, 0) << soft.err;
+    const auto hOf = [](const CommandResult& r) {
+        const Csv csv = parseCsv(r.out);
+        return std::stod(csv.rows.at(0).at(column(csv, "h_per_k")));
+    };
+    EXPECT_NE(hOf(sy), hOf(soft)) << "--hardness did not reach the default law's cap";
 }
 
 TEST(Cli, EveryConductanceLawSideBySide)

@@ -288,6 +288,8 @@ TEST(ContactInterface, HowAMapIsSolvedIsForTheExactModelOrTheCheck)
             spec.check = true;
             if (areal || std::string(what) == "detrend") {
                 EXPECT_NO_THROW(ContactInterface{spec}) << (areal ? "map" : "profile");
+            } else if (std::string(what) == "mirror") {
+                EXPECT_EQ(refused(spec, "mirror: is for areal maps"), "") << "profile";
             } else {
                 EXPECT_EQ(refused(spec, std::string(what) + ": is for model boundaryElement"), "") << "profile";
             }

@@ -321,7 +321,9 @@ TEST(InterfaceSpecReader, MirrorIsAFlag)
 {
     // mirror (a map mirrored about its edges): a flag, unset by default, not a number.
     SpecValues c = contact();
-    c.set("model", std::string("boundaryElement"));
+    SpecValues areal("surface", dashed);
+    areal.set("type", std::string("areal")).set("file", std::string("m.x3p"));
+    c.set("model", std::string("boundaryElement")).set("surface", sub(areal));
     EXPECT_FALSE(readInterfaceSpec(c).mirror.has_value());
     c.set("mirror", true);
     EXPECT_TRUE(*readInterfaceSpec(c).mirror);
@@ -500,4 +502,32 @@ TEST(SpecValues, DefaultNamesSayTheContext)
     EXPECT_EQ(s.name("E"), "'E' of side1");
     s.set("nu", 0.3, "--nu (solid 1)");
     EXPECT_EQ(s.name("nu"), "--nu (solid 1)");
+}
+
+TEST(InterfaceSpecReader, EndsWithTheModelsRulesNamedAsWritten)
+{
+    // The reader ends with InterfaceSpec::checkEntries, its errors naming the entry as the source
+    // writes it (here "--" + key): the one place of each rule, for every front-end.
+    SpecValues c = contact(); // jacksonGreen on a profile
+    c.set("synthesize", std::uint64_t(64));
+    EXPECT_NE(messageOf([&] { readInterfaceSpec(c); }, "--synthesize").find("is for model boundaryElement"),
+              std::string::npos);
+    c = contact();
+    c.set("conductance", std::string("mikic")).set("vickers", std::vector<double>{5e9, -0.2});
+    EXPECT_NE(messageOf([&] { readInterfaceSpec(c); }, "--vickers").find("cooperMikicYovanovich, not mikic"),
+              std::string::npos);
+    c.set("check", true); // the check computes cooperMikicYovanovich's column beside mikic
+    EXPECT_TRUE(readInterfaceSpec(c).vickers.has_value());
+    c = contact();
+    c.set("model", std::string("boundaryElement")).set("synthesize", std::uint64_t(64)).set("mirror", true);
+    EXPECT_NE(messageOf([&] { readInterfaceSpec(c); }, "--mirror").find("is for areal maps"), std::string::npos);
+    c = contact();
+    c.set("model", std::string("boundaryElement")).set("synthesize", std::uint64_t(64)).set("microhardness", 1e9);
+    EXPECT_NE(messageOf([&] { readInterfaceSpec(c); }, "--microhardness").find("takes 'hardness'"), std::string::npos);
+    c.set("check", true); // the check's laws take it
+    EXPECT_EQ(*readInterfaceSpec(c).microhardness, 1e9);
+    c = contact();
+    c.set("model", std::string("boundaryElement")).set("synthesize", std::uint64_t(64)).set("conductance",
+                                                                                           std::string("mikic"));
+    EXPECT_NE(messageOf([&] { readInterfaceSpec(c); }, "--conductance").find("no place beside it"), std::string::npos);
 }

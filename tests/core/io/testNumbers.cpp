@@ -3,6 +3,7 @@
 // as under "C" (issue 18, item 8: strtod followed the process's locale, so a program that set
 // de_DE.UTF-8 read "8.2477e-08" as 8), and without a floating-point trap on overflow (this
 // main traps as OpenFOAM does).
+#include "roughContact/Error.hpp"
 #include "roughContact/io/Numbers.hpp"
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/surface/Profile.hpp"
@@ -126,4 +127,26 @@ TEST(Numbers, TheSameUnderACommaDecimalLocale)
     EXPECT_EQ(p.heights(), reference.heights());
     EXPECT_EQ(p.spacing(), reference.spacing());
     std::remove(file.c_str());
+}
+
+TEST(Numbers, WholeNumbersInDecimalDigitsOnly)
+{
+    // The one reading of a whole number written as text (the CLI's --synthesize N,SEED, a
+    // SpecValues' whole()): 0 .. 2^64 - 1 exactly, nothing else.
+    EXPECT_EQ(parseWholeNumber("0", "n", "N"), 0u);
+    EXPECT_EQ(parseWholeNumber("18446744073709551615", "n", "N"), 18446744073709551615ull);
+    const auto message = [](const std::string& text) {
+        try {
+            parseWholeNumber(text, "--seed", "the seed");
+        } catch (const ParameterError& e) {
+            EXPECT_EQ(e.parameter(), "--seed");
+            return e.message();
+        }
+        return std::string("accepted");
+    };
+    for (const char* bad : {"", "-1", "+1", "1e3", "8.5", " 8", "8 ", "0x10", "x"}) {
+        EXPECT_EQ(message(bad), std::string("the seed must be a whole number of decimal digits, got '") + bad + "'");
+    }
+    EXPECT_EQ(message("18446744073709551616"),
+              "the seed 18446744073709551616 is beyond the largest, 2^64 - 1 = 18446744073709551615");
 }

@@ -180,9 +180,7 @@ BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
     : periodic_(spec.synthesize ? true : spec.periodic.value_or(false)), surface_(solvedSurface(spec))
 {
     mirrored_ = spec.mirror.value_or(false);
-    if (mirrored_ && spec.synthesize) {
-        throw ParameterError("mirror", "is for areal maps; a synthesized surface is periodic already");
-    }
+    requireMirrorOfMaps(spec.surfaces, mirrored_);
     (void)edgesOf(periodic_, mirrored_); // periodic and mirror: refused before the key is made
     if (spec.model != "boundaryElement") {
         throw ParameterError("model", "a boundary-element table is for model boundaryElement, not '" +

@@ -99,6 +99,71 @@ void requireOneOrTwo(const std::vector<SurfaceSpec>& surfaces)
 }
 } // namespace
 
+namespace {
+bool allAreal(const std::vector<SurfaceSpec>& surfaces)
+{
+    return std::all_of(surfaces.begin(), surfaces.end(),
+                       [](const SurfaceSpec& s) { return s.kind == SurfaceSpec::Kind::areal; });
+}
+} // namespace
+
+void requireMirrorOfMaps(const std::vector<SurfaceSpec>& surfaces, bool mirror)
+{
+    if (mirror && !allAreal(surfaces)) {
+        throw ParameterError("mirror", "is for areal maps; a surface synthesized from a 1-D description is periodic "
+                                       "already");
+    }
+}
+
+void InterfaceSpec::checkEntries() const
+{
+    const bool exact = model == "boundaryElement";
+    if (exact && !conductanceLaw.empty()) {
+        throw ParameterError("conductance", "model boundaryElement gives the exact conductance of its contact spots; a "
+                                            "conductance law ('" + conductanceLaw + "') has no place beside it: remove it");
+    }
+    // microhardness and vickers are the laws' (vickers cooperMikicYovanovich's): the chosen law's,
+    // or the check's, which computes every law beside the chosen one or the exact model.
+    if (exact && microhardness && !check) {
+        throw ParameterError("microhardness", "is for the conductance laws and the gap's separation; model "
+                                              "boundaryElement takes 'hardness' (its plastic cap) instead");
+    }
+    const bool otherLaw = !conductanceLaw.empty() && conductanceLaw != "cooperMikicYovanovich";
+    if (vickers && !check && (exact || otherLaw)) {
+        throw ParameterError("vickers", "is for the conductance law cooperMikicYovanovich" +
+                                            (exact ? std::string("; model boundaryElement takes 'hardness' (its "
+                                                                 "plastic cap) instead")
+                                                   : ", not " + conductanceLaw));
+    }
+    if (exact || check) {
+        requireMirrorOfMaps(surfaces, mirror.value_or(false)); // the solve's, or the check's
+    }
+    if (exact) {
+        return;
+    }
+    // periodic and mirror also say how the check (SurfaceCheck.hpp) solves a map, and detrend how
+    // it detrends what it solves, so they are taken with it: periodic and mirror for areal maps
+    // only (the check synthesizes periodic surfaces from a 1-D description), and not both.
+    const bool ofCheckedMaps = check && !surfaces.empty() && allAreal(surfaces);
+    if (ofCheckedMaps) {
+        (void)edgesOf(periodic.value_or(false), mirror.value_or(false));
+    }
+    for (const auto& [given, what] : {std::pair<bool, const char*>{synthesize.has_value(), "synthesize"},
+                                      {periodic.has_value() && !ofCheckedMaps, "periodic"},
+                                      {mirror.has_value() && !ofCheckedMaps, "mirror"},
+                                      {detrend.has_value() && !check, "detrend"},
+                                      {hardness.has_value(), "hardness"},
+                                      {hardnessFromYield, "hardnessFromYield"}}) {
+        if (given) {
+            const bool ofTheCheck = std::string(what) == "periodic" || std::string(what) == "mirror" ||
+                                    std::string(what) == "detrend";
+            throw ParameterError(what, std::string("is for model boundaryElement") +
+                                           (ofTheCheck ? " (or the check of an areal map)" : "") + ", not " +
+                                           model);
+        }
+    }
+}
+
 std::optional<HeightSkewness> equivalentSkewness(const std::vector<SurfaceSpec>& surfaces)
 {
     requireOneOrTwo(surfaces);
@@ -144,17 +209,8 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
     : surface_(equivalentSurface(spec.surfaces)), materials_(ContactMaterials::pair(spec.side1, spec.side2, "side1", "side2")),
       modelName_(spec.model)
 {
+    spec.checkEntries();
     if (spec.model == "boundaryElement") {
-        if (!spec.conductanceLaw.empty()) {
-            throw ParameterError("conductance", "model boundaryElement gives the exact conductance of its "
-                                                "contact spots; a conductance law ('" +
-                                                    spec.conductanceLaw + "') has no place beside it: remove it");
-        }
-        if (spec.microhardness || spec.vickers) {
-            throw ParameterError(spec.microhardness ? "microhardness" : "vickers",
-                                 "is for the conductance law cooperMikicYovanovich; model boundaryElement "
-                                 "takes 'hardness' (its plastic cap) instead");
-        }
         conductanceLaw_ = "boundaryElement (exact)";
         const BoundaryElementTable bem(spec);
         const BoundaryElementTablePoints points = boundaryElementTable ? *boundaryElementTable : bem.build();
@@ -179,31 +235,8 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
         buildGap(spec);
         return;
     }
-    // periodic and mirror also say how the check (check: SurfaceCheck.hpp) solves a map, and
-    // detrend how it detrends what it solves, so they are taken with it: periodic and mirror
-    // for areal maps only (the check synthesizes periodic surfaces from a 1-D description), and
-    // not both.
-    const bool maps = !spec.surfaces.empty() && std::all_of(spec.surfaces.begin(), spec.surfaces.end(), [](const SurfaceSpec& s) {
-        return s.kind == SurfaceSpec::Kind::areal;
-    });
-    const bool ofCheckedMaps = spec.check && maps;
-    if (ofCheckedMaps) {
-        (void)edgesOf(spec.periodic.value_or(false), spec.mirror.value_or(false));
-    }
-    for (const auto& [given, what] : {std::pair<bool, const char*>{spec.synthesize.has_value(), "synthesize"},
-                                      {spec.periodic.has_value() && !ofCheckedMaps, "periodic"},
-                                      {spec.mirror.has_value() && !ofCheckedMaps, "mirror"},
-                                      {spec.detrend.has_value() && !spec.check, "detrend"},
-                                      {spec.hardness.has_value(), "hardness"},
-                                      {spec.hardnessFromYield, "hardnessFromYield"},
-                                      {boundaryElementTable != nullptr, "boundary-element table"}}) {
-        if (given) {
-            const bool ofTheCheck = std::string(what) == "periodic" || std::string(what) == "mirror" ||
-                                    std::string(what) == "detrend";
-            throw ParameterError(what, std::string("is for model boundaryElement") +
-                                           (ofTheCheck ? " (or the check of an areal map, check yes;)" : "") + ", not " +
-                                           spec.model);
-        }
+    if (boundaryElementTable != nullptr) {
+        throw ParameterError("boundary-element table", "is for model boundaryElement, not " + spec.model);
     }
     if (!isMultiscaleModel(spec.model)) {
         std::string names;

@@ -132,7 +132,24 @@ struct InterfaceSpec {
     /// of this entry's boundary-element table (BoundaryElementTable::sharingRanks); unset: all,
     /// as many as the loads and the memory allow. ContactInterface does not use it.
     std::optional<std::size_t> tableRanks;
+
+    /// The rules of the model with the entries that belong to another, one place for every
+    /// front-end (the reader ends with it; ContactInterface runs it for a spec built in C++):
+    /// boundaryElement takes no conductance law, and no microhardness or vickers but for the
+    /// check, which computes every law (its cap is 'hardness'); vickers is for the law
+    /// cooperMikicYovanovich (refused beside another law named, but for the check's column of
+    /// it); mirror is for areal maps
+    /// (requireMirrorOfMaps); any other model takes no synthesize, hardness or
+    /// hardnessFromYield, and periodic, mirror and detrend only with check (periodic and mirror
+    /// of an areal map's check, not both). ParameterError naming the entry as written here
+    /// ("synthesize"); a reader renames it to the source's name.
+    void checkEntries() const;
 };
+
+/// mirror (solve an areal map mirrored about its edges) is for areal maps: a surface synthesized
+/// from a 1-D description is periodic already. ParameterError "mirror" when `mirror` is set and
+/// a surface is not an areal map.
+void requireMirrorOfMaps(const std::vector<SurfaceSpec>& surfaces, bool mirror);
 
 /// The equivalent surface of one or two surfaces: the spectrum of one, the combination of two
 /// (Spectrum::combine, seed §2.1). ParameterError for none or more than two.

@@ -60,9 +60,12 @@ InterfaceCurves interfaceCurves(const SurfaceCheckInputs& in, const std::vector<
 /// grid a picture draws its curves on.
 std::vector<double> logSpacedPressures(double low, double high, std::size_t n);
 
+/// The points of a picture's curves, unless asked otherwise: smooth on a log axis.
+inline constexpr std::size_t defaultPlotPoints = 60;
+
 /// The pressures a picture draws its curves on: n log-spaced from `low` to `high` [Pa], a decade
 /// each way of a single pressure, and with `marked` points at the ends (a check's) a factor of 1.5
 /// beyond them so that the points are not cut by the frame.
-std::vector<double> plotPressures(double low, double high, bool marked, std::size_t n);
+std::vector<double> plotPressures(double low, double high, bool marked, std::size_t n = defaultPlotPoints);
 
 } // namespace roughContact

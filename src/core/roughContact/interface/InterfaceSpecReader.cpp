@@ -485,6 +485,13 @@ void readInterfaceSettings(const SpecSource& source, InterfaceSpec& spec)
         }
         spec.tableRanks = static_cast<std::size_t>(r);
     }
+    // The model's rules with the entries of another (InterfaceSpec::checkEntries, once), each
+    // error naming the entry as this source writes it.
+    try {
+        spec.checkEntries();
+    } catch (const ParameterError& e) {
+        throw ParameterError(source.has(e.parameter()) ? source.name(e.parameter()) : e.parameter(), e.message());
+    }
 }
 
 } // namespace roughContact

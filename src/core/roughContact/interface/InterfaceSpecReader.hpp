@@ -10,9 +10,10 @@
 //  - whole numbers (stride, synthesize, seed, pointsPerDecade, which goes to the table of the
 //    model named), lists of two (accommodation, emissivity, vickers), scan length > 0;
 //  - the value checks of each part (checkMaterial, checkGapSpec), whose errors name the part.
-// Rules about the combination of a model with its entries (boundaryElement's synthesize,
-// periodic, hardness; a conductance law beside it) are ContactInterface's and
-// BoundaryElementTable's, which every front-end reaches through the spec alike.
+// The rules of a model with the entries of another (boundaryElement's synthesize, periodic,
+// hardness; a conductance law or vickers beside it; mirror of a map) are
+// InterfaceSpec::checkEntries (ContactInterface.hpp), which the reader ends with, naming the
+// entry as the source writes it; ContactInterface runs them too, for a spec built in C++.
 // Every error is a ParameterError whose parameter() is the source's name of the entry.
 #pragma once
 
@@ -56,7 +57,8 @@ InterfaceSpec readInterfaceSpec(const SpecSource& source);
 /// The entries of a specification besides its parts (surface/surfaces, side1, side2, gap): model,
 /// conductance, microhardness, vickers, the table's range and points, the boundary-element
 /// entries and check, into `spec` (readInterfaceSpec's; for a front-end that holds the parts as
-/// objects: Python). Does not check that every entry is known.
+/// objects: Python, the CLI). Does not check that every entry is known; ends with
+/// spec.checkEntries(), so `spec`'s parts (surfaces) are to be set before.
 void readInterfaceSettings(const SpecSource& source, InterfaceSpec& spec);
 
 } // namespace roughContact

@@ -5,7 +5,6 @@
 #include "roughContact/io/Numbers.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 
 namespace roughContact {
@@ -116,13 +115,7 @@ std::uint64_t SpecValues::whole(const std::string& key) const
         return *n;
     }
     if (const auto* s = std::get_if<std::string>(&v)) {
-        std::uint64_t n = 0;
-        const char* end = s->data() + s->size();
-        const std::from_chars_result r = std::from_chars(s->data(), end, n);
-        if (s->empty() || r.ptr != end || r.ec != std::errc()) {
-            throw ParameterError(name(key), "expects a whole number 0 .. 2^64 - 1 in decimal digits, got '" + *s + "'");
-        }
-        return n;
+        return parseWholeNumber(*s, name(key), "the value");
     }
     const double d = number(key);
     // Exact in a double up to 2^53; beyond, a whole number is given as text or uint64.

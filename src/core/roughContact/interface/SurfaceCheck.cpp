@@ -492,10 +492,7 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
            << (mirrored ? ", mirrored)" : periodic ? ", periodic)" : ", non-periodic)");
         out.surface = os.str();
     } else {
-        if (spec.mirror.value_or(false)) {
-            throw ParameterError("mirror", "is for areal maps; a surface synthesized from a 1-D description is "
-                                           "periodic already");
-        }
+        requireMirrorOfMaps(spec.surfaces, spec.mirror.value_or(false));
         limits::requireSynthesisSize(names.gridSize, n);
         requireLightLoadPeriods(options.lightLoadPeriods, names.lightLoadPeriods);
         onePart = Part{cut(given), {}, {}};

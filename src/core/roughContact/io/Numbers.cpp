@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/io/Numbers.hpp"
 
+#include "roughContact/Error.hpp"
 #include "roughContact/FloatingPoint.hpp"
 
 #include <locale.h>
@@ -65,6 +66,21 @@ std::string formatNumber(double v, int significantDigits)
     const std::to_chars_result r =
         std::to_chars(buffer, buffer + sizeof buffer, v, std::chars_format::general, significantDigits);
     return std::string(buffer, r.ptr);
+}
+
+std::uint64_t parseWholeNumber(std::string_view text, const std::string& name, const std::string& what)
+{
+    std::uint64_t v = 0;
+    const char* end = text.data() + text.size();
+    const std::from_chars_result r = std::from_chars(text.data(), end, v);
+    if (text.empty() || r.ptr != end || r.ec == std::errc::invalid_argument) {
+        throw ParameterError(name, what + " must be a whole number of decimal digits, got '" + std::string(text) + "'");
+    }
+    if (r.ec == std::errc::result_out_of_range) {
+        throw ParameterError(name, what + " " + std::string(text) +
+                                       " is beyond the largest, 2^64 - 1 = 18446744073709551615");
+    }
+    return v;
 }
 
 } // namespace roughContact

@@ -5,6 +5,7 @@
 // raising a floating-point flag on the way (OpenFOAM runs with overflow traps on: FloatingPoint.hpp).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -18,6 +19,12 @@ namespace roughContact {
 /// smallest gives 0 or a subnormal (which is what the text means). Raises no floating-point
 /// flag (a trapped overflow would be a SIGFPE) and never throws.
 bool parseNumber(std::string_view text, double& value);
+
+/// A whole number 0 .. 2^64 - 1 written in decimal digits only (no sign, fraction, exponent or
+/// whitespace): the one reading of a count, a grid size or a seed written as text, for every
+/// front-end. ParameterError naming `name`, saying `what` it is ("the seed SEED") and quoting
+/// the text, for anything else, and for a number beyond 2^64 - 1.
+std::uint64_t parseWholeNumber(std::string_view text, const std::string& name, const std::string& what);
 
 /// v with the given significant digits (1 to 17), as printf's "%.*g" writes it in the "C"
 /// locale ("0.10000000000000001", "1e+21", "inf", "nan"). 17 digits read back exactly.
