@@ -187,11 +187,12 @@ void Foam::thermalContactCoupling::couple
             warnedInput |= (1 << k);
         }
     }
-    // The regime at the faces' pressures, summed over processors, when the
-    // core's log says it is due.
+    // The regime at the faces' pressures, summed over processors: their
+    // pressures at every evaluation, h's parts only when the core's log says
+    // it is due (the same on every processor: it is of the reduced sums).
     roughContact::FaceSums s;
-    s.add(out);
-    scalar counts[3] = {scalar(s.inContact), scalar(s.complete), scalar(s.faces)};
+    s.addPressures(out);
+    scalar counts[2] = {scalar(s.inContact), scalar(s.faces)};
     for (scalar& c : counts)
     {
         reduce(c, sumOp<scalar>());
@@ -199,22 +200,25 @@ void Foam::thermalContactCoupling::couple
     reduce(s.pressureMin, minOp<scalar>());
     reduce(s.pressureMax, maxOp<scalar>());
     reduce(s.pressureSum, sumOp<scalar>());
-    reduce(s.contactSum, sumOp<scalar>());
-    reduce(s.gasSum, sumOp<scalar>());
-    reduce(s.radiationSum, sumOp<scalar>());
     s.inContact = std::size_t(counts[0]);
-    s.complete = std::size_t(counts[1]);
-    s.faces = std::size_t(counts[2]);
+    s.faces = std::size_t(counts[1]);
     // check yes: made once, at the first evaluation, at the faces' pressures
     // unless the entry gives checkPressures.
     contactInterfaces::New(runTime).checkOnce
     (
         settings.contactKey, who(), s.pressuresToCheck()
     );
-    const std::string regime = regimeLog.update(*settings.interface, s);
-    if (!regime.empty())
+    if (regimeLog.due(s))
     {
+        s.addConductances(out);
+        scalar complete = scalar(s.complete);
+        reduce(complete, sumOp<scalar>());
+        reduce(s.contactSum, sumOp<scalar>());
+        reduce(s.gasSum, sumOp<scalar>());
+        reduce(s.radiationSum, sumOp<scalar>());
+        s.complete = std::size_t(complete);
         Info<< "thermalContactResistance: " << who().c_str() << ": "
-            << regime.c_str() << endl;
+            << roughContact::FaceRegimeLog::describe(*settings.interface, s).c_str()
+            << endl;
     }
 }

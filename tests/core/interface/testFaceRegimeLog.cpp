@@ -195,3 +195,30 @@ TEST(FaceRegimeLog, PressuresNearTheLargestDoubleAreSaidWithoutOverflow)
     FaceRegimeLog log;
     EXPECT_NE(log.update(dry(), s), "");
 }
+
+TEST(FaceRegimeLog, PressuresDecideAndHsPartsAreAddedOnlyWhenDue)
+{
+    // The condition adds the faces' pressures at every evaluation and h's parts only when the log
+    // is due (FaceSums::addPressures, addConductances): together they are add(), and due() reads
+    // the pressures alone, so a log fed that way says what update() says of the whole sums.
+    const CouplingOutputs out = faces({0.0, 1e6, 3e6, 5e6}, {0.0, 2e4, INFINITY, 5e4}, {10.0, 20.0, 30.0, 40.0},
+                                      {1.0, 2.0, 3.0, 4.0});
+    FaceSums whole;
+    whole.add(out);
+    FaceSums parts;
+    parts.addPressures(out);
+    EXPECT_EQ(parts.faces, 4U);
+    EXPECT_EQ(parts.inContact, 3U);
+    EXPECT_EQ(parts.pressureMax, 5e6);
+    EXPECT_EQ(parts.contactSum, 0.0) << "h's parts are not read for the decision";
+    FaceRegimeLog byParts;
+    FaceRegimeLog byWhole;
+    ASSERT_TRUE(byParts.due(parts));
+    parts.addConductances(out);
+    EXPECT_EQ(parts.complete, whole.complete);
+    EXPECT_EQ(parts.contactSum, whole.contactSum);
+    EXPECT_EQ(parts.gasSum, whole.gasSum);
+    EXPECT_EQ(parts.radiationSum, whole.radiationSum);
+    EXPECT_EQ(FaceRegimeLog::describe(dry(), parts), byWhole.update(dry(), whole));
+    EXPECT_FALSE(byParts.due(parts)) << "the same pressures: not due again";
+}

@@ -15,8 +15,14 @@ namespace roughContact {
 
 void FaceSums::add(const CouplingOutputs& out)
 {
+    addPressures(out);
+    addConductances(out);
+}
+
+void FaceSums::addPressures(const CouplingOutputs& out)
+{
+    faces += out.state.size();
     for (std::size_t i = 0; i < out.state.size(); ++i) {
-        ++faces;
         const double P = out.pressure[i];
         if (out.state[i] != FaceState::apart && P > 0.0) {
             ++inContact;
@@ -24,6 +30,12 @@ void FaceSums::add(const CouplingOutputs& out)
             pressureMax = std::max(pressureMax, P);
             pressureSum += P * pressureScale;
         }
+    }
+}
+
+void FaceSums::addConductances(const CouplingOutputs& out)
+{
+    for (std::size_t i = 0; i < out.state.size(); ++i) {
         if (!std::isfinite(out.contactConductance[i])) {
             ++complete;
             continue;
@@ -68,8 +80,13 @@ FaceRegimeLog::FaceRegimeLog(double factor) : factor_(factor)
 
 std::string FaceRegimeLog::update(const ContactInterface& iface, const FaceSums& all)
 {
+    return due(all) ? describe(iface, all) : std::string();
+}
+
+bool FaceRegimeLog::due(const FaceSums& all)
+{
     if (all.inContact == 0) {
-        return {};
+        return false;
     }
     const std::array<double, 3> now{all.pressureMin, all.meanPressure(), all.pressureMax};
     if (said_) {
@@ -80,11 +97,11 @@ std::string FaceRegimeLog::update(const ContactInterface& iface, const FaceSums&
             moved = moved || ratio > factor_ * (1.0 + 1e-9) || ratio < 1.0 / (factor_ * (1.0 + 1e-9));
         }
         if (!moved) {
-            return {};
+            return false;
         }
     }
     said_ = now;
-    return describe(iface, all);
+    return true;
 }
 
 std::string FaceRegimeLog::describe(const ContactInterface& iface, const FaceSums& all)

@@ -34,8 +34,14 @@ struct FaceSums {
     /// pressureSum's scale, 2^-64: a sum of pressures up to the largest double stays finite.
     static constexpr double pressureScale = 1.0 / 18446744073709551616.0;
 
-    /// Adds the faces of one evaluation (couple()'s outputs).
+    /// Adds the faces of one evaluation (couple()'s outputs): addPressures and addConductances.
     void add(const CouplingOutputs& out);
+    /// Their count and pressures alone (faces, inContact, the pressures): what decides whether
+    /// the log is due, at every evaluation.
+    void addPressures(const CouplingOutputs& out);
+    /// Their h's parts alone (complete and the sums of h_c, h_g, h_r): what the log says, only
+    /// when it is due.
+    void addConductances(const CouplingOutputs& out);
 
     /// The mean pressure of the faces in contact [Pa] (0 with none).
     double meanPressure() const;
@@ -54,8 +60,13 @@ public:
 
     /// The lines to log for the faces of every processor `all`, or "" when the pressures have not
     /// moved by more than the factor since they were last said (nothing either while no face is
-    /// in contact).
+    /// in contact): due(all), then describe.
     std::string update(const ContactInterface& iface, const FaceSums& all);
+
+    /// True (and the pressures taken as said) when the log is due for `all`, of which only the
+    /// counts and pressures are read (FaceSums::addPressures): at the first evaluation with a face
+    /// in contact, and when the min, mean or max pressure has moved by more than the factor.
+    bool due(const FaceSums& all);
 
     /// The lines for `all`, whatever was said before.
     static std::string describe(const ContactInterface& iface, const FaceSums& all);
