@@ -64,15 +64,17 @@ def file_digest(path):
 
 
 class Areal:
-    """A height map as the laws take it (the core's SurfaceSpec.areal, direction both): sigma [m],
-    m (the mean absolute slope of the rows and the columns), the line scans' bandwidth ratio W and
-    first level's share s1, h' (the core's areal rms gradient of that spectrum), the heights'
-    skewness, its spread by chance and the shrunk skewness the default law takes."""
+    """A height map as the laws take it (the core's SurfaceSpec.areal, direction both unless told):
+    sigma [m], m (the mean absolute slope of the rows and the columns), the line scans' bandwidth
+    ratio W and first level's share s1, h' (the core's areal rms gradient of that spectrum), the
+    heights' skewness, its spread by chance and the shrunk skewness the default law takes.
+    direction "x" or "y": what the rows or the columns alone tell, the mean of the profiles one
+    would measure that way (across or along a lay)."""
 
-    def __init__(self, ctx, path, dx, dy=None):
+    def __init__(self, ctx, path, dx, dy=None, direction="both"):
         rc = ctx.rc()
         self.path, self.dx, self.dy = path, dx, dy if dy is not None else dx
-        spec = rc.SurfaceSpec.areal(path, dx=dx, dy=dy, direction="both")
+        spec = rc.SurfaceSpec.areal(path, dx=dx, dy=dy, direction=direction)
         r, k, levels = spec.roughness(), spec.skewness(), spec.read_spectrum()
         self.sigma, self.m = r.sigma, r.mean_absolute_slope
         self.bandwidth, self.s1 = rc.spectral_bandwidth_ratio(levels), rc.first_level_share(levels)

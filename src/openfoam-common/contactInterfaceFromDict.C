@@ -381,6 +381,12 @@ std::shared_ptr<const roughContact::ContactInterface> contactInterfaceFromDict
             iface = std::make_shared<const roughContact::ContactInterface>(spec);
         }
         Info<< "    " << iface->summary().c_str() << nl;
+        const std::string note =
+            roughContact::singleProfileNote(spec.surfaces, "alongLay");
+        if (!note.empty())
+        {
+            Info<< "    note: " << note.c_str() << nl;
+        }
         // What this run uses, so that a run can be traced to its surface (the
         // condition writes the checksum into its field file, too).
         const roughContact::Spectrum& surface = iface->surface();

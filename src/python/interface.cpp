@@ -139,6 +139,9 @@ InterfaceSpec interfaceSpec(const std::vector<SurfaceSpec>& surfaces, const Mate
     s.pointsPerDecade = pointsPerDecade.value_or(s.pointsPerDecade);
     s.bemPointsPerDecade = bemPointsPerDecade.value_or(s.bemPointsPerDecade);
     readInterfaceSettings(v, s);
+    if (const std::string note = singleProfileNote(s.surfaces, "SurfaceSpec.profile(..., along_lay=)"); !note.empty()) {
+        py::module_::import("warnings").attr("warn")(note, py::module_::import("builtins").attr("UserWarning"), 1);
+    }
     return s;
 }
 
@@ -150,16 +153,20 @@ void bindInterface(py::module_& m)
         .def_static(
             "profile",
             [](const std::string& path, std::optional<std::string> units, std::optional<double> spacing,
-               std::optional<std::uint64_t> stride) {
+               std::optional<std::uint64_t> stride, std::optional<std::string> alongLay) {
                 SpecValues v = arguments("SurfaceSpec.profile");
                 v.set("type", std::string("profile")).set("file", path);
+                setIf(v, "alongLay", alongLay);
                 setIf(v, "units", units);
                 setIf(v, "spacing", spacing);
                 setIf(v, "stride", stride); // None: the reader's (every sample)
                 return surfaceOf(v);
             },
             py::arg("path"), py::arg("units") = py::none(), py::arg("spacing") = py::none(), py::arg("stride") = py::none(),
-            "A profile file (read_profile's units and spacing), every stride-th sample.")
+            py::arg("along_lay") = py::none(),
+            "A profile file (read_profile's units and spacing), every stride-th sample; along_lay: a second "
+            "profile of the surface along its lay (path across it), for the isotropic equivalent of the two "
+            "directions.")
         .def_static(
             "spectrum",
             [](const std::string& path, std::optional<double> length) {

@@ -2,6 +2,7 @@
 """ContactInterface from Python: the table the OpenFOAM condition interpolates, from keyword
 arguments; its values at its own pressures are the model's and the law's there."""
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -237,3 +238,34 @@ def test_keywords_left_out_are_the_cores_defaults():
     # The model's rules with the entries of another, named as Python writes them.
     with pytest.raises(rc.ParameterError, match="^hardness_from_yield: is for model boundaryElement"):
         rc.ContactInterface(surfaces=surfaces, side1=STEEL_M, side2=STEEL_M, hardness_from_yield=True)
+
+
+def test_a_profile_along_the_lay_makes_the_isotropic_equivalent(tmp_path):
+    # Issue 53: a profile across the lay with one along it is the isotropic surface of their
+    # averaged line-scan spectrum (docs/theory.md §1.6): z = a cos(kx x) + a cos(ky y), kx = 8 ky,
+    # has the areal rms gradient a sqrt((kx^2 + ky^2)/2), which one profile across overstates.
+    n, dx, a = 1024, 1e-6, 1e-6
+    x = np.arange(n) * dx
+    across = tmp_path / "across.txt"
+    along = tmp_path / "along.txt"
+    np.savetxt(across, np.column_stack([x, a * np.cos(2 * np.pi * 32 * np.arange(n) / n)]))
+    np.savetxt(along, np.column_stack([x, a * np.cos(2 * np.pi * 4 * np.arange(n) / n)]))
+    kx, ky = 2 * np.pi * 32 / (n * dx), 2 * np.pi * 4 / (n * dx)
+    both = rc.SurfaceSpec.profile(str(across), along_lay=str(along))
+    one = rc.SurfaceSpec.profile(str(across))
+    # One profile says what it cannot know (a UserWarning naming along_lay); two directions do not.
+    with pytest.warns(UserWarning, match=r"one profile is taken as a line scan.*along_lay"):
+        rc.ContactInterface(surfaces=[one], side1=STEEL_M, side2=STEEL_M)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        rc.ContactInterface(surfaces=[both], side1=STEEL_M, side2=STEEL_M)
+    r = both.roughness()
+    assert r.sigma == pytest.approx(a / math.sqrt(2), rel=0.01)
+    assert r.mean_absolute_slope == pytest.approx(a * (kx + ky) / math.pi, rel=0.01)
+    assert one.roughness().mean_absolute_slope == pytest.approx(2 * a * kx / math.pi, rel=0.01)
+    two = rc.ContactInterface(surfaces=[both], side1=STEEL_M, side2=STEEL_M)
+    single = rc.ContactInterface(surfaces=[one], side1=STEEL_M, side2=STEEL_M)
+    assert two.surface.source.endswith("along.txt along the lay")
+    assert not np.allclose(two.table_area_fractions[:10], single.table_area_fractions[:10])
+    with pytest.raises(rc.InputError, match="missing.txt: cannot open"):  # named as the file it is
+        rc.SurfaceSpec.profile(str(across), along_lay=str(tmp_path / "missing.txt")).roughness()

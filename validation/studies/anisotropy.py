@@ -29,6 +29,11 @@ SUMMARY = ("# The default law on stretched (anisotropic) surfaces (written by va
            "# per spectrum, regime, stretch g of the y spacing and load p/E', the load x = p/(E' h') with the\n"
            "# stretched surface's h', its m_x/m_y, and the geometric means over seeds 1-4 of the exact h_c/k_s\n"
            "# [1/m] and of the default law over exact (with its min and max over the seeds).\n")
+INPUTS_HEADER = ("# The default law over exact by what it is given of a stretched surface (written by\n"
+                 "# validation/studies/anisotropy.py): per regime, stretch g of the y spacing and input (x: the rows,\n"
+                 "# profiles across the lay; y: the columns, along it; both: the map), the geometric mean, min and\n"
+                 "# max over the spectra, seeds 1-4 and loads, and the min and max of its h over the h of both\n"
+                 "# directions on the same surface and load.\n")
 SURFACES = ("# The surfaces of validation/studies/anisotropy.py: per spectrum, stretch g of the y spacing and\n"
             "# seed, the areal rms gradient h' and the mean absolute slopes along x, y and both (the laws' m).\n")
 
@@ -77,11 +82,13 @@ class Study:
                                   f"anisotropy: synthesize_isotropic of {surrogates.file_digest(spec)} on "
                                   f"{self.design.N}^2, seed {seed}", make)
 
-    def areal(self, name, g, seed):
-        k = (name, g, seed)
+    def areal(self, name, g, seed, direction="both"):
+        """The stretched map as the laws take it: from both directions (the map), or from the rows
+        (x: profiles across the lay) or the columns (y: along it) alone."""
+        k = (name, g, seed, direction)
         if k not in self._areal:
             dx = self.dx[name]
-            self._areal[k] = surrogates.Areal(self.ctx, self.surface(name, seed), dx, g * dx)
+            self._areal[k] = surrogates.Areal(self.ctx, self.surface(name, seed), dx, g * dx, direction)
             rc = self.ctx.rc()
             self._areal[k].slopes = [rc.SurfaceSpec.areal(self._areal[k].path, dx=dx, dy=g * dx, direction=way)
                                      .roughness().mean_absolute_slope for way in ("x", "y")]
@@ -106,10 +113,11 @@ class Study:
                                                 self.loads(regime)))
         return out
 
-    def curve(self, name, regime, g, seed):
-        """[(p/E' asked, the exact row, the default law there)] (the core's law, built-in constants)."""
+    def curve(self, name, regime, g, seed, direction="both"):
+        """[(p/E' asked, the exact row, the default law there)] (the core's law, built-in constants),
+        the law given the map's both directions, or its rows (x) or columns (y) alone."""
         pair = materials.regime_pair(self.ctx, regime)
-        a = self.areal(name, g, seed)
+        a = self.areal(name, g, seed, direction)
         c = self.store.curve(self.key(name, regime, g, seed))
         rows = [solves.at(c, pe) for pe in self.loads(regime)]
         if not all(rows):
@@ -142,6 +150,33 @@ def summary(s):
                                  "exact_h_per_k": f"{geometric_mean(h):.6g}",
                                  "ratio_" + DEFAULT: f"{geometric_mean(ratio):.4f}",
                                  "ratio_min": f"{min(ratio):.4f}", "ratio_max": f"{max(ratio):.4f}"})
+    return rows
+
+
+INPUTS = {"x": "profiles across the lay", "y": "profiles along the lay", "both": "both directions (the map)"}
+
+
+def inputs(s):
+    """The default law over exact when it is given the rows alone (profiles across the lay: the
+    wavelengths along y are g times longer), the columns alone (along it), or both (the map, the
+    isotropic equivalent of the two directions): per regime, stretch and input, over the spectra,
+    seeds and loads."""
+    d = s.design
+    rows = []
+    for regime in d.regimes:
+        for g in d.stretches:
+            law = {direction: [v for name in d.spectra for seed in d.seeds
+                               for _, _, v in s.curve(name, regime, g, seed, direction)] for direction in INPUTS}
+            exact = [float(r["h_per_k_per_m"]) for name in d.spectra for seed in d.seeds
+                     for _, r, _ in s.curve(name, regime, g, seed)]
+            for direction in INPUTS:
+                ratio = [v / e for v, e in zip(law[direction], exact)]
+                # The same surface and load given both directions: what this input alone changes.
+                over = [v / b for v, b in zip(law[direction], law["both"])]
+                rows.append({"regime": regime, "stretch": g, "input": direction, "points": len(ratio),
+                             "ratio_geometric_mean": f"{geometric_mean(ratio):.4f}",
+                             "ratio_min": f"{min(ratio):.4f}", "ratio_max": f"{max(ratio):.4f}",
+                             "over_both_min": f"{min(over):.4f}", "over_both_max": f"{max(over):.4f}"})
     return rows
 
 
@@ -206,6 +241,17 @@ def outputs(ctx):
                           pages.span(heavy)])
         out.table(f"stretch-{regime}", ["g", "x", "seed-loads", "stretched over isotropic", "geometric mean",
                                         f"at x >= {HEAVY:g}"], table)
+    given = inputs(s)
+    out.text("inputs.csv", INPUTS_HEADER + Table(list(given[0]), given).text())
+    for regime in d.regimes:
+        def cell(g, way, regime=regime):
+            r = next(r for r in given if r["regime"] == regime and r["stretch"] == g and r["input"] == way)
+            text = f"{float(r['ratio_geometric_mean']):.2f} ({float(r['ratio_min']):.2f}-{float(r['ratio_max']):.2f})"
+            if way != "both":
+                text += f"; x {float(r['over_both_min']):.2f}-{float(r['over_both_max']):.2f} of both"
+            return text
+        out.table(f"inputs-{regime}", ["g"] + list(INPUTS.values()),
+                  [[g] + [cell(g, way) for way in INPUTS] for g in d.stretches])
     rc = ctx.rc()
     slopes = [rc.SurfaceSpec.areal(X3P, direction=way).roughness().mean_absolute_slope for way in ("x", "y", "both")]
     out.table("map", ["the X3P map data/x3p-2.x3p", "along x", "along y", "both (the laws' m)"],

@@ -292,7 +292,7 @@ void checkOutputFile(const Options& o, const std::string& path, const std::strin
 {
     namespace fs = std::filesystem;
     std::error_code ec;
-    for (const std::vector<std::string>* inputs : {&o.areals, &o.profiles, &o.spectra}) {
+    for (const std::vector<std::string>* inputs : {&o.areals, &o.profiles, &o.profilesAlong, &o.spectra}) {
         for (const std::string& input : *inputs) {
             if (fs::equivalent(fs::path(path), fs::path(input), ec)) {
                 throw ParameterError(option, "'" + path + "' is an input of this run (" + input +

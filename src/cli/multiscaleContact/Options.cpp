@@ -97,6 +97,12 @@ void addOptions(CLI::App& app, Options& o)
         ->delimiter(',')
         ->expected(2, 4);
     surface->require_option(1);
+    app.add_option("--profile-along", o.profilesAlong,
+                   "a profile of the same surface along its lay, the --profile being across it (ISO 4288): "
+                   "the surface is then the isotropic equivalent of the two directions; with two --profile, "
+                   "the first --profile-along goes with the first")
+        ->expected(1, 2)
+        ->check(CLI::ExistingFile);
 
     app.add_option("--units", o.units,
                    "units of profile and --areal matrix files: m (default), um or nm; a Dektak export's "

@@ -14,6 +14,7 @@ namespace multiscaleContact {
 
 struct Options {
     std::vector<std::string> profiles;
+    std::vector<std::string> profilesAlong; ///< --profile-along: the i-th --profile's along its lay
     std::vector<std::string> areals;
     std::vector<std::string> spectra;
     std::vector<double> powerLaw; // b_m, m, fmin, fmax

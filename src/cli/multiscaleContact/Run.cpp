@@ -58,6 +58,8 @@ namespace {
 /// Up to this many pressures the regime is said at each; beyond, at the lightest and heaviest.
 constexpr std::size_t maxRegimeLines = 12;
 
+int runCurve(const Options& o);
+
 } // namespace
 
 int run(const Options& o)
@@ -91,15 +93,31 @@ int run(const Options& o)
         requireReplaceable(o.plot, "--plot", "PNG picture", isPngStart); // before anything is computed
         requireGnuplot("--plot");
     }
+    // What one profile cannot tell, said once after a run that succeeded.
+    const std::string note = singleProfileNote(surfaceSpecsOf(o), "--profile-along");
+    const auto noted = [&](int status) {
+        if (status == 0 && !note.empty()) {
+            std::cerr << "multiscaleContact: note: " << note << std::endl;
+        }
+        return status;
+    };
     if (o.check) {
-        return runCheck(o);
+        return noted(runCheck(o));
     }
     if (!o.table.empty()) {
-        return runTable(o);
+        return noted(runTable(o));
     }
     if (o.model == "boundaryElement") {
-        return runBoundaryElement(o);
+        return noted(runBoundaryElement(o));
     }
+    return noted(runCurve(o));
+}
+
+namespace {
+
+// The load curve of a multi-scale or comparison model (run's default).
+int runCurve(const Options& o)
+{
     const std::optional<GapInputs> gapInputs = gapOf(o);
     // The model's rules with the entries of another (--synthesize, --periodic, --mirror,
     // --detrend; --vickers beside another law): the core's, through the specification.
@@ -372,5 +390,7 @@ int run(const Options& o)
     }
     return 0;
 }
+
+} // namespace
 
 } // namespace multiscaleContact

@@ -105,8 +105,15 @@ std::vector<SurfaceSpec> surfaceSpecsOf(const Options& o)
         surfaces.push_back(v);
         return &surfaces.back();
     };
-    for (const std::string& f : o.profiles) {
-        add("profile", "--profile", f);
+    if (o.profilesAlong.size() > o.profiles.size()) {
+        throw ParameterError("--profile-along", "is a profile along the lay of a --profile's surface; give one "
+                                                "--profile (across the lay) for each");
+    }
+    for (std::size_t i = 0; i < o.profiles.size(); ++i) {
+        SpecValues* v = add("profile", "--profile", o.profiles[i]);
+        if (i < o.profilesAlong.size()) {
+            v->set("alongLay", o.profilesAlong[i], "--profile-along");
+        }
     }
     for (const std::string& f : o.areals) {
         add("areal", "--areal", f);

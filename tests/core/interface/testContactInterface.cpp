@@ -19,9 +19,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <random>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -350,4 +353,112 @@ TEST(ContactInterface, ArealSurface)
     s.length.reset();
     s.arealOptions.dx = 1e-6;
     EXPECT_THROW(ContactInterface{spec}, ParameterError);
+}
+
+TEST(SurfaceSpec, ProfilesAcrossAndAlongTheLayAreTheIsotropicEquivalent)
+{
+    // z(x, y) = a cos(2 pi 32 x/L) + a cos(2 pi 4 y/L): a lay along y, features 8 times longer
+    // along it. Its areal rms gradient is sqrt(a^2/2 (kx^2 + ky^2)) (docs/theory.md §1.6). The
+    // profile across the lay (along x) alone, taken as a line scan of an isotropic surface, says
+    // sqrt(2) times its own rms slope, a kx: too rough. Across and along together (alongLay) the
+    // averaged line-scan spectrum gives the surface's areal gradient; the 1 % is the detrending
+    // of a finite profile (its tilt fit takes a little of the cosine's power).
+    const roughContactTest::TempDir dir;
+    const std::size_t n = 1024;
+    const double dx = 1e-6;
+    const double L = double(n) * dx;
+    const double a = 1e-6;
+    const double pi = std::acos(-1.0);
+    const auto write = [&](const std::string& name, int periods) {
+        const std::string path = (dir.path() / name).string();
+        std::ofstream out(path);
+        out.precision(17);
+        for (std::size_t i = 0; i < n; ++i) {
+            out << double(i) * dx << ' ' << a * std::cos(2.0 * pi * periods * double(i) / double(n)) << '\n';
+        }
+        return path;
+    };
+    SurfaceSpec across;
+    across.kind = SurfaceSpec::Kind::profile;
+    across.file = write("across.txt", 32);
+    SurfaceSpec both = across;
+    both.alongLay = write("along.txt", 4);
+    const double kx = 2.0 * pi * 32.0 / L;
+    const double ky = 2.0 * pi * 4.0 / L;
+    const double areal = std::sqrt(0.5 * a * a * (kx * kx + ky * ky));
+    const double fromBoth = arealRmsGradient(spectralMoments(both.spectrum()));
+    const double fromAcross = arealRmsGradient(spectralMoments(across.spectrum()));
+    EXPECT_NEAR(fromBoth, areal, 0.01 * areal);
+    EXPECT_NEAR(fromAcross, a * kx, 0.01 * a * kx);
+    EXPECT_GT(fromAcross / fromBoth, 1.39); // sqrt(2 * 64/65) = 1.403: what one profile overstates
+    // The variance is the surface's (both profiles see a^2/2), the mean absolute slope the mean of
+    // the two directions' (2 a k/pi each), as an areal map's `direction both`.
+    const SurfaceRoughness r = both.roughness();
+    EXPECT_NEAR(r.sigma, a / std::sqrt(2.0), 0.01 * a);
+    EXPECT_NEAR(r.meanAbsoluteSlope, (a * kx + a * ky) / pi, 0.01 * (a * kx + a * ky) / pi);
+    EXPECT_TRUE(both.skewness().has_value());
+    // Only a profile has a second direction.
+    SurfaceSpec map;
+    map.kind = SurfaceSpec::Kind::areal;
+    map.file = std::string(ROUGHCONTACT_SOURCE_DIR) + "/data/x3p-2.x3p";
+    map.alongLay = both.alongLay;
+    try {
+        map.check();
+        ADD_FAILURE() << "alongLay taken on an areal map";
+    } catch (const ParameterError& e) {
+        EXPECT_EQ(e.parameter(), "alongLay");
+        EXPECT_NE(e.message().find("direction both"), std::string::npos) << e.what();
+    }
+}
+
+TEST(SurfaceSpec, OneProfileSaysWhatItCannotKnow)
+{
+    // A single profile (no alongLay) gets the note, naming the front-end's option; a profile with
+    // its second direction, an areal map and a spectrum do not.
+    SurfaceSpec one;
+    one.kind = SurfaceSpec::Kind::profile;
+    one.file = standin;
+    SurfaceSpec two = one;
+    two.alongLay = standin;
+    SurfaceSpec map;
+    map.kind = SurfaceSpec::Kind::areal;
+    const std::string note = singleProfileNote({one}, "--profile-along");
+    EXPECT_NE(note.find("up to 1.7 times too high"), std::string::npos) << note;
+    EXPECT_NE(note.find("(--profile-along)"), std::string::npos) << note;
+    EXPECT_EQ(singleProfileNote({two}, "x"), "");
+    EXPECT_EQ(singleProfileNote({map}, "x"), "");
+    EXPECT_NE(singleProfileNote({map, one}, "x"), "") << "one of two sides a single profile";
+}
+
+TEST(SurfaceSpec, TheNotesFactorIsTheAnisotropyStudys)
+{
+    // singleProfileOverstatement is the largest h that profiles across the lay give over the h
+    // of both directions, in the anisotropy study's generated table (docs/validation/anisotropy.md).
+    std::ifstream in(std::string(ROUGHCONTACT_SOURCE_DIR) + "/docs/validation/generated/anisotropy/inputs.csv");
+    ASSERT_TRUE(in) << "the study's inputs.csv";
+    std::string line;
+    std::vector<std::string> header;
+    double largest = 0.0;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#') {
+            continue;
+        }
+        std::vector<std::string> cells;
+        std::stringstream ss(line);
+        for (std::string c; std::getline(ss, c, ',');) {
+            cells.push_back(c);
+        }
+        if (header.empty()) {
+            header = cells;
+            continue;
+        }
+        const auto at = [&](const char* name) {
+            return cells.at(std::size_t(std::find(header.begin(), header.end(), name) - header.begin()));
+        };
+        if (at("input") == "x") {
+            largest = std::max(largest, std::stod(at("over_both_max")));
+        }
+    }
+    ASSERT_GT(largest, 1.0);
+    EXPECT_NEAR(singleProfileOverstatement, largest, 0.05) << "the study's largest is " << largest;
 }

@@ -531,3 +531,16 @@ TEST(InterfaceSpecReader, EndsWithTheModelsRulesNamedAsWritten)
                                                                                            std::string("mikic"));
     EXPECT_NE(messageOf([&] { readInterfaceSpec(c); }, "--conductance").find("no place beside it"), std::string::npos);
 }
+
+TEST(InterfaceSpecReader, AlongLayIsAProfilesSecondDirection)
+{
+    // alongLay: a profile of the surface along its lay (file across it), a path as file is.
+    SpecValues p("surface", dashed);
+    p.set("type", std::string("profile")).set("file", std::string("across.csv")).set("alongLay",
+                                                                                    std::string("along.csv"));
+    EXPECT_EQ(readSurfaceSpec(p).alongLay, "along.csv");
+    SpecValues areal("surface", dashed);
+    areal.set("type", std::string("areal")).set("file", std::string("m.x3p")).set("alongLay", std::string("b.csv"));
+    EXPECT_NE(messageOf([&] { readSurfaceSpec(areal); }, "--alongLay").find("it is for type profile"),
+              std::string::npos);
+}

@@ -3,6 +3,7 @@
 
 #include "roughContact/Error.hpp"
 #include "roughContact/interface/InterfaceSpecReader.hpp"
+#include "roughContact/io/Numbers.hpp"
 #include "roughContact/io/SpectrumReader.hpp"
 #include "roughContact/models/BoundaryElement.hpp"
 #include "roughContact/models/ModelFactory.hpp"
@@ -35,6 +36,11 @@ void SurfaceSpec::check() const
                                        "and ny dy, a roughness surface's its cutoff; it is for a spectrum, power "
                                        "law or fractal");
     }
+    if (!alongLay.empty() && !takes("alongLay")) {
+        throw ParameterError("alongLay", "is a second profile, along the lay of the surface a profile measures "
+                                         "across it; this surface is not a profile (an areal map has both "
+                                         "directions: its 'direction both')");
+    }
     const bool parametric = kind == Kind::powerLaw || kind == Kind::fractal || kind == Kind::roughness;
     if (parametric && parameters.size() != 4) {
         throw ParameterError("parameters", "a " + surfaceTypeNames()[static_cast<std::size_t>(kind)] +
@@ -46,8 +52,14 @@ Spectrum SurfaceSpec::spectrum() const
 {
     check();
     switch (kind) {
-    case Kind::profile:
-        return Spectrum::fromProfile(readProfile(file, profileOptions).subsampled(stride));
+    case Kind::profile: {
+        const Spectrum across = Spectrum::fromProfile(readProfile(file, profileOptions).subsampled(stride));
+        if (alongLay.empty()) {
+            return across;
+        }
+        const Spectrum along = Spectrum::fromProfile(readProfile(alongLay, profileOptions).subsampled(stride));
+        return Spectrum::averaged(across, along, file + " across and " + alongLay + " along the lay");
+    }
     case Kind::areal:
         return lineScanSpectrum(readAreal(file, arealOptions).detrended(), direction);
     case Kind::spectrum:
@@ -68,8 +80,12 @@ SurfaceRoughness SurfaceSpec::roughness() const
 {
     check();
     switch (kind) {
-    case Kind::profile:
-        return profileRoughness(readProfile(file, profileOptions).subsampled(stride));
+    case Kind::profile: {
+        const SurfaceRoughness across = profileRoughness(readProfile(file, profileOptions).subsampled(stride));
+        return alongLay.empty()
+                   ? across
+                   : twoDirectionRoughness(across, profileRoughness(readProfile(alongLay, profileOptions).subsampled(stride)));
+    }
     case Kind::areal:
         return arealRoughness(readAreal(file, arealOptions), direction);
     default:
@@ -81,8 +97,12 @@ std::optional<HeightSkewness> SurfaceSpec::skewness() const
 {
     check();
     switch (kind) {
-    case Kind::profile:
-        return profileSkewness(readProfile(file, profileOptions).subsampled(stride));
+    case Kind::profile: {
+        const HeightSkewness across = profileSkewness(readProfile(file, profileOptions).subsampled(stride));
+        return alongLay.empty()
+                   ? across
+                   : twoDirectionSkewness(across, profileSkewness(readProfile(alongLay, profileOptions).subsampled(stride)));
+    }
     case Kind::areal:
         return arealSkewness(readAreal(file, arealOptions));
     default:
@@ -106,6 +126,23 @@ bool allAreal(const std::vector<SurfaceSpec>& surfaces)
                        [](const SurfaceSpec& s) { return s.kind == SurfaceSpec::Kind::areal; });
 }
 } // namespace
+
+std::string singleProfileNote(const std::vector<SurfaceSpec>& surfaces, const std::string& alongName)
+{
+    const bool single = std::any_of(surfaces.begin(), surfaces.end(), [](const SurfaceSpec& s) {
+        return s.kind == SurfaceSpec::Kind::profile && s.alongLay.empty();
+    });
+    if (!single) {
+        return "";
+    }
+    std::ostringstream os;
+    os << "one profile is taken as a line scan of an isotropic surface; a finish with a lay (ground, turned, "
+          "milled), measured across it as ISO 4288 does, is then rougher than it is, and its h can come out up to "
+       << formatNumber(singleProfileOverstatement, 2)
+       << " times too high (docs/validation/anisotropy.md). Give a profile along the lay too (" << alongName
+       << ") or an areal map; for a finish without a lay this note does not apply";
+    return os.str();
+}
 
 void requireMirrorOfMaps(const std::vector<SurfaceSpec>& surfaces, bool mirror)
 {

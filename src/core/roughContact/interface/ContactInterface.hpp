@@ -33,6 +33,11 @@ struct SurfaceSpec {
     enum class Kind { profile, spectrum, powerLaw, fractal, areal, roughness };
     Kind kind = Kind::profile;
     std::string file;                  ///< profile, spectrum or areal (X3P or matrix) file
+    /// profile: a second profile of the same surface along its lay (`file` then is the one
+    /// across it, as ISO 4288 measures). Given, the surface is the isotropic equivalent of the
+    /// two directions (Spectrum::averaged, twoDirectionRoughness; docs/theory.md §1.6); empty:
+    /// the one profile taken as a line scan of an isotropic surface.
+    std::string alongLay;
     ProfileReadOptions profileOptions; ///< units, spacing of one-column profiles
     ArealReadOptions arealOptions;     ///< areal: units, dx, dy of a matrix; fillInvalid of an X3P
     /// areal: the line scans whose averaged spectrum stands for the surface (lineScanSpectrum
@@ -145,6 +150,18 @@ struct InterfaceSpec {
     /// ("synthesize"); a reader renames it to the source's name.
     void checkEntries() const;
 };
+
+/// How much higher one profile across a lay can make h than the profiles of both directions on
+/// the same surface: the largest of docs/validation/anisotropy.md's "profiles across the lay"
+/// (lay ratio up to 4, capped steel on steel; generated/anisotropy/inputs.csv, which a test holds
+/// this to).
+inline constexpr double singleProfileOverstatement = 1.7;
+
+/// What one profile cannot tell, for a front-end to say once: empty unless a surface is a single
+/// profile (no alongLay), then that a finish with a lay measured across it can be given an h up
+/// to singleProfileOverstatement times too high, and how to avoid it: a profile along the lay
+/// (`alongName`: the front-end's name of alongLay) or an areal map.
+std::string singleProfileNote(const std::vector<SurfaceSpec>& surfaces, const std::string& alongName);
 
 /// mirror (solve an areal map mirrored about its edges) is for areal maps: a surface synthesized
 /// from a 1-D description is periodic already. ParameterError "mirror" when `mirror` is set and

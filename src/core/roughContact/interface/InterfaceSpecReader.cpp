@@ -117,7 +117,7 @@ SurfaceSpec::Kind parseSurfaceKind(const std::string& text, const std::string& w
 
 const std::vector<std::string>& surfaceEntries(SurfaceSpec::Kind kind)
 {
-    static const std::vector<std::string> profile{"type", "file", "units", "spacing", "stride"};
+    static const std::vector<std::string> profile{"type", "file", "alongLay", "units", "spacing", "stride"};
     static const std::vector<std::string> spectrum{"type", "file", "length"};
     static const std::vector<std::string> powerLaw{"type", "bm", "m", "fmin", "fmax", "length"};
     static const std::vector<std::string> fractal{"type", "D", "G", "fmin", "fmax", "length"};
@@ -194,6 +194,9 @@ SurfaceSpec readSurfaceSpec(const SpecSource& source)
     switch (s.kind) {
     case Kind::profile:
         s.file = source.path(required(source, "file", "the profile's file"));
+        if (source.has("alongLay")) {
+            s.alongLay = source.path("alongLay"); // the same units, spacing and stride as file's
+        }
         if (source.has("units")) {
             s.profileOptions.units = named(source, "units", [&] { return parseLengthUnit(source.word("units")); });
         }

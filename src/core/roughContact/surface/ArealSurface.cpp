@@ -226,14 +226,7 @@ Spectrum lineScanSpectrum(const ArealSurface& surface, ScanDirection direction)
     case ScanDirection::y:
         return columns();
     case ScanDirection::both: {
-        // The mean of the two directions' powers: their sum (Spectrum::combine) halved.
-        const Spectrum sum = Spectrum::combine(rows(), columns());
-        std::vector<double> beta = sum.amplitudes();
-        for (double& b : beta) {
-            b *= std::sqrt(0.5);
-        }
-        return Spectrum::withNyquistLevel(sum.frequencies(), std::move(beta), sum.length(),
-                                          name + " (rows and columns)", sum.hasNyquistLevel());
+        return Spectrum::averaged(rows(), columns(), name + " (rows and columns)");
     }
     }
     throw ParameterError("direction", "unknown scan direction");

@@ -222,6 +222,23 @@ SurfaceRoughness combined(const SurfaceRoughness& a, const SurfaceRoughness& b)
     return SurfaceRoughness{std::hypot(a.sigma, b.sigma), std::hypot(a.meanAbsoluteSlope, b.meanAbsoluteSlope)};
 }
 
+SurfaceRoughness twoDirectionRoughness(const SurfaceRoughness& across, const SurfaceRoughness& along)
+{
+    checkRoughness(across);
+    checkRoughness(along);
+    return SurfaceRoughness{std::sqrt(0.5 * (across.sigma * across.sigma + along.sigma * along.sigma)),
+                            0.5 * (across.meanAbsoluteSlope + along.meanAbsoluteSlope)};
+}
+
+HeightSkewness twoDirectionSkewness(const HeightSkewness& across, const HeightSkewness& along)
+{
+    if (!std::isfinite(across.skewness) || !std::isfinite(along.skewness) || !std::isfinite(across.spread) ||
+        !std::isfinite(along.spread)) {
+        throw ParameterError("skewness", "needs finite skewnesses and spreads");
+    }
+    return HeightSkewness{0.5 * (across.skewness + along.skewness), 0.5 * std::hypot(across.spread, along.spread)};
+}
+
 void requireRoughness(const Spectrum& surface)
 {
     const std::string what =

@@ -86,6 +86,11 @@ HeightSkewness arealSkewness(const ArealSurface& surface);
 HeightSkewness combinedSkewness(double sigma1, const HeightSkewness& a, double sigma2,
                                 const HeightSkewness& b);
 
+/// The skewness of one surface from profiles in two directions (across and along its lay): the
+/// mean of the two, its spread that of a mean of two independent estimates,
+/// sqrt(e_a^2 + e_b^2)/2.
+HeightSkewness twoDirectionSkewness(const HeightSkewness& across, const HeightSkewness& along);
+
 /// The surface's skewness with the share chance explains taken out: s (1 - e^2/s^2) where
 /// |s| > e (the spread), else 0. A sample skewness s is the surface's theta plus chance of
 /// variance e^2; with theta and chance Gaussian, theta drawn from a zero-mean spread tau^2, the
@@ -101,5 +106,10 @@ double shrunkSkewness(const HeightSkewness& s);
 /// m = sqrt(m1^2 + m2^2) (Yovanovich, J. Thermophys. Heat Transfer 19 (2005) 379-386, the
 /// "effective" roughness and slope of a joint; see docs/correlations.md). Both checked.
 SurfaceRoughness combined(const SurfaceRoughness& a, const SurfaceRoughness& b);
+
+/// One surface from profiles in two directions (across and along its lay), as an areal map's
+/// `both` directions (arealRoughness): sigma = sqrt((s_a^2 + s_b^2)/2), the mean of the two
+/// variances; m = (m_a + m_b)/2, the mean of the two mean absolute slopes. Both checked.
+SurfaceRoughness twoDirectionRoughness(const SurfaceRoughness& across, const SurfaceRoughness& along);
 
 } // namespace roughContact

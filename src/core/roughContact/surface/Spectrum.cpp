@@ -339,6 +339,17 @@ bool sameGrid(const Spectrum& a, const Spectrum& b)
 }
 } // namespace
 
+Spectrum Spectrum::averaged(const Spectrum& a, const Spectrum& b, std::string source)
+{
+    const Spectrum sum = combine(a, b);
+    std::vector<double> beta = sum.amplitudes();
+    for (double& v : beta) {
+        v *= std::sqrt(0.5);
+    }
+    return withNyquistLevel(sum.frequencies(), std::move(beta), sum.length(), std::move(source),
+                            sum.hasNyquistLevel());
+}
+
 Spectrum Spectrum::combine(const Spectrum& a, const Spectrum& b)
 {
     const std::string source = a.source() + " + " + b.source();

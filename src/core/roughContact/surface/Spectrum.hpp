@@ -42,6 +42,12 @@ public:
     /// conserved exactly.
     static Spectrum combine(const Spectrum& a, const Spectrum& b);
 
+    /// The mean of two line-scan spectra of one surface (two scan directions): their powers
+    /// added (combine) and halved, level by level. Its every moment is the mean of theirs, so
+    /// the isotropic surface it describes has the areal gradient m2_a + m2_b of the surface the
+    /// two were measured on (docs/theory.md §1.6). `source` names it.
+    static Spectrum averaged(const Spectrum& a, const Spectrum& b, std::string source);
+
     std::size_t size() const noexcept { return f_.size(); }
     const std::vector<double>& frequencies() const noexcept { return f_; }
     const std::vector<double>& amplitudes() const noexcept { return beta_; }
