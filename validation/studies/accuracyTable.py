@@ -14,6 +14,7 @@ import math
 import os
 
 from .. import materials, pages
+from ..tables import Table
 
 DATA = []
 TABLE = os.path.join("src", "core", "roughContact", "thermal", "MeasuredAccuracyTable.inc")
@@ -187,8 +188,24 @@ def trust(ctx, rows):
         body.append([words, x, p, f"{short(min(loads))} to {short(max(loads))}" if loads else "-",
                      f"{band['elastic'][0]:.3g}-{band['elastic'][1]:.3g}" if band["elastic"] else "not measured",
                      f"{band['capped'][0]:.3g}-{band['capped'][1]:.3g}" if band["capped"] else "not measured", todo])
+    body.append(lay_row(ctx))
     return pages.markdown_table(["regime", "p/(E' h')", "p [MPa], steel, h' = 0.1", "P/H", "elastic: h / exact",
                                  "yielding: h / exact", "what to do"], body)
+
+
+def lay_row(ctx):
+    """The table's last row: a surface given as one profile across a lay, from the anisotropy
+    study's inputs.csv (the rows alone against both directions, on the same surfaces and loads)."""
+    rows = Table.read(os.path.join(ctx.generated, "anisotropy", "inputs.csv")).rows
+    across = [r for r in rows if r["input"] == "x"]
+    lay = max(int(r["stretch"]) for r in across)
+
+    def span(capped):
+        here = [r for r in across if (r["regime"] != "elastic") == capped]
+        return (f"{min(float(r['over_both_min']) for r in here):.2f}-"
+                f"{max(float(r['over_both_max']) for r in here):.2f} x the two directions' h")
+    return [f"a finish with a lay (up to {lay}:1), one profile across it", "0.001 to 0.1", "-", "-", span(False),
+            span(True), "give a profile along the lay too (`alongLay`) or an areal map"]
 
 
 def decade(a, b):
