@@ -52,6 +52,9 @@ void bindCheck(py::module_& m)
         .def_readonly("hardness", &SurfaceCheck::hardness, "The cap H [Pa], or None (elastic).")
         .def_readonly("reduced_modulus", &SurfaceCheck::reducedModulus, "E' [Pa].")
         .def_readonly("gradient", &SurfaceCheck::gradient, "h': the areal rms gradient of the checked surface.")
+        .def_readonly("lay_stretch", &SurfaceCheck::layStretch,
+                      "The lay ratio of profiles given across and along a lay (their rms slopes' ratio): the "
+                      "checked surfaces are stretched so along y. 1 for an isotropic surface or a map.")
         .def_readonly("levels_kept", &SurfaceCheck::levelsKept, "Levels of the spectrum in the check.")
         .def_readonly("levels_given", &SurfaceCheck::levelsGiven, "Levels of the spectrum given.")
         .def_readonly("light_load_periods", &SurfaceCheck::lightLoadPeriods,

@@ -204,6 +204,18 @@ void bindSurfaces(py::module_& m)
         "N,SEED). n even, 8 to 4096.");
 
     m.def(
+        "synthesize_stretched",
+        [](const Spectrum& across, double stretch, std::size_t n, std::uint64_t seed) {
+            return synthesizeStretched(across, stretch, n, seed);
+        },
+        py::arg("across"), py::arg("stretch"), py::arg("n"), py::arg("seed") = 1,
+        "synthesize_stretched(across, stretch, n, seed=1) -> ArealSurface\n\n"
+        "A finish with a lay along y: synthesize_isotropic(across, n, seed) with its y spacing stretch times "
+        "its x spacing, so its features are stretch times longer along y; the surface the check and "
+        "boundaryElement's synthesize solve for profiles across and along a lay (stretch: their rms "
+        "slopes' ratio).");
+
+    m.def(
         "resample_periodic",
         [](const ArealSurface& surface, std::size_t n, std::optional<double> levels) {
             return resampledPeriodic(surface, n, levels);

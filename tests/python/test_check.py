@@ -151,3 +151,30 @@ def test_the_regime_and_the_measured_band():
     assert band == {"low": 0.197, "high": 1.31, "from": 1e-3, "to": 1e-2, "surfaces": 5,
                     "report": "engineering-range study"}
     assert rc.measured_accuracy("cooperMikicYovanovich", "", False, 3e-3) is None
+
+
+def test_check_of_a_lay_is_the_clis_on_stretched_surfaces(cli, tmp_path):
+    # Issue 53: profiles across and along a lay (a row and a column, its spacing 3 times longer,
+    # of an isotropic surface): the check solves the across spectrum's surfaces stretched along y
+    # by the profiles' lay ratio, Python and the CLI the same numbers.
+    spectrum = rc.Spectrum.from_profile(rc.read_profile(STANDIN))
+    surface = rc.synthesize_isotropic(spectrum, 256, 9)
+    heights = np.asarray(surface.heights).reshape(256, 256)
+    across, along = tmp_path / "across.txt", tmp_path / "along.txt"
+    np.savetxt(across, np.column_stack([np.arange(256) * surface.dx, heights[0, :]]))
+    np.savetxt(along, np.column_stack([np.arange(256) * 3 * surface.dx, heights[:, 0]]))
+    c = rc.check(surfaces=[rc.SurfaceSpec.profile(str(across), along_lay=str(along))], side1=STEEL_M,
+                 side2=STEEL_M, grid=64, count=2, light_load_periods=1)
+    assert 2 < c.lay_stretch < 4.5, c.lay_stretch  # 3 with the scatter of two single profiles' slopes
+    assert "times along the lay" in c.surface
+    r = cli("--profile", str(across), "--profile-along", str(along), "--model", "jacksonGreen", "--check",
+            "--synthesize", "64", "--check-periods", "1", "--pressures", ",".join(repr(p) for p in c.pressures),
+            "--E", "179.52e9,179.52e9", "--nu", "0.32,0.32", "--Sy", "0.2e9,0.2e9")
+    assert r.status == 0, r.err
+    rows = list(csv.DictReader(io.StringIO("".join(l + "\n" for l in r.out.splitlines() if not l.startswith("#")))))
+    np.testing.assert_array_equal(c.checked_exact, [float(row["h_per_k_checked_surface"]) for row in rows])
+    assert "times along the lay" in r.out + r.err
+    # synthesize_stretched: the isotropic surface's heights with dy = stretch dx.
+    s = rc.synthesize_stretched(spectrum, 3.0, 64, 1)
+    np.testing.assert_array_equal(s.heights, rc.synthesize_isotropic(spectrum, 64, 1).heights)
+    assert s.dy == pytest.approx(3 * s.dx, rel=1e-15)

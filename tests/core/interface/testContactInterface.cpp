@@ -411,6 +411,73 @@ TEST(SurfaceSpec, ProfilesAcrossAndAlongTheLayAreTheIsotropicEquivalent)
     }
 }
 
+TEST(SurfaceSpec, ALaysRatioIsTheProfilesSlopeRatio)
+{
+    // Profiles a cos(2 pi 32 x/L) across and a cos(2 pi 4 y/L) along: the lay ratio (the rms
+    // slope across over along) is 8, and the surface the exact model synthesizes of it is the
+    // across spectrum's with dy = 8 dx. Without a lay there is none and the synthesis is
+    // isotropic; a second, isotropic side adds its power to both directions; a flat profile along
+    // the lay (ratio infinite) is refused naming alongLay.
+    const roughContactTest::TempDir dir;
+    const std::size_t n = 1024;
+    const double dx = 1e-6;
+    const double a = 1e-6;
+    const double pi = std::acos(-1.0);
+    const auto write = [&](const std::string& name, double amplitude, int periods) {
+        const std::string path = (dir.path() / name).string();
+        std::ofstream out(path);
+        out.precision(17);
+        for (std::size_t i = 0; i < n; ++i) {
+            out << double(i) * dx << ' ' << amplitude * std::cos(2.0 * pi * periods * double(i) / double(n)) << '\n';
+        }
+        return path;
+    };
+    SurfaceSpec lay;
+    lay.kind = SurfaceSpec::Kind::profile;
+    lay.file = write("across.txt", a, 32);
+    lay.alongLay = write("along.txt", a, 4);
+    const std::optional<LaySpectra> one = equivalentLay({lay});
+    ASSERT_TRUE(one.has_value());
+    // 8 to 1e-4: the detrending of a finite profile takes a little of each cosine's slope, more
+    // of the longer one's.
+    EXPECT_NEAR(one->stretch(), 8.0, 8e-4);
+    const ArealSurface synthesized = synthesizeEquivalent({lay}, 64, 3);
+    EXPECT_NEAR(synthesized.dy() / synthesized.dx(), one->stretch(), 1e-12);
+    EXPECT_NE(synthesized.source().find("stretched"), std::string::npos) << synthesized.source();
+    // The boundaryElement model's synthesize is that surface.
+    InterfaceSpec bem;
+    bem.surfaces = {lay};
+    bem.side1 = steel;
+    bem.side2 = steel;
+    bem.model = "boundaryElement";
+    bem.synthesize = 64;
+    bem.seed = 3;
+    EXPECT_EQ(BoundaryElementTable(bem).surface().heights(), synthesized.heights());
+    EXPECT_EQ(BoundaryElementTable(bem).surface().dy(), synthesized.dy());
+
+    SurfaceSpec isotropic = lay;
+    isotropic.alongLay.clear();
+    EXPECT_FALSE(equivalentLay({isotropic}).has_value());
+    EXPECT_EQ(synthesizeEquivalent({isotropic}, 64, 3).dy(), synthesizeEquivalent({isotropic}, 64, 3).dx());
+    // Two sides: the isotropic side's spectrum in both directions, so the across slope^2 is the
+    // two across ones' sum, the along one the along and the isotropic side's across.
+    const std::optional<LaySpectra> two = equivalentLay({lay, isotropic});
+    ASSERT_TRUE(two.has_value());
+    const double across2 = spectralMoments(one->across).m2;
+    const double along2 = spectralMoments(one->along).m2;
+    EXPECT_NEAR(two->stretch(), std::sqrt(2.0 * across2 / (along2 + across2)), 1e-9);
+
+    SurfaceSpec flat = lay;
+    flat.alongLay = write("flat.txt", 0.0, 4);
+    try {
+        (void)equivalentLay({flat})->stretch();
+        ADD_FAILURE() << "a flat profile along the lay taken";
+    } catch (const ParameterError& e) {
+        EXPECT_EQ(e.parameter(), "alongLay");
+        EXPECT_NE(e.message().find("flat.txt"), std::string::npos) << e.what();
+    }
+}
+
 TEST(SurfaceSpec, OneProfileSaysWhatItCannotKnow)
 {
     // A single profile (no alongLay) gets the note, naming the front-end's option; a profile with

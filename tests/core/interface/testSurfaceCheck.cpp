@@ -2,6 +2,8 @@
 // The check of a user's own surface (SurfaceCheck.hpp): the exact conductance it reports is
 // the boundary-element model's on the surfaces it says it solved, the laws' ratios are the
 // laws' own h over it, the pressures lie where the header says, and bad requests are refused.
+#include "RunCommand.hpp"
+
 #include "roughContact/Error.hpp"
 #include "roughContact/interface/SurfaceCheck.hpp"
 #include "roughContact/models/BoundaryElement.hpp"
@@ -689,4 +691,76 @@ TEST(SurfaceCheck, PressuresOutsideTheRangeAreMovedToItsEndWhenAskedTo)
     ASSERT_EQ(moved.pressures.size(), 2U);
     EXPECT_EQ(moved.pressures[0], moved.lowestCheckable);
     EXPECT_NE(moved.report().find("checked at its nearer end instead"), std::string::npos) << moved.report();
+}
+
+TEST(SurfaceCheck, AFinishWithALayIsCheckedOnSurfacesStretchedAlongIt)
+{
+    // Profiles across and along a lay (a row of an isotropic surface, and one of its columns with
+    // the spacing three times longer): the check solves the across spectrum's surfaces, cut at
+    // 64/8 levels, stretched along y by the profiles' lay ratio (the model here, same seed and
+    // loads, to round-off), and the laws see the two directions' averaged cut spectrum, whose
+    // areal gradient sets the pressures. The same profile given both ways is the isotropic check.
+    const roughContactTest::TempDir dir;
+    const Spectrum powerLaw = Spectrum::powerLaw(2e-6 * std::pow(1e3, 1.3), 1.3, 1e3, 2e5, 1e-3);
+    const ArealSurface iso = synthesizeIsotropic(powerLaw, 512, 9);
+    const auto write = [&](const std::string& name, bool row, double spacing) {
+        const std::string path = (dir.path() / name).string();
+        std::ofstream out(path);
+        out.precision(17);
+        for (std::size_t i = 0; i < 512; ++i) {
+            out << double(i) * spacing << ' ' << (row ? iso.at(i, 0) : iso.at(0, i)) << '\n';
+        }
+        return path;
+    };
+    InterfaceSpec spec = powerLawSpec(false);
+    SurfaceSpec& s = spec.surfaces[0];
+    s = SurfaceSpec{};
+    s.kind = SurfaceSpec::Kind::profile;
+    s.file = write("across.txt", true, iso.dx());
+    s.alongLay = write("along.txt", false, 3.0 * iso.dx());
+    SurfaceCheckOptions o;
+    o.gridSize = 64;
+    o.seeds = {1};
+    o.pressureCount = 2;
+    o.lightLoadPeriods = 1;
+    const SurfaceCheck c = checkSurface(spec, o);
+    const LaySpectra lay = *equivalentLay(spec.surfaces);
+    const double g = lay.stretch();
+    EXPECT_GT(g, 2.0); // 3 with the scatter of two single profiles' slopes
+    EXPECT_LT(g, 4.5);
+    EXPECT_DOUBLE_EQ(c.layStretch, g);
+    const Spectrum cut = lay.across.truncated(8.0 / lay.across.length() * (1 + 1e-12));
+    EXPECT_EQ(c.levelsKept, cut.size());
+    EXPECT_EQ(c.levelsGiven, lay.across.size());
+    EXPECT_DOUBLE_EQ(c.gradient, arealRmsGradient(spectralMoments(Spectrum::averaged(cut, cut.stretched(g), ""))));
+    EXPECT_NE(c.surface.find("stretched"), std::string::npos) << c.surface;
+    std::vector<double> loads;
+    for (double P : c.pressures) {
+        loads.push_back(P / c.reducedModulus);
+    }
+    BoundaryElementOptions bo;
+    bo.periodic = true;
+    const std::vector<BoundaryElementPoint> exact =
+        BoundaryElementModel(synthesizeStretched(cut, g, 64, 1), c.reducedModulus, bo).curve(loads);
+    ASSERT_EQ(c.exactHPerK.size(), exact.size());
+    for (std::size_t i = 0; i < exact.size(); ++i) {
+        EXPECT_NEAR(c.exactHPerK[i], exact[i].conductancePerConductivity, 1e-12 * c.exactHPerK[i]);
+    }
+
+    // The across profile given as both: a lay ratio of 1, the single profile's check (the
+    // averaged spectrum of a spectrum with itself is it, to round-off: 1e-9).
+    s.alongLay = s.file;
+    const SurfaceCheck same = checkSurface(spec, o);
+    s.alongLay.clear();
+    const SurfaceCheck single = checkSurface(spec, o);
+    EXPECT_DOUBLE_EQ(same.layStretch, 1.0);
+    EXPECT_NE(same.surface.find("stretched 1 times"), std::string::npos) << same.surface;
+    ASSERT_EQ(same.exactHPerK.size(), single.exactHPerK.size());
+    for (std::size_t i = 0; i < same.exactHPerK.size(); ++i) {
+        EXPECT_NEAR(same.exactHPerK[i], single.exactHPerK[i], 1e-9 * single.exactHPerK[i]);
+        EXPECT_NEAR(same.laws[0].ratio[i], single.laws[0].ratio[i], 1e-9);
+    }
+    // The finish with the lay conducts otherwise than its isotropic reading: the check is not
+    // the single profile's.
+    EXPECT_NE(c.gradient, single.gradient);
 }

@@ -391,3 +391,53 @@ TEST(ArealSynthesis, GridBand)
         }
     }
 }
+
+// A finish with a lay: the same heights with the y spacing stretched, so that the columns (along
+// the lay) are the isotropic surface's columns with every length `stretch` times longer: the
+// same amplitudes at the frequencies over `stretch` (Spectrum::stretched), the same variance,
+// the rms slope over `stretch`; the rows are the isotropic surface's. Stretch 1 is the isotropic
+// surface; a stretch that is not positive and finite is refused.
+TEST(ArealSynthesis, ALayStretchesTheFeaturesAlongY)
+{
+    const Spectrum s = powerLaw(0.3, 20);
+    const double g = 3.0;
+    const ArealSurface iso = synthesizeIsotropic(s, 64, 5);
+    const ArealSurface lay = synthesizeStretched(s, g, 64, 5);
+    EXPECT_EQ(lay.heights(), iso.heights());
+    EXPECT_EQ(lay.dx(), iso.dx());
+    EXPECT_DOUBLE_EQ(lay.dy(), g * iso.dx());
+    const Spectrum rows = lineScanSpectrum(lay, ScanDirection::x);
+    EXPECT_EQ(rows.amplitudes(), lineScanSpectrum(iso, ScanDirection::x).amplitudes());
+    const Spectrum columns = lineScanSpectrum(lay, ScanDirection::y);
+    const Spectrum expected = lineScanSpectrum(iso, ScanDirection::y).stretched(g);
+    ASSERT_EQ(columns.size(), expected.size());
+    EXPECT_DOUBLE_EQ(columns.length(), expected.length());
+    for (std::size_t i = 0; i < columns.size(); ++i) {
+        EXPECT_NEAR(columns.frequency(i), expected.frequency(i), 1e-12 * expected.frequency(i));
+        EXPECT_NEAR(columns.amplitude(i), expected.amplitude(i), 1e-12 * expected.amplitude(0));
+    }
+    // Spectrum::stretched: the variance kept, the second moment (rms slope squared) over g^2.
+    double v = 0.0, vs = 0.0, m2 = 0.0, m2s = 0.0;
+    const Spectrum st = s.stretched(g);
+    const double pi = std::acos(-1.0);
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        v += 0.5 * s.amplitude(i) * s.amplitude(i);
+        vs += 0.5 * st.amplitude(i) * st.amplitude(i);
+        m2 += 0.5 * std::pow(2 * pi * s.frequency(i) * s.amplitude(i), 2);
+        m2s += 0.5 * std::pow(2 * pi * st.frequency(i) * st.amplitude(i), 2);
+    }
+    EXPECT_DOUBLE_EQ(vs, v);
+    EXPECT_NEAR(m2s, m2 / (g * g), 1e-12 * m2);
+    EXPECT_DOUBLE_EQ(st.length(), g * s.length());
+    EXPECT_EQ(synthesizeStretched(s, 1.0, 64, 5).heights(), iso.heights());
+    EXPECT_EQ(synthesizeStretched(s, 1.0, 64, 5).dy(), iso.dy());
+    for (double bad : {0.0, -2.0, std::numeric_limits<double>::infinity(), std::nan("")}) {
+        try {
+            synthesizeStretched(s, bad, 64, 5);
+            ADD_FAILURE() << "stretch " << bad << " accepted";
+        } catch (const ParameterError& e) {
+            EXPECT_EQ(e.parameter(), "stretch");
+        }
+        EXPECT_THROW(s.stretched(bad), ParameterError);
+    }
+}

@@ -12,7 +12,6 @@
 #include "roughContact/material/Materials.hpp"
 #include "roughContact/models/BoundaryElement.hpp"
 #include "roughContact/models/ContactModel.hpp"
-#include "roughContact/surface/ArealSynthesis.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 
 #include <openssl/evp.h>
@@ -141,12 +140,7 @@ ArealSurface solvedSurface(const InterfaceSpec& spec)
         throw ParameterError("periodic", "a synthesized surface is periodic and is solved so; 'periodic "
                                          "false' is for areal maps");
     }
-    std::optional<Spectrum> total;
-    for (const SurfaceSpec& s : spec.surfaces) {
-        const Spectrum one = s.spectrum();
-        total = total ? Spectrum::combine(*total, one) : one;
-    }
-    return synthesizeIsotropic(*total, *spec.synthesize, spec.seed, "synthesized from " + total->source());
+    return synthesizeEquivalent(spec.surfaces, *spec.synthesize, spec.seed);
 }
 
 } // namespace

@@ -7,7 +7,9 @@
 #include "roughContact/io/SpectrumReader.hpp"
 #include "roughContact/models/BoundaryElement.hpp"
 #include "roughContact/models/ModelFactory.hpp"
+#include "roughContact/surface/ArealSynthesis.hpp"
 #include "roughContact/surface/RoughnessSpectrum.hpp"
+#include "roughContact/surface/SpectralMoments.hpp"
 #include "roughContact/surface/SurfaceChecksum.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
@@ -53,12 +55,10 @@ Spectrum SurfaceSpec::spectrum() const
     check();
     switch (kind) {
     case Kind::profile: {
-        const Spectrum across = Spectrum::fromProfile(readProfile(file, profileOptions).subsampled(stride));
-        if (alongLay.empty()) {
-            return across;
+        if (const std::optional<LaySpectra> lay = laySpectra()) {
+            return Spectrum::averaged(lay->across, lay->along, file + " across and " + alongLay + " along the lay");
         }
-        const Spectrum along = Spectrum::fromProfile(readProfile(alongLay, profileOptions).subsampled(stride));
-        return Spectrum::averaged(across, along, file + " across and " + alongLay + " along the lay");
+        return Spectrum::fromProfile(readProfile(file, profileOptions).subsampled(stride));
     }
     case Kind::areal:
         return lineScanSpectrum(readAreal(file, arealOptions).detrended(), direction);
@@ -74,6 +74,34 @@ Spectrum SurfaceSpec::spectrum() const
         return roughnessSpectrum(parameters[0], parameters[1], parameters[2], parameters[3]).spectrum;
     }
     throw ParameterError("surface", "unknown kind");
+}
+
+std::optional<LaySpectra> SurfaceSpec::laySpectra() const
+{
+    check();
+    if (kind != Kind::profile || alongLay.empty()) {
+        return std::nullopt;
+    }
+    return LaySpectra{Spectrum::fromProfile(readProfile(file, profileOptions).subsampled(stride)),
+                      Spectrum::fromProfile(readProfile(alongLay, profileOptions).subsampled(stride))};
+}
+
+double LaySpectra::stretch() const
+{
+    const double across2 = spectralMoments(across).m2;
+    const double along2 = spectralMoments(along).m2;
+    // A ratio outside the range, a flat profile along the lay's infinite one included, is
+    // refused before it is divided out.
+    const double m = maximumLayStretch * maximumLayStretch;
+    if (!(across2 <= m * along2 && along2 <= m * across2)) {
+        std::ostringstream os;
+        os << "the rms slope across the lay (" << across.source() << ", " << std::sqrt(across2) << ") over the one "
+           << "along it (" << along.source() << ", " << std::sqrt(along2) << ")"
+           << " is outside a lay ratio from 1/" << maximumLayStretch << " to " << maximumLayStretch
+           << ", which is taken; give a profile that crosses the lay's features, or an areal map";
+        throw ParameterError("alongLay", os.str());
+    }
+    return std::sqrt(across2 / along2);
 }
 
 SurfaceRoughness SurfaceSpec::roughness() const
@@ -240,6 +268,42 @@ Spectrum equivalentSurface(const std::vector<SurfaceSpec>& surfaces)
         total = total ? Spectrum::combine(*total, one) : one;
     }
     return *total;
+}
+
+std::optional<LaySpectra> equivalentLay(const std::vector<SurfaceSpec>& surfaces)
+{
+    requireOneOrTwo(surfaces);
+    std::vector<LaySpectra> sides;
+    bool lay = false;
+    for (const SurfaceSpec& s : surfaces) {
+        std::optional<LaySpectra> one = s.laySpectra();
+        lay = lay || one.has_value();
+        if (!one) {
+            const Spectrum isotropic = s.spectrum();
+            one = LaySpectra{isotropic, isotropic};
+        }
+        sides.push_back(*one);
+    }
+    if (!lay) {
+        return std::nullopt;
+    }
+    if (sides.size() == 1) {
+        return sides.front();
+    }
+    return LaySpectra{Spectrum::combine(sides[0].across, sides[1].across),
+                      Spectrum::combine(sides[0].along, sides[1].along)};
+}
+
+ArealSurface synthesizeEquivalent(const std::vector<SurfaceSpec>& surfaces, std::size_t n, std::uint64_t seed)
+{
+    if (const std::optional<LaySpectra> lay = equivalentLay(surfaces)) {
+        const double stretch = lay->stretch();
+        std::ostringstream os;
+        os << "synthesized from " << lay->across.source() << ", stretched " << stretch << " times along the lay";
+        return synthesizeStretched(lay->across, stretch, n, seed, os.str());
+    }
+    const Spectrum total = equivalentSurface(surfaces);
+    return synthesizeIsotropic(total, n, seed, "synthesized from " + total.source());
 }
 
 ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElementTablePoints* boundaryElementTable)

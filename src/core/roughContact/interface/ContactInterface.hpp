@@ -28,6 +28,21 @@
 
 namespace roughContact {
 
+/// A finish with a lay, from a profile across it and one along it (or the equivalent of two
+/// surfaces, one of which has a lay): the two line-scan spectra (docs/theory.md §1.6).
+struct LaySpectra {
+    Spectrum across;
+    Spectrum along;
+    /// The lay ratio: the rms slope across over the rms slope along (sqrt of their second
+    /// moments). The across spectrum's isotropic surface with its y spacing stretched by it
+    /// (synthesizeStretched) has both directions' rms slopes: the surface the check and the
+    /// boundaryElement model synthesize for a finish with a lay. ParameterError naming alongLay
+    /// outside [1/maximumLayStretch, maximumLayStretch] (a flat profile along the lay included).
+    double stretch() const;
+};
+/// The largest lay ratio taken (LaySpectra::stretch).
+inline constexpr double maximumLayStretch = 64.0;
+
 /// One rough surface as a user describes it.
 struct SurfaceSpec {
     enum class Kind { profile, spectrum, powerLaw, fractal, areal, roughness };
@@ -55,8 +70,10 @@ struct SurfaceSpec {
     /// ParameterError naming the entry ("stride", "length", "parameters").
     void check() const;
     /// The surface's spectrum (check(), then reads the file; InputError/ParameterError on bad
-    /// input).
+    /// input). A profile with alongLay: the two directions' averaged spectrum.
     Spectrum spectrum() const;
+    /// A profile with alongLay: its two directions' spectra; none otherwise.
+    std::optional<LaySpectra> laySpectra() const;
     /// Its rms height and mean absolute slope (Roughness.hpp): a profile's and an areal map's
     /// (along `direction`) from their heights, a spectrum's from its moments.
     SurfaceRoughness roughness() const;
@@ -89,8 +106,9 @@ struct InterfaceSpec {
     std::size_t pointsPerDecade = 40;
 
     // boundaryElement only (ParameterError with any other model):
-    /// Synthesize an N x N periodic areal surface (synthesizeIsotropic) from the spectrum of
-    /// the 1-D surface description(s) (profile, spectrum, powerLaw, fractal); unset: the
+    /// Synthesize an N x N periodic areal surface (synthesizeEquivalent: isotropic, or stretched
+    /// along a profile's lay) from the 1-D surface description(s) (profile, spectrum, powerLaw,
+    /// fractal); unset: the
     /// surfaces are one or two areal maps (their composite), solved non-periodic by default.
     std::optional<std::size_t> synthesize;
     std::uint64_t seed = 1;   ///< synthesize: the phases' seed
@@ -171,6 +189,14 @@ void requireMirrorOfMaps(const std::vector<SurfaceSpec>& surfaces, bool mirror);
 /// The equivalent surface of one or two surfaces: the spectrum of one, the combination of two
 /// (Spectrum::combine, seed §2.1). ParameterError for none or more than two.
 Spectrum equivalentSurface(const std::vector<SurfaceSpec>& surfaces);
+/// The equivalent surface's two directions when a surface is a profile with alongLay (a surface
+/// without a lay, isotropic, adds its spectrum to both directions; two sides' lays are taken
+/// parallel); none when no surface has a lay. ParameterError for none or more than two.
+std::optional<LaySpectra> equivalentLay(const std::vector<SurfaceSpec>& surfaces);
+/// The areal surface the exact model solves for 1-D descriptions (the check, boundaryElement's
+/// synthesize): synthesizeIsotropic of equivalentSurface, or with a lay synthesizeStretched of
+/// its across spectrum by its stretch; `n` x `n`, the phases' `seed`.
+ArealSurface synthesizeEquivalent(const std::vector<SurfaceSpec>& surfaces, std::size_t n, std::uint64_t seed);
 /// The equivalent roughness of the same surfaces (SurfaceSpec::roughness(); two combined:
 /// Roughness.hpp combined). ParameterError for none or more than two.
 SurfaceRoughness equivalentRoughness(const std::vector<SurfaceSpec>& surfaces);

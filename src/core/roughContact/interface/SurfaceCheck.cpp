@@ -455,13 +455,28 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     // description the surface on one scan length and, where light pressures are checked, on
     // periods of options.lightLoadPeriods scan lengths (SurfaceCheck.hpp, "how the periods join").
     struct Part {
-        Spectrum lawSpectrum;
+        Spectrum cutSpectrum; // what the surfaces are synthesized from (a map's: its own)
+        Spectrum lawSpectrum; // what the laws see
         std::vector<ArealSurface> solved;
         std::vector<std::size_t> at; // indices into out.pressures
     };
     const Spectrum given = equivalentSurface(spec.surfaces);
-    out.levelsGiven = given.size();
     const bool areal = spec.surfaces.front().kind == SurfaceSpec::Kind::areal;
+    // A finish with a lay (a profile with alongLay): its surfaces are the across spectrum's
+    // stretched along y by the lay ratio (synthesizeStretched), and the laws see their rows' and
+    // columns' averaged spectrum; the levels counted are the across spectrum's.
+    const std::optional<LaySpectra> lay = areal ? std::nullopt : equivalentLay(spec.surfaces);
+    out.layStretch = lay ? lay->stretch() : 1.0;
+    const Spectrum& base = lay ? lay->across : given;
+    const auto partOf = [&](const Spectrum& cutSpectrum) {
+        return Part{cutSpectrum,
+                    lay ? Spectrum::averaged(cutSpectrum, cutSpectrum.stretched(out.layStretch),
+                                             cutSpectrum.source() + " and along the lay")
+                        : cutSpectrum,
+                    {},
+                    {}};
+    };
+    out.levelsGiven = base.size();
     std::optional<Part> onePart;
     std::optional<Part> longer;
     bool periodic = true;
@@ -474,7 +489,7 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     };
     // The given spectrum's levels up to a frequency [1/m].
     const auto levelsUpTo = [&](double f) {
-        const std::vector<double>& g = given.frequencies();
+        const std::vector<double>& g = base.frequencies();
         return static_cast<std::size_t>(std::upper_bound(g.begin(), g.end(), f * (1.0 + 1e-12)) - g.begin());
     };
     if (areal) {
@@ -483,7 +498,7 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
                 throw ParameterError("surfaces", "check two areal maps or two 1-D descriptions, not one of each");
             }
         }
-        onePart = Part{given, {arealComposite(spec.surfaces)}, {}}; // as the boundaryElement model reads it
+        onePart = Part{given, given, {arealComposite(spec.surfaces)}, {}}; // as the boundaryElement model reads it
         periodic = spec.periodic.value_or(false);
         mirrored = spec.mirror.value_or(false);
         const ArealSurface& map = onePart->solved[0];
@@ -495,13 +510,13 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
         requireMirrorOfMaps(spec.surfaces, spec.mirror.value_or(false));
         limits::requireSynthesisSize(names.gridSize, n);
         requireLightLoadPeriods(options.lightLoadPeriods, names.lightLoadPeriods);
-        onePart = Part{cut(given), {}, {}};
+        onePart = partOf(cut(base));
     }
     Part& one = *onePart;
     // A surface too smooth to have contact spots is said as such, before any range is derived
     // from its gradient.
     requireRoughness(one.lawSpectrum);
-    out.levelsKept = one.lawSpectrum.size();
+    out.levelsKept = one.cutSpectrum.size();
     out.gradient = arealRmsGradient(spectralMoments(one.lawSpectrum));
 
     // The pressures: the table's range clipped to where the exact model and the laws are compared.
@@ -575,21 +590,22 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     }
     out.onePeriodPressures = one.at.size();
     if (!one.at.empty() && !areal) {
-        requireLevels(levelsUpTo(double(n / 8) / given.length()), given.size(), 1, names);
+        requireLevels(levelsUpTo(double(n / 8) / base.length()), base.size(), 1, names);
     }
     if (!onLonger.empty()) {
         // Only the levels up to the longer period's cut are needed, and three beyond it so that the
         // bins and the interpolation up to the cut are the whole spectrum's (a long profile's
         // spectrum on a longer period would otherwise hold `periods` times all its levels).
-        const std::vector<double>& f = given.frequencies();
-        const double top = double(n / 8) / (given.length() * double(periods));
+        const std::vector<double>& f = base.frequencies();
+        const double top = double(n / 8) / (base.length() * double(periods));
         out.lightLevelsOfGiven = levelsUpTo(top);
-        requireLevels(out.lightLevelsOfGiven, given.size(), periods, names);
+        requireLevels(out.lightLevelsOfGiven, base.size(), periods, names);
         const std::size_t needed = levelsUpTo(top) + 3;
-        const Spectrum levels = needed < f.size() ? given.truncated(f[needed - 1]) : given;
-        longer = Part{cut(levels.onPeriod(periods)), {}, onLonger};
+        const Spectrum levels = needed < f.size() ? base.truncated(f[needed - 1]) : base;
+        longer = partOf(cut(levels.onPeriod(periods)));
+        longer->at = onLonger;
         out.lightLoadPeriods = periods;
-        out.lightLevelsKept = longer->lawSpectrum.size();
+        out.lightLevelsKept = longer->cutSpectrum.size();
     }
     std::vector<Part*> parts;
     if (!one.at.empty()) {
@@ -601,13 +617,17 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     if (!areal) {
         for (Part* part : parts) {
             for (std::uint64_t seed : options.seeds) {
-                part->solved.push_back(
-                    synthesizeIsotropic(part->lawSpectrum, n, seed, "synthesized from " + given.source()));
+                part->solved.push_back(synthesizeStretched(part->cutSpectrum, out.layStretch, n, seed,
+                                                           "synthesized from " + given.source()));
             }
         }
         std::ostringstream os;
         os << options.seeds.size() << (options.seeds.size() == 1 ? " seed" : " seeds") << " of " << n << " x " << n
-           << " synthesized from " << given.source();
+           << " synthesized from " << (lay ? lay->across.source() : given.source());
+        if (lay) {
+            os << ", stretched " << number(out.layStretch)
+               << " times along the lay (the rms slope across over along)";
+        }
         if (longer) {
             os << " (up to p/(E' h') = " << smallCellLoadPerGradient << " on periods of " << out.lightLoadPeriods
                << " scan lengths, joining one scan length's by " << checkBlendEnd << ")";

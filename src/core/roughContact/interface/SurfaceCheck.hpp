@@ -8,7 +8,9 @@
 // of two), as the boundaryElement model solves it (non-periodic unless `periodic`). A 1-D
 // description (profile, spectrum, power law, fractal; the equivalent of two): `seeds` periodic
 // N x N Gaussian surfaces synthesized from its spectrum (synthesizeIsotropic) cut at N/8
-// levels, the shortest wavelength 8 cells (the convention of the fidelity study,
+// levels, the shortest wavelength 8 cells; a profile across a lay with one along it, from the
+// across spectrum so cut, stretched along y by the lay ratio (synthesizeStretched,
+// LaySpectra::stretch), the laws on the two directions' averaged cut spectrum (the convention of the fidelity study,
 // docs/validation/fidelity.md, at which the exact conductance is converged to a few per cent
 // from p/E' of about 1e-3 on). The laws are built on the same cut spectrum, so law and exact
 // see one surface; what the cut leaves out is said (levels kept of levels given).
@@ -130,7 +132,10 @@ struct SurfaceCheck {
     std::optional<double> hardness;
     double reducedModulus = 0.0;
     double gradient = 0.0;     ///< h': areal rms gradient of the checked surface
-    std::size_t levelsKept = 0;  ///< levels of the spectrum in the check (the laws')
+    /// The lay ratio of a finish given by profiles across and along its lay (LaySpectra::stretch):
+    /// its surfaces are stretched so along y; 1 for an isotropic surface and a map.
+    double layStretch = 1.0;
+    std::size_t levelsKept = 0;  ///< levels of the spectrum in the check (the across spectrum's with a lay)
     std::size_t levelsGiven = 0; ///< levels of the spectrum given
     /// The period [scan lengths] of the pressures up to p/(E' h') = smallCellLoadPerGradient (1:
     /// none solved on a longer one), and the levels of the spectrum on it that the check holds.

@@ -262,4 +262,18 @@ ArealSurface synthesizeIsotropic(const Spectrum& lineScan, std::size_t n, std::u
     return ArealSurface(std::move(z), n, n, dx, dx, std::move(source));
 }
 
+ArealSurface synthesizeStretched(const Spectrum& across, double stretch, std::size_t n, std::uint64_t seed,
+                                 std::string source)
+{
+    if (!std::isfinite(stretch) || stretch <= 0.0) {
+        throw ParameterError("stretch", "a lay stretches the surface by a positive finite factor, not " +
+                                            std::to_string(stretch));
+    }
+    ArealSurface isotropic = synthesizeIsotropic(across, n, seed, source);
+    if (stretch == 1.0) {
+        return isotropic;
+    }
+    return ArealSurface(isotropic.heights(), n, n, isotropic.dx(), isotropic.dx() * stretch, isotropic.source());
+}
+
 } // namespace roughContact

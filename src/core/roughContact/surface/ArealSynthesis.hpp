@@ -110,4 +110,13 @@ std::vector<double> isotropicGridPower(const Spectrum& lineScan, std::size_t n);
 ArealSurface synthesizeIsotropic(const Spectrum& lineScan, std::size_t n, std::uint64_t seed,
                                  std::string source = "");
 
+/// A finish with a lay along y: synthesizeIsotropic(across, n, seed) with its y spacing `stretch`
+/// times its x spacing (an n x n period of L x stretch L), so that its features are `stretch`
+/// times longer along y than across. Its rows have the line-scan spectrum `across`, its columns
+/// across.stretched(stretch), and its rms slope along y is the rows' over `stretch`
+/// (docs/theory.md §1.6). stretch > 0 and finite (ParameterError "stretch" otherwise); 1 is
+/// synthesizeIsotropic.
+ArealSurface synthesizeStretched(const Spectrum& across, double stretch, std::size_t n, std::uint64_t seed,
+                                 std::string source = "");
+
 } // namespace roughContact

@@ -215,6 +215,21 @@ Spectrum Spectrum::truncated(double fmax) const
     return s;
 }
 
+Spectrum Spectrum::stretched(double factor) const
+{
+    if (!std::isfinite(factor) || factor <= 0.0) {
+        throw ParameterError("stretch", "lengths are stretched by a positive finite factor, not " +
+                                            std::to_string(factor));
+    }
+    std::vector<double> f = f_;
+    for (double& v : f) {
+        v /= factor;
+    }
+    std::ostringstream name;
+    name << source_ << " stretched " << factor << " times";
+    return withNyquistLevel(std::move(f), beta_, length_ * factor, name.str(), nyquist_);
+}
+
 Spectrum Spectrum::onPeriod(std::size_t multiple) const
 {
     if (multiple < 1 || multiple > maximumPeriodMultiple) {

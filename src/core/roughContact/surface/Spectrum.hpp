@@ -83,6 +83,11 @@ public:
     /// The longest period onPeriod takes, in scan lengths.
     static constexpr std::size_t maximumPeriodMultiple = 64;
 
+    /// The line scan of the same heights with every length `factor` times longer (> 0, finite):
+    /// the amplitudes at f_i / factor on a scan of factor L. The profile along y of a surface
+    /// whose y spacing is stretched by `factor` (synthesizeStretched). ParameterError otherwise.
+    Spectrum stretched(double factor) const;
+
 private:
     std::vector<double> f_;
     std::vector<double> beta_;
