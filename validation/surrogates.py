@@ -63,30 +63,41 @@ def file_digest(path):
         return hashlib.sha256(f.read()).hexdigest()
 
 
-class Areal:
-    """A height map as the laws take it (the core's SurfaceSpec.areal, direction both unless told):
-    sigma [m], m (the mean absolute slope of the rows and the columns), the line scans' bandwidth
-    ratio W and first level's share s1, h' (the core's areal rms gradient of that spectrum), the
-    heights' skewness, its spread by chance and the shrunk skewness the default law takes.
-    direction "x" or "y": what the rows or the columns alone tell, the mean of the profiles one
-    would measure that way (across or along a lay)."""
+class LawInputs:
+    """What the default law takes of a surface (any roughcontact.SurfaceSpec: a map, a profile, two
+    profiles across and along a lay), as the core reads it: sigma [m], m (the mean absolute slope),
+    the line scans' bandwidth ratio W and first level's share s1, h' (the core's areal rms gradient
+    of that spectrum), the heights' skewness, its spread by chance and the shrunk skewness the
+    default law takes."""
 
-    def __init__(self, ctx, path, dx, dy=None, direction="both"):
-        rc = ctx.rc()
-        self.path, self.dx, self.dy = path, dx, dy if dy is not None else dx
-        spec = rc.SurfaceSpec.areal(path, dx=dx, dy=dy, direction=direction)
+    FIELDS = ["sigma", "m", "bandwidth", "s1", "gradient", "skewness", "spread", "shrunk"]
+
+    def __init__(self, rc, spec):
         r, k, levels = spec.roughness(), spec.skewness(), spec.read_spectrum()
         self.sigma, self.m = r.sigma, r.mean_absolute_slope
         self.bandwidth, self.s1 = rc.spectral_bandwidth_ratio(levels), rc.first_level_share(levels)
         self.gradient = rc.areal_rms_gradient(levels)
         self.skewness, self.spread, self.shrunk = k.skewness, k.spread, rc.shrunk_skewness(k)
 
-    FIELDS = ["sigma", "m", "bandwidth", "s1", "gradient", "skewness", "spread", "shrunk"]
-
     def values(self):
-        """What the laws take of the map as text that reads back to the same doubles (a row of a
-        study's table of its surfaces)."""
+        """What the laws take of the surface as text that reads back to the same doubles (a row of
+        a study's table of its surfaces)."""
         return {f: repr(float(getattr(self, f))) for f in self.FIELDS}
+
+    def point(self, P, pair, exact=1.0, **more):
+        """A row of fitting.Points: the default law's inputs at the pressure P [Pa] for the Pair."""
+        return {"P": P, "sigma": self.sigma, "m": self.m, "w": self.bandwidth, "E": pair.Eprime, "H": pair.hardness,
+                "s": self.shrunk, "s1": self.s1, "exact": exact, **more}
+
+
+class Areal(LawInputs):
+    """A height map as the laws take it (the core's SurfaceSpec.areal, direction both unless told).
+    direction "x" or "y": what the rows or the columns alone tell."""
+
+    def __init__(self, ctx, path, dx, dy=None, direction="both"):
+        rc = ctx.rc()
+        self.path, self.dx, self.dy = path, dx, dy if dy is not None else dx
+        super().__init__(rc, rc.SurfaceSpec.areal(path, dx=dx, dy=dy, direction=direction))
 
     @classmethod
     def stored(cls, row, dx, dy=None):
@@ -103,7 +114,3 @@ class Areal:
         out = ["--areal", self.path, "--dx", f"{self.dx:.15g}"]
         return out + (["--dy", f"{self.dy:.15g}"] if self.dy != self.dx else [])
 
-    def point(self, P, pair, exact=1.0, **more):
-        """A row of fitting.Points: the default law's inputs at the pressure P [Pa] for the Pair."""
-        return {"P": P, "sigma": self.sigma, "m": self.m, "w": self.bandwidth, "E": pair.Eprime, "H": pair.hardness,
-                "s": self.shrunk, "s1": self.s1, "exact": exact, **more}

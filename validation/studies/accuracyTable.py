@@ -188,24 +188,30 @@ def trust(ctx, rows):
         body.append([words, x, p, f"{short(min(loads))} to {short(max(loads))}" if loads else "-",
                      f"{band['elastic'][0]:.3g}-{band['elastic'][1]:.3g}" if band["elastic"] else "not measured",
                      f"{band['capped'][0]:.3g}-{band['capped'][1]:.3g}" if band["capped"] else "not measured", todo])
-    body.append(lay_row(ctx))
+    body += lay_rows(ctx)
     return pages.markdown_table(["regime", "p/(E' h')", "p [MPa], steel, h' = 0.1", "P/H", "elastic: h / exact",
                                  "yielding: h / exact", "what to do"], body)
 
 
-def lay_row(ctx):
-    """The table's last row: a surface given as one profile across a lay, from the anisotropy
-    study's inputs.csv (the rows alone against both directions, on the same surfaces and loads)."""
+def lay_rows(ctx):
+    """The table's last rows: a finish with a lay given as one profile across it, one along it, or
+    the two (alongLay), from the anisotropy study's inputs.csv: its h over the map's h on the same
+    surface and load (the map's own accuracy is the rows above)."""
+    from .anisotropy import LAY_INPUTS, over_map
     rows = Table.read(os.path.join(ctx.generated, "anisotropy", "inputs.csv")).rows
-    across = [r for r in rows if r["input"] == "x"]
-    lay = max(int(r["stretch"]) for r in across)
-
-    def span(capped):
-        here = [r for r in across if (r["regime"] != "elastic") == capped]
-        return (f"{min(float(r['over_both_min']) for r in here):.2f}-"
-                f"{max(float(r['over_both_max']) for r in here):.2f} x the two directions' h")
-    return [f"a finish with a lay (up to {lay}:1), one profile across it", "0.001 to 0.1", "-", "-", span(False),
-            span(True), "give a profile along the lay too (`alongLay`) or an areal map"]
+    lay = max(int(r["stretch"]) for r in rows)
+    xs = [float(r["x"]) for r in Table.read(os.path.join(ctx.generated, "anisotropy", "summary.csv")).rows]
+    what = {"across": ("one profile across it", "give a profile along the lay too (`alongLay`) or an areal map"),
+            "along": ("one profile along it", "not alone: it is `alongLay` beside a profile across"),
+            "profiles": ("a profile across and one along (`alongLay`)",
+                         "the lay is accounted for; the rest is two profiles' chance: an areal map narrows it")}
+    out = []
+    for way in LAY_INPUTS:
+        words, todo = what[way]
+        spans = [over_map(rows, way, capped) for capped in (False, True)]
+        out.append([f"a finish with a lay (1:1 to {lay}:1), {words}", f"{min(xs):.2g} to {max(xs):.2g}", "-", "-"]
+                   + [f"{a:.2f}-{b:.2f} x the map's h" for a, b in spans] + [todo])
+    return out
 
 
 def decade(a, b):

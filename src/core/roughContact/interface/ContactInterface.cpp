@@ -167,7 +167,8 @@ std::string singleProfileNote(const std::vector<SurfaceSpec>& surfaces, const st
     os << "one profile is taken as a line scan of an isotropic surface; a finish with a lay (ground, turned, "
           "milled), measured across it as ISO 4288 does, is then rougher than it is, and its h can come out up to "
        << formatNumber(singleProfileOverstatement, 2)
-       << " times too high (docs/validation/anisotropy.md). Give a profile along the lay too (" << alongName
+       << " times too high from the lay alone (docs/validation/anisotropy.md). Give a profile along the lay too ("
+       << alongName
        << ") or an areal map; for a finish without a lay this note does not apply";
     return os.str();
 }
