@@ -551,6 +551,14 @@ ContactSolution PolonskyKeer::finish(std::vector<double> p, double P, ContactSol
         out.gap[i] = sv;
         sep += sv;
     }
+    if (options_.hardness) {
+        out.overlap.assign(n, 0.0);
+        for (std::size_t i = 0; i < n; ++i) {
+            if (p[i] >= H) {
+                out.overlap[i] = std::max(0.0, h_[i] - u[i] - D);
+            }
+        }
+    }
     out.pressure = std::move(p);
     out.meanPressure = P;
     out.areaFraction = double(nc) / double(n);

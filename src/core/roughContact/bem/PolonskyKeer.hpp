@@ -66,6 +66,10 @@ struct PolonskyKeerOptions {
 struct ContactSolution {
     std::vector<double> pressure; ///< p [Pa] per cell (>= 0; <= H with the cap)
     std::vector<double> gap;      ///< separation s [m] per cell: 0 in contact, > 0 apart
+    /// With the cap: the interpenetration h - u - D [m] of each cell at p = H (0 elsewhere), the
+    /// depth the cap flattened the surface there; kept as permanent set it is what a joint loaded
+    /// to this pressure is left with (BoundaryElementModel::deformedSurface). Empty without the cap.
+    std::vector<double> overlap;
     double meanPressure = 0.0;    ///< P = mean of p over all cells [Pa]
     double areaFraction = 0.0;    ///< A_r/A_n: the fraction of cells with p > 0
     double plasticFraction = 0.0; ///< the fraction of cells at p = H

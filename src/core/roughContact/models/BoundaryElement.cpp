@@ -145,6 +145,86 @@ BoundaryElementPoint BoundaryElementModel::solve(double load, std::vector<double
     return out;
 }
 
+ArealSurface BoundaryElementModel::deformedSurface(double peakLoad) const
+{
+    checkLoad(peakLoad);
+    if (!options_.hardness || peakLoad == 0.0) {
+        return surface_;
+    }
+    const double P = peakLoad * Eprime_;
+    if (P >= *options_.hardness) {
+        std::ostringstream os;
+        os << "a peak of F/(A_n E') = " << peakLoad << " is at or above the hardness (" << *options_.hardness
+           << " Pa): the whole surface flows, and no surface is left to unload";
+        throw ParameterError("peak load", os.str());
+    }
+    const ContactSolution s = solver_->solve(P);
+    if (!s.converged) {
+        std::ostringstream os;
+        os << "the contact solve at the peak F/(A_n E') = " << peakLoad << " did not converge in " << s.iterations
+           << " iterations (residual " << s.residual << ", tolerance " << s.tolerance << ")";
+        throw ParameterError("boundaryElement", os.str());
+    }
+    std::vector<double> z = surface_.heights();
+    for (std::size_t i = 0; i < z.size(); ++i) {
+        z[i] -= s.overlap[i];
+    }
+    std::ostringstream name;
+    name << surface_.source() << " deformed at F/(A_n E') = " << peakLoad;
+    return ArealSurface(std::move(z), surface_.nx(), surface_.ny(), surface_.dx(), surface_.dy(), name.str());
+}
+
+std::vector<BoundaryElementPoint> BoundaryElementModel::loadPath(
+    double peakLoad, const std::vector<double>& loads,
+    const std::function<void(std::size_t, std::size_t, const BoundaryElementPoint&)>& progress) const
+{
+    for (double l : loads) {
+        checkLoad(l);
+    }
+    if (!options_.hardness) {
+        return curve(loads, progress);
+    }
+    // The deformed surface as solved: no detrending again (a plane removed from the flattened
+    // heights would tilt them; a periodic surface's mean is a uniform shift, removed as before).
+    BoundaryElementOptions o = options_;
+    o.detrend = options_.periodic ? Detrend::mean : Detrend::none;
+    const ArealSurface deformed = deformedSurface(peakLoad);
+    std::vector<std::size_t> below;
+    std::vector<std::size_t> above;
+    for (std::size_t k = 0; k < loads.size(); ++k) {
+        (loads[k] <= peakLoad ? below : above).push_back(k);
+    }
+    std::vector<BoundaryElementPoint> out(loads.size());
+    std::size_t done = 0;
+    const auto part = [&](const std::vector<std::size_t>& at, bool capped) {
+        if (at.empty()) {
+            return;
+        }
+        BoundaryElementOptions po = o;
+        if (!capped) {
+            po.hardness.reset();
+        }
+        std::vector<double> these;
+        for (std::size_t k : at) {
+            these.push_back(loads[k]);
+        }
+        const std::vector<BoundaryElementPoint> points =
+            BoundaryElementModel(deformed, Eprime_, po)
+                .curve(these, [&](std::size_t, std::size_t, const BoundaryElementPoint& p) {
+                    ++done;
+                    if (progress) {
+                        progress(done, loads.size(), p);
+                    }
+                });
+        for (std::size_t j = 0; j < at.size(); ++j) {
+            out[at[j]] = points[j];
+        }
+    };
+    part(below, false);
+    part(above, true);
+    return out;
+}
+
 double BoundaryElementModel::areaFraction(double load) const
 {
     return solve(load).areaFraction;

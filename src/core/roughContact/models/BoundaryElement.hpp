@@ -132,6 +132,20 @@ public:
           const std::function<void(std::size_t done, std::size_t total, const BoundaryElementPoint&)>&
               progress = {}) const;
 
+    /// The surface a joint loaded to peakLoad = F/(A_n E') with the cap is left with: the
+    /// heights solved less the cap's interpenetration at the points at p = H (ContactSolution::
+    /// overlap), kept as permanent set (docs/theory.md §7.3). Without a cap, the heights solved.
+    /// ParameterError when peakLoad E' >= H (the whole surface flows) or the solve does not converge.
+    ArealSurface deformedSurface(double peakLoad) const;
+    /// The points at `loads` (F/(A_n E'), in the order given) of a joint that has carried
+    /// peakLoad: at and below it the deformed surface unloaded or reloaded elastically, above it
+    /// loaded on with the cap from the deformed surface (docs/theory.md §7.3). At peakLoad it is
+    /// the loading curve's point; without a cap, the loading curve.
+    std::vector<BoundaryElementPoint>
+    loadPath(double peakLoad, const std::vector<double>& loads,
+             const std::function<void(std::size_t done, std::size_t total, const BoundaryElementPoint&)>&
+                 progress = {}) const;
+
     const ArealSurface& surface() const noexcept { return surface_; }
     double reducedModulus() const noexcept { return Eprime_; }
     const BoundaryElementOptions& options() const noexcept { return options_; }
