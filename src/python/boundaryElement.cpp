@@ -12,11 +12,14 @@
 #include "roughContact/parallel/Threads.hpp"
 #include "convert.hpp"
 
+#include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
+#include "roughContact/io/Numbers.hpp"
 #include "roughContact/material/Materials.hpp"
 #include "roughContact/models/BoundaryElement.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 
+#include <cmath>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -134,7 +137,7 @@ void bindBoundaryElement(py::module_& m)
             py::arg("pressures"), "A_r/A_n at the nominal pressures [Pa], each solved from scratch.")
         .def(
             "curve",
-            [](const BoundaryElement& x, const py::object& P) {
+            [](const BoundaryElement& x, const py::object& P, std::optional<double> unloadFrom) {
                 const Array given = numbers(P, "pressures");
                 const std::vector<double> pressures(given.data(), given.data() + given.size());
                 const double Ep = x.model->reducedModulus();
@@ -142,10 +145,20 @@ void bindBoundaryElement(py::module_& m)
                 for (double p : pressures) {
                     loads.push_back(p / Ep);
                 }
+                const std::optional<double> H = x.model->options().hardness;
+                if (unloadFrom && !H) {
+                    throw ParameterError("unload_from", "unloads a joint the cap has flattened: give hardness "
+                                                        "(elastic, unloading is loading)");
+                }
+                if (unloadFrom && (!std::isfinite(*unloadFrom) || *unloadFrom <= 0.0 || *unloadFrom >= *H)) {
+                    throw ParameterError("unload_from", "the peak is a pressure above 0 and below the cap H = " +
+                                                            formatNumber(*H, 6) + " Pa, not " +
+                                                            formatNumber(*unloadFrom, 6) + " Pa");
+                }
                 std::vector<BoundaryElementPoint> points;
                 {
                     py::gil_scoped_release release;
-                    points = x.model->curve(loads);
+                    points = unloadFrom ? x.model->loadPath(*unloadFrom / Ep, loads) : x.model->curve(loads);
                 }
                 const auto column = [&](auto get) {
                     std::vector<double> v;
@@ -170,9 +183,11 @@ void bindBoundaryElement(py::module_& m)
                 }
                 return d;
             },
-            py::arg("pressures"),
+            py::arg("pressures"), py::arg("unload_from") = py::none(),
             "The curve at the nominal pressures [Pa] (solved in increasing order, each warm-started from the one "
-            "below; returned in the order given) as a dict of 1-D arrays: pressure [Pa], load (P/E'), "
+            "below; returned in the order given); unload_from [Pa], with a hardness: of a joint that has carried "
+            "that peak (the deformed surface unloaded elastically, loaded on with the cap above the peak; "
+            "multiscaleContact --unload-from), as a dict of 1-D arrays: pressure [Pa], load (P/E'), "
             "area_fraction, plastic_fraction, mean_separation [m], conductance_per_conductivity [1/m], "
             "iterations, residual (the columns of multiscaleContact --model boundaryElement), and "
             "patch_correction_gain (a map solved padded: how many times 1/h_c = 1/h_spots - 1/h_patch multiplies "

@@ -176,6 +176,29 @@ def test_boundary_element_equals_the_cli(cli, spectrum):
     np.testing.assert_allclose(bem.area_fraction([2e6, 2e7]), c["area_fraction"], rtol=1e-6)
 
 
+def test_boundary_element_unloads_as_the_cli(cli, spectrum):
+    # unload_from (issue 54): the joint that has carried the peak, the CLI's --unload-from columns;
+    # at the peak the loading point, below it more contact and more conductance.
+    r = cli("--profile", STANDIN, "--synthesize", "32,3", "--model", "boundaryElement", "--Eprime", "2e11",
+            "--hardness", "4e8", "--pressures", "2e7,1e8,2e8", "--unload-from", "2e8")
+    assert r.status == 0, r.err
+    c = r.columns()
+    surface = rc.synthesize_isotropic(spectrum, 32, 3)
+    bem = rc.BoundaryElement(surface, rc.ContactMaterials.from_reduced_modulus(2e11), periodic=True, hardness=4e8)
+    loading = bem.curve([2e7, 1e8, 2e8])
+    unloading = bem.curve([2e7, 1e8, 2e8], unload_from=2e8)
+    np.testing.assert_allclose(unloading["area_fraction"], c["unloading_area_fraction"], rtol=1e-9)
+    np.testing.assert_allclose(unloading["conductance_per_conductivity"], c["unloading_h_per_k"], rtol=1e-9)
+    assert np.all(unloading["conductance_per_conductivity"][:2] > loading["conductance_per_conductivity"][:2])
+    assert unloading["conductance_per_conductivity"][2] == pytest.approx(loading["conductance_per_conductivity"][2],
+                                                                        rel=1e-3)
+    with pytest.raises(rc.ParameterError, match="^unload_from: the peak is a pressure above 0 and below the cap"):
+        bem.curve([2e7], unload_from=5e8)
+    elastic = rc.BoundaryElement(surface, rc.ContactMaterials.from_reduced_modulus(2e11), periodic=True)
+    with pytest.raises(rc.ParameterError, match="^unload_from: unloads a joint the cap has flattened"):
+        elastic.curve([2e7], unload_from=1e8)
+
+
 def test_boundary_element_detrend(cli, spectrum):
     """detrend: what is removed before the solve (issue 19): by default the mean of a periodic
     surface and the plane of a map; the CLI's --detrend gives the same numbers."""

@@ -68,6 +68,20 @@ int runBoundaryElement(const Options& o)
     bo.hardness = hardnessOf(o, materials, "boundaryElement --hardness-from-yield");
     std::vector<double> pressures; // --pressures [Pa]: the first column
     const std::vector<double> loads = loadsOf(o, materials.reducedModulus(), &pressures);
+    // --unload-from: the joint's peak, below the cap (at H the whole surface flows).
+    std::optional<double> peak;
+    if (o.unloadFrom) {
+        if (!bo.hardness) {
+            throw ParameterError("--unload-from", "unloads a joint the cap has flattened: give --hardness or "
+                                                  "--hardness-from-yield (elastic, unloading is loading)");
+        }
+        if (!std::isfinite(*o.unloadFrom) || *o.unloadFrom <= 0.0 || *o.unloadFrom >= *bo.hardness) {
+            throw ParameterError("--unload-from", "the peak is a pressure above 0 and below the cap H = " +
+                                                      formatNumber(*bo.hardness, 6) + " Pa, not " +
+                                                      formatNumber(*o.unloadFrom, 6) + " Pa");
+        }
+        peak = *o.unloadFrom / materials.reducedModulus();
+    }
     if (!o.pressureMap.empty()) {
         checkOutputFile(o, o.pressureMap, "--pressure-map"); // before minutes of solving
     }
@@ -109,6 +123,19 @@ int runBoundaryElement(const Options& o)
                           << " s\n";
             }
         });
+    // The same loads on the joint that has carried the peak (BoundaryElementModel::loadPath).
+    std::vector<BoundaryElementPoint> unloading;
+    if (peak) {
+        current = 1;
+        unloading = model.loadPath(*peak, loads, [&](std::size_t done, std::size_t total, const BoundaryElementPoint& p) {
+            current = done + 1;
+            if (seconds() > 2.0) {
+                std::cerr << "multiscaleContact: boundaryElement unloading from F/(A_n E') = " << *peak << ": load "
+                          << done << " of " << total << ", F/(A_n E') = " << p.load
+                          << ": A_r/A_n = " << p.areaFraction << "; " << seconds() << " s\n";
+            }
+        });
+    }
     if (const std::string warning = patchCorrectionWarning(points, materials.reducedModulus(), "--mirror"); !warning.empty()) {
         std::cerr << "multiscaleContact: warning: " << warning << std::endl;
     }
@@ -143,6 +170,7 @@ int runBoundaryElement(const Options& o)
     out << (pressures.empty() ? "" : "nominal_pressure,")
         << "nominal_pressure_per_Eprime,area_fraction,contact_pressure_per_Eprime,separation,h_per_k,"
         << (ks ? "h," : "") << (gap ? "gap_separation,h_gas,h_radiation," : "") << (gap && ks ? "h_total," : "")
+        << (peak ? "unloading_area_fraction,unloading_h_per_k," : "") << (peak && ks ? "unloading_h," : "")
         << "iterations,residual\n";
     for (std::size_t i = 0; i < points.size(); ++i) {
         const BoundaryElementPoint& p = points[i];
@@ -163,6 +191,12 @@ int runBoundaryElement(const Options& o)
             writeGapCells(cells, *gap, *gapInputs, loads[i] * Ep, p.areaFraction >= 1.0, ks,
                           p.conductancePerConductivity);
             out << cells.str().substr(1) << ',';
+        }
+        if (peak) {
+            out << unloading[i].areaFraction << ',' << unloading[i].conductancePerConductivity << ',';
+            if (ks) {
+                out << *ks * unloading[i].conductancePerConductivity << ',';
+            }
         }
         out << p.iterations << ',' << p.residual << '\n';
     }

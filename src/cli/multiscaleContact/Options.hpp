@@ -31,6 +31,7 @@ struct Options {
     bool mirror = false;
     std::optional<std::string> detrend; // boundaryElement: none | mean | plane
     std::optional<double> hardness;
+    std::optional<double> unloadFrom; // --unload-from PMAX [Pa]: the curve of a joint that carried PMAX
     bool hardnessFromYield = false;
     std::string pressureMap; // boundaryElement: the pressure field of the highest load, to this file
     std::string plot;        // the interface's picture (every law, the band, the gap, the check), a PNG

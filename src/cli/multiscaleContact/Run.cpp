@@ -77,6 +77,12 @@ int run(const Options& o)
             }
         }
     }
+    if (o.unloadFrom && (o.check || !o.table.empty() || !o.plot.empty())) {
+        throw ParameterError("--unload-from", std::string("adds the unloading columns to the load curve of --model "
+                                                          "boundaryElement; ") +
+                                                  (o.check ? "--check" : !o.table.empty() ? "--table" : "--plot") +
+                                                  " has no unloading branch yet");
+    }
     if (!o.checkPeriods.empty() && !o.check) {
         throw ParameterError("--check-periods", "is the period of --check's light loads; give it with --check");
     }
@@ -127,6 +133,10 @@ int runCurve(const Options& o)
         if (given) {
             throw ParameterError(what, "is for --model boundaryElement");
         }
+    }
+    if (o.unloadFrom) {
+        throw ParameterError("--unload-from", "unloads the exact model (--model boundaryElement with a cap); the "
+                                              "multi-scale models and the laws have no unloading curve yet");
     }
     // A gap implies the conductance columns: its separation is the law's where it has one, and
     // h_total adds its terms to h_c.

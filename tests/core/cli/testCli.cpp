@@ -597,6 +597,49 @@ TEST(Cli, BoundaryElementIsTheLibrarys)
     expectError(p + " --synthesize 64 --model boundaryElement" + steel + " --loads 1e-4 --levels", {"--levels"});
 }
 
+TEST(Cli, UnloadFromAddsTheJointThatCarriedThePeak)
+{
+    // --unload-from PMAX: the columns unloading_area_fraction and unloading_h_per_k are the
+    // library's loadPath from PMAX on the same surface (to the solver's tolerance, as the loading
+    // columns); at PMAX itself they are the loading point's, below it the flattened summits keep
+    // more contact and conduct more. The stand-in on steel against a rigid flat, capped at
+    // 2.84 S_y = 568 MPa.
+    const std::string p = "--profile '" + standin + "' --synthesize 64,7 --model boundaryElement" + steel;
+    const CommandResult r = run(p + " --hardness-from-yield --pressures 20MPa,60MPa,200MPa --unload-from 200MPa");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Csv csv = parseCsv(r.out);
+    ASSERT_EQ(csv.rows.size(), 3U);
+    const Spectrum s = Spectrum::fromProfile(readProfile(standin));
+    const ContactMaterials mat = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
+    BoundaryElementOptions o;
+    o.periodic = true;
+    o.hardness = mat.hardness("test");
+    const BoundaryElementModel m(synthesizeIsotropic(s, 64, 7), mat.reducedModulus(), o);
+    const std::vector<double> loads{20e6 / mat.reducedModulus(), 60e6 / mat.reducedModulus(),
+                                    200e6 / mat.reducedModulus()};
+    const std::vector<BoundaryElementPoint> path = m.loadPath(loads[2], loads);
+    for (std::size_t i = 0; i < 3; ++i) {
+        const auto value = [&](const char* name) { return std::stod(csv.rows[i].at(column(csv, name))); };
+        EXPECT_NEAR(value("unloading_area_fraction"), path[i].areaFraction, 2.0 / (64 * 64));
+        EXPECT_NEAR(value("unloading_h_per_k"), path[i].conductancePerConductivity,
+                    1e-3 * path[i].conductancePerConductivity);
+        if (i < 2) {
+            EXPECT_GT(value("unloading_h_per_k"), value("h_per_k"));
+        } else {
+            EXPECT_NEAR(value("unloading_h_per_k"), value("h_per_k"), 1e-3 * value("h_per_k"));
+        }
+    }
+    // Its errors: no cap, the peak at or above it, a model without an unloading curve, --check.
+    expectError("--profile '" + standin + "' --synthesize 32 --model boundaryElement --Eprime 2e11 --loads 1e-4 "
+                "--unload-from 1MPa",
+                {"--unload-from", "--hardness"});
+    expectError(p + " --hardness-from-yield --loads 1e-4 --unload-from 1GPa", {"--unload-from", "below the cap"});
+    expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --loads 1e-4 --unload-from 1MPa",
+                {"--unload-from", "boundaryElement"});
+    expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --check --loads 1e-4 --unload-from 1MPa",
+                {"--unload-from", "--check"});
+}
+
 TEST(Cli, BoundaryElementInputsAHostileUserTried)
 {
     const std::string p = "--profile '" + standin + "'";
