@@ -26,13 +26,18 @@ VALUES = ["load", "area_fraction", "separation_m", "h_per_k_per_m", "iterations"
 # The CLI's columns of a boundaryElement curve, as the tidy table names them.
 CLI_COLUMNS = {"nominal_pressure_per_Eprime": "load", "area_fraction": "area_fraction", "separation": "separation_m",
                "h_per_k": "h_per_k_per_m", "iterations": "iterations", "residual": "residual"}
+# The same of the joint that has carried a peak (the CLI's --unload-from columns).
+UNLOADING_COLUMNS = {"nominal_pressure_per_Eprime": "load", "unloading_area_fraction": "area_fraction",
+                     "unloading_separation": "separation_m", "unloading_h_per_k": "h_per_k_per_m",
+                     "unloading_iterations": "iterations", "unloading_residual": "residual"}
 
 
 class Solve:
-    def __init__(self, key, arguments, loads):
+    def __init__(self, key, arguments, loads, columns=None):
         self.key = dict(key)
         self.loads = list(loads)  # p/E' as the arguments give them
         self.arguments = list(arguments) + ["--loads", ",".join(f"{pe:.6g}" for pe in self.loads)]
+        self.columns = columns or CLI_COLUMNS  # which of the CLI's columns are the table's values
 
     def name(self):
         return ", ".join(f"{k} {v}" for k, v in self.key.items() if v not in (None, ""))
@@ -79,7 +84,7 @@ class Store:
         for r in old:
             self.table.rows.remove(r)
         for r in cli_rows:
-            self.table.rows.append({**key, **{CLI_COLUMNS[c]: r[c] for c in CLI_COLUMNS}})
+            self.table.rows.append({**key, **{solve.columns[c]: r[c] for c in solve.columns}})
         self._index = None
 
     def save(self):

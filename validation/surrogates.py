@@ -77,7 +77,10 @@ class LawInputs:
         self.sigma, self.m = r.sigma, r.mean_absolute_slope
         self.bandwidth, self.s1 = rc.spectral_bandwidth_ratio(levels), rc.first_level_share(levels)
         self.gradient = rc.areal_rms_gradient(levels)
-        self.skewness, self.spread, self.shrunk = k.skewness, k.spread, rc.shrunk_skewness(k)
+        if k is None:  # a spectrum: Gaussian heights, skewness 0 as the core's equivalentSkewness takes it
+            self.skewness, self.spread, self.shrunk = 0.0, 0.0, 0.0
+        else:
+            self.skewness, self.spread, self.shrunk = k.skewness, k.spread, rc.shrunk_skewness(k)
 
     def values(self):
         """What the laws take of the surface as text that reads back to the same doubles (a row of

@@ -170,8 +170,9 @@ int runBoundaryElement(const Options& o)
     out << (pressures.empty() ? "" : "nominal_pressure,")
         << "nominal_pressure_per_Eprime,area_fraction,contact_pressure_per_Eprime,separation,h_per_k,"
         << (ks ? "h," : "") << (gap ? "gap_separation,h_gas,h_radiation," : "") << (gap && ks ? "h_total," : "")
-        << (peak ? "unloading_area_fraction,unloading_h_per_k," : "") << (peak && ks ? "unloading_h," : "")
-        << "iterations,residual\n";
+        << (peak ? "unloading_area_fraction,unloading_separation,unloading_h_per_k," : "")
+        << (peak && ks ? "unloading_h," : "") << "iterations,residual"
+        << (peak ? ",unloading_iterations,unloading_residual" : "") << "\n";
     for (std::size_t i = 0; i < points.size(); ++i) {
         const BoundaryElementPoint& p = points[i];
         if (!pressures.empty()) {
@@ -193,12 +194,17 @@ int runBoundaryElement(const Options& o)
             out << cells.str().substr(1) << ',';
         }
         if (peak) {
-            out << unloading[i].areaFraction << ',' << unloading[i].conductancePerConductivity << ',';
+            out << unloading[i].areaFraction << ',' << unloading[i].meanSeparation << ','
+                << unloading[i].conductancePerConductivity << ',';
             if (ks) {
                 out << *ks * unloading[i].conductancePerConductivity << ',';
             }
         }
-        out << p.iterations << ',' << p.residual << '\n';
+        out << p.iterations << ',' << p.residual;
+        if (peak) {
+            out << ',' << unloading[i].iterations << ',' << unloading[i].residual;
+        }
+        out << '\n';
     }
     if (!o.pressureMap.empty()) {
         // The highest load's field again (one more solve, warm-started from nothing): written as

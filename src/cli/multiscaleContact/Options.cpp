@@ -156,9 +156,9 @@ void addOptions(CLI::App& app, Options& o)
               roughContact::Quantity::pressure);
     withUnits(app.add_option("--unload-from", o.unloadFrom,
                              "boundaryElement with a cap: the peak nominal pressure PMAX [Pa] (or with a unit: "
-                             "50MPa) the joint has carried; the output gains the columns unloading_area_fraction "
-                             "and unloading_h_per_k (and unloading_h), the joint unloaded from PMAX (reloaded on "
-                             "from it above PMAX)"),
+                             "50MPa) the joint has carried; the output gains the columns unloading_area_fraction, "
+                             "unloading_separation, unloading_h_per_k (and unloading_h), unloading_iterations and "
+                             "unloading_residual, the joint unloaded from PMAX (loaded on from it above PMAX)"),
               roughContact::Quantity::pressure);
     app.add_option("--pressure-map", o.pressureMap,
                    "boundaryElement: write the contact pressure [Pa] at the highest load to this file, as a "
