@@ -21,7 +21,7 @@ import os
 
 from .. import fitting, materials, pages, solves, spectra, surrogates
 from ..tables import Table
-from .engineeringRange import SELF_AFFINE, X3P, geometric_mean
+from .engineeringRange import SELF_AFFINE, self_affine_spectra, X3P, geometric_mean
 
 DATA = ["anisotropy.csv"]
 KEYS = ["surface", "regime", "stretch", "grid", "seed"]
@@ -61,9 +61,7 @@ class Study:
     def __init__(self, ctx):
         self.ctx = ctx
         self.design = d = Design(ctx.quick)
-        self.spectrum = {name: spectra.self_affine(ctx.scratch_path("anisotropy", name + ".spectrum"), hurst, rolloff,
-                                                   d.N // 8, GRADIENT)
-                         for name, hurst, rolloff, _ in SELF_AFFINE}
+        self.spectrum = self_affine_spectra(ctx, "anisotropy", d.N // 8, GRADIENT)
         self.dx = {name: spectra.length(path) / d.N for name, path in self.spectrum.items()}
         self.store = solves.Store(ctx, "anisotropy", KEYS)
         self._areal = {}

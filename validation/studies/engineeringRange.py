@@ -28,6 +28,13 @@ SELF_AFFINE = [("selfAffine08", 0.8, 4, "self-affine, Hurst 0.8, roll-off at L/4
                ("selfAffine05", 0.5, 1, "self-affine, Hurst 0.5, no roll-off (power law from L on)")]
 
 
+def self_affine_spectra(ctx, study, levels, gradient=0.1):
+    """{name: the spectrum file} of SELF_AFFINE's spectra on `levels` levels with the areal rms
+    gradient h' = gradient (spectra.self_affine), in the study's scratch folder."""
+    return {name: spectra.self_affine(ctx.scratch_path(study, name + ".spectrum"), hurst, rolloff, levels, gradient)
+            for name, hurst, rolloff, _ in SELF_AFFINE}
+
+
 class Design:
     """The solves' sizes: a grid of N (the spectra cut at N/8 levels: 8 cells the shortest
     wave), SEEDS realizations, the first CHECKED also on a grid twice as fine; periods of kL on

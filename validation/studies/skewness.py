@@ -22,7 +22,7 @@ import numpy
 
 from .. import fitting, materials, solves, spectra, surrogates, tables
 from ..tables import Table
-from .engineeringRange import SELF_AFFINE
+from .engineeringRange import SELF_AFFINE, self_affine_spectra
 
 # The exact solves, and what the laws take of each surface (so that check need not make the
 # surfaces again: about five minutes of rank orderings).
@@ -82,9 +82,7 @@ class Study:
     def __init__(self, ctx):
         self.ctx = ctx
         self.design = d = Design(ctx.quick)
-        self.spectrum = {name: spectra.self_affine(ctx.scratch_path("skewness", name + ".spectrum"), hurst, rolloff,
-                                                   d.N // 8, GRADIENT)
-                         for name, hurst, rolloff, _ in SELF_AFFINE}
+        self.spectrum = self_affine_spectra(ctx, "skewness", d.N // 8, GRADIENT)
         self.dx = {name: spectra.length(path) / d.N for name, path in self.spectrum.items()}
         self.store = solves.Store(ctx, "skewness", KEYS)
         self._areal = {}

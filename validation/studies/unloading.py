@@ -12,9 +12,9 @@ h from the pressure of the moment, the loading value: its ratio to the exact unl
 error the condition makes on a joint that was once loaded harder. The surfaces are made again
 from their seeds by the CLI, never committed. docs/validation/unloading.md reads the tables.
 """
-from .. import fitting, materials, pages, solves, spectra, surrogates
+from .. import fitting, materials, pages, solves, surrogates
 from ..tables import Table
-from .engineeringRange import SELF_AFFINE, geometric_mean
+from .engineeringRange import SELF_AFFINE, self_affine_spectra, geometric_mean
 
 DATA = ["unloading.csv"]
 KEYS = ["surface", "regime", "grid", "seed", "peak", "branch"]
@@ -41,9 +41,7 @@ class Study:
     def __init__(self, ctx):
         self.ctx = ctx
         self.design = d = Design(ctx.quick)
-        self.spectrum = {name: spectra.self_affine(ctx.scratch_path("unloading", name + ".spectrum"), hurst, rolloff,
-                                                   d.N // 8, GRADIENT)
-                         for name, hurst, rolloff, _ in SELF_AFFINE}
+        self.spectrum = self_affine_spectra(ctx, "unloading", d.N // 8, GRADIENT)
         self.store = solves.Store(ctx, "unloading", KEYS)
         rc = ctx.rc()
         self.given = {name: surrogates.LawInputs(rc, rc.SurfaceSpec.spectrum(path))

@@ -355,6 +355,26 @@ TEST(ContactInterface, ArealSurface)
     EXPECT_THROW(ContactInterface{spec}, ParameterError);
 }
 
+namespace {
+// A profile a cos(2 pi periods i/n) of n = 1024 points 1 um apart (two columns, x and z [m]),
+// written to `name` in `dir`: one direction of a surface with a lay.
+constexpr std::size_t cosineSamples = 1024;
+constexpr double cosineSpacing = 1e-6;
+std::string writeCosineProfile(const roughContactTest::TempDir& dir, const std::string& name, double amplitude,
+                               int periods)
+{
+    const double pi = std::acos(-1.0);
+    const std::string path = (dir.path() / name).string();
+    std::ofstream out(path);
+    out.precision(17);
+    for (std::size_t i = 0; i < cosineSamples; ++i) {
+        out << double(i) * cosineSpacing << ' '
+            << amplitude * std::cos(2.0 * pi * periods * double(i) / double(cosineSamples)) << '\n';
+    }
+    return path;
+}
+} // namespace
+
 TEST(SurfaceSpec, ProfilesAcrossAndAlongTheLayAreTheIsotropicEquivalent)
 {
     // z(x, y) = a cos(2 pi 32 x/L) + a cos(2 pi 4 y/L): a lay along y, features 8 times longer
@@ -364,25 +384,14 @@ TEST(SurfaceSpec, ProfilesAcrossAndAlongTheLayAreTheIsotropicEquivalent)
     // averaged line-scan spectrum gives the surface's areal gradient; the 1 % is the detrending
     // of a finite profile (its tilt fit takes a little of the cosine's power).
     const roughContactTest::TempDir dir;
-    const std::size_t n = 1024;
-    const double dx = 1e-6;
-    const double L = double(n) * dx;
+    const double L = double(cosineSamples) * cosineSpacing;
     const double a = 1e-6;
     const double pi = std::acos(-1.0);
-    const auto write = [&](const std::string& name, int periods) {
-        const std::string path = (dir.path() / name).string();
-        std::ofstream out(path);
-        out.precision(17);
-        for (std::size_t i = 0; i < n; ++i) {
-            out << double(i) * dx << ' ' << a * std::cos(2.0 * pi * periods * double(i) / double(n)) << '\n';
-        }
-        return path;
-    };
     SurfaceSpec across;
     across.kind = SurfaceSpec::Kind::profile;
-    across.file = write("across.txt", 32);
+    across.file = writeCosineProfile(dir, "across.txt", a, 32);
     SurfaceSpec both = across;
-    both.alongLay = write("along.txt", 4);
+    both.alongLay = writeCosineProfile(dir, "along.txt", a, 4);
     const double kx = 2.0 * pi * 32.0 / L;
     const double ky = 2.0 * pi * 4.0 / L;
     const double areal = std::sqrt(0.5 * a * a * (kx * kx + ky * ky));
@@ -419,23 +428,11 @@ TEST(SurfaceSpec, ALaysRatioIsTheProfilesSlopeRatio)
     // isotropic; a second, isotropic side adds its power to both directions; a flat profile along
     // the lay (ratio infinite) is refused naming alongLay.
     const roughContactTest::TempDir dir;
-    const std::size_t n = 1024;
-    const double dx = 1e-6;
     const double a = 1e-6;
-    const double pi = std::acos(-1.0);
-    const auto write = [&](const std::string& name, double amplitude, int periods) {
-        const std::string path = (dir.path() / name).string();
-        std::ofstream out(path);
-        out.precision(17);
-        for (std::size_t i = 0; i < n; ++i) {
-            out << double(i) * dx << ' ' << amplitude * std::cos(2.0 * pi * periods * double(i) / double(n)) << '\n';
-        }
-        return path;
-    };
     SurfaceSpec lay;
     lay.kind = SurfaceSpec::Kind::profile;
-    lay.file = write("across.txt", a, 32);
-    lay.alongLay = write("along.txt", a, 4);
+    lay.file = writeCosineProfile(dir, "across.txt", a, 32);
+    lay.alongLay = writeCosineProfile(dir, "along.txt", a, 4);
     const std::optional<LaySpectra> one = equivalentLay({lay});
     ASSERT_TRUE(one.has_value());
     // 8 to 1e-4: the detrending of a finite profile takes a little of each cosine's slope, more
@@ -468,7 +465,7 @@ TEST(SurfaceSpec, ALaysRatioIsTheProfilesSlopeRatio)
     EXPECT_NEAR(two->stretch(), std::sqrt(2.0 * across2 / (along2 + across2)), 1e-9);
 
     SurfaceSpec flat = lay;
-    flat.alongLay = write("flat.txt", 0.0, 4);
+    flat.alongLay = writeCosineProfile(dir, "flat.txt", 0.0, 4);
     try {
         (void)equivalentLay({flat})->stretch();
         ADD_FAILURE() << "a flat profile along the lay taken";
