@@ -629,11 +629,14 @@ TEST(Cli, UnloadFromAddsTheJointThatCarriedThePeak)
             EXPECT_NEAR(value("unloading_h_per_k"), value("h_per_k"), 1e-3 * value("h_per_k"));
         }
     }
-    // Its errors: no cap, the peak at or above it, a model without an unloading curve, --check.
+    // Its errors: no cap, the peak at or above it, the gap, a model without an unloading curve,
+    // --check.
     expectError("--profile '" + standin + "' --synthesize 32 --model boundaryElement --Eprime 2e11 --loads 1e-4 "
                 "--unload-from 1MPa",
                 {"--unload-from", "--hardness"});
     expectError(p + " --hardness-from-yield --loads 1e-4 --unload-from 1GPa", {"--unload-from", "below the cap"});
+    expectError(p + " --hardness-from-yield --loads 1e-4 --unload-from 1MPa --gas air --gas-pressure 1e5 --temperature 300",
+                {"--unload-from", "gap"});
     expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --loads 1e-4 --unload-from 1MPa",
                 {"--unload-from", "boundaryElement"});
     expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --check --loads 1e-4 --unload-from 1MPa",
