@@ -143,4 +143,34 @@ def outputs(ctx):
                                             [float(r["ratio_max"]) for r in here]),
                           pages.span([float(r["law_min"]) for r in here] + [float(r["law_max"]) for r in here])])
     out.table("short", ["regime", "unloading / loading h", "today's law / exact unloading h"], short)
+    out.figure("loops", lambda path: draw_loops(s, path))
     return out
+
+
+def draw_loops(s, path):
+    """h_c/k_s against p/E' for each capped pair: the loading curve and the unloading branch from
+    each peak, on the first spectrum (geometric mean over the seeds)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    d = s.design
+    name = d.spectra[0]
+    fig, axes = plt.subplots(1, len(d.regimes), figsize=(4.2 * len(d.regimes), 4.2), squeeze=False)
+    for ax, regime in zip(axes[0], d.regimes):
+        label = next(lab for key, lab, _ in materials.REGIMES if key == regime)
+        for k, peak in enumerate(s.peaks(regime)):
+            per_seed = [s.points(name, regime, seed, peak) for seed in d.seeds]
+            loads = [f * peak for f in FRACTIONS]
+            mean = [[geometric_mean([float(p[i][j]["h_per_k_per_m"]) for p in per_seed]) for i in range(len(loads))]
+                    for j in (1, 2)]
+            ax.loglog(loads, mean[0], "o-", color="0.5", label="loading" if k == 0 else None)
+            ax.loglog(loads, mean[1], "s--", color=f"C{k}", label=f"unloading from {peak:.0e}")
+        ax.set_title(label.replace("capped: ", ""), fontsize=10)
+        ax.set_xlabel("p/E'")
+        ax.grid(True, which="major", alpha=0.3)
+    axes[0][0].set_ylabel("exact h_c/k_s [1/m]")
+    axes[0][0].legend(fontsize=8)
+    fig.suptitle(f"The joint that carried a peak ({name}, 512^2, seeds' geometric mean)", fontsize=11)
+    fig.tight_layout()
+    fig.savefig(path, dpi=80)
+    plt.close(fig)
