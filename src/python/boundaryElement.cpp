@@ -12,14 +12,11 @@
 #include "roughContact/parallel/Threads.hpp"
 #include "convert.hpp"
 
-#include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
-#include "roughContact/io/Numbers.hpp"
 #include "roughContact/material/Materials.hpp"
 #include "roughContact/models/BoundaryElement.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 
-#include <cmath>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -145,15 +142,8 @@ void bindBoundaryElement(py::module_& m)
                 for (double p : pressures) {
                     loads.push_back(p / Ep);
                 }
-                const std::optional<double> H = x.model->options().hardness;
-                if (unloadFrom && !H) {
-                    throw ParameterError("unload_from", "unloads a joint the cap has flattened: give hardness "
-                                                        "(elastic, unloading is loading)");
-                }
-                if (unloadFrom && (!std::isfinite(*unloadFrom) || *unloadFrom <= 0.0 || *unloadFrom >= *H)) {
-                    throw ParameterError("unload_from", "the peak is a pressure above 0 and below the cap H = " +
-                                                            formatNumber(*H, 6) + " Pa, not " +
-                                                            formatNumber(*unloadFrom, 6) + " Pa");
+                if (unloadFrom) {
+                    requireUnloadingPeak(*unloadFrom, x.model->options().hardness, "unload_from", "hardness");
                 }
                 std::vector<BoundaryElementPoint> points;
                 {

@@ -71,15 +71,7 @@ int runBoundaryElement(const Options& o)
     // --unload-from: the joint's peak, below the cap (at H the whole surface flows).
     std::optional<double> peak;
     if (o.unloadFrom) {
-        if (!bo.hardness) {
-            throw ParameterError("--unload-from", "unloads a joint the cap has flattened: give --hardness or "
-                                                  "--hardness-from-yield (elastic, unloading is loading)");
-        }
-        if (!std::isfinite(*o.unloadFrom) || *o.unloadFrom <= 0.0 || *o.unloadFrom >= *bo.hardness) {
-            throw ParameterError("--unload-from", "the peak is a pressure above 0 and below the cap H = " +
-                                                      formatNumber(*bo.hardness, 6) + " Pa, not " +
-                                                      formatNumber(*o.unloadFrom, 6) + " Pa");
-        }
+        requireUnloadingPeak(*o.unloadFrom, bo.hardness, "--unload-from", "--hardness or --hardness-from-yield");
         if (gapInputs) {
             throw ParameterError("--unload-from", "the gap's columns (--gas, --emissivity) of an unloaded joint are "
                                                   "not built yet: leave the gap out, or --unload-from");

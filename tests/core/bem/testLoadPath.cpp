@@ -151,7 +151,7 @@ TEST(LoadPath, UnloadingConductsMoreThanLoadingAndReloadingAboveThePeakLoadsOn)
         std::printf("P/P_max = %.3f: unloading/loading A_r %.3f, h %.3f\n", loads[k] / peak,
                     path[k].areaFraction / loading[k].areaFraction, ratio);
         EXPECT_GT(path[k].areaFraction, loading[k].areaFraction);
-        EXPECT_GT(ratio, 1.1);
+        EXPECT_GT(ratio, 1.1); // measured 1.8-4.6: more than the solves' 1e-4 by far
         if (k > 0) {
             EXPECT_LT(ratio, previous) << "the hysteresis falls towards the peak";
         }

@@ -547,17 +547,11 @@ ContactSolution PolonskyKeer::finish(std::vector<double> p, double P, ContactSol
     out.gap.resize(n);
     double sep = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
-        const double sv = p[i] > 0.0 ? 0.0 : std::max(0.0, u[i] - h_[i] + D);
+        const double sv = p[i] >= H ? std::min(0.0, u[i] - h_[i] + D)
+                          : p[i] > 0.0 ? 0.0
+                                       : std::max(0.0, u[i] - h_[i] + D);
         out.gap[i] = sv;
-        sep += sv;
-    }
-    if (options_.hardness) {
-        out.overlap.assign(n, 0.0);
-        for (std::size_t i = 0; i < n; ++i) {
-            if (p[i] >= H) {
-                out.overlap[i] = std::max(0.0, h_[i] - u[i] - D);
-            }
-        }
+        sep += std::max(0.0, sv);
     }
     out.pressure = std::move(p);
     out.meanPressure = P;

@@ -65,11 +65,10 @@ struct PolonskyKeerOptions {
 /// The solution at one mean pressure.
 struct ContactSolution {
     std::vector<double> pressure; ///< p [Pa] per cell (>= 0; <= H with the cap)
-    std::vector<double> gap;      ///< separation s [m] per cell: 0 in contact, > 0 apart
-    /// With the cap: the interpenetration h - u - D [m] of each cell at p = H (0 elsewhere), the
-    /// depth the cap flattened the surface there; kept as permanent set it is what a joint loaded
-    /// to this pressure is left with (BoundaryElementModel::deformedSurface). Empty without the cap.
-    std::vector<double> overlap;
+    /// Separation s = u - h + D [m] per cell: > 0 apart, 0 in elastic contact, and with the cap
+    /// <= 0 at p = H: there -s is the depth the cap flattened the surface, which a joint loaded
+    /// to this pressure keeps as permanent set (BoundaryElementModel::deformedSurface).
+    std::vector<double> gap;
     double meanPressure = 0.0;    ///< P = mean of p over all cells [Pa]
     double areaFraction = 0.0;    ///< A_r/A_n: the fraction of cells with p > 0
     double plasticFraction = 0.0; ///< the fraction of cells at p = H

@@ -90,10 +90,10 @@ double LaySpectra::stretch() const
 {
     const double across2 = spectralMoments(across).m2;
     const double along2 = spectralMoments(along).m2;
-    // A ratio outside the range, a flat profile along the lay's infinite one included, is
+    // A ratio outside the range, a flat profile's infinite one or 0/0 of two included, is
     // refused before it is divided out.
     const double m = maximumLayStretch * maximumLayStretch;
-    if (!(across2 <= m * along2 && along2 <= m * across2)) {
+    if (!(across2 > 0.0 && along2 > 0.0 && across2 <= m * along2 && along2 <= m * across2)) {
         std::ostringstream os;
         os << "the rms slope across the lay (" << across.source() << ", " << std::sqrt(across2) << ") over the one "
            << "along it (" << along.source() << ", " << std::sqrt(along2) << ")"

@@ -145,6 +145,22 @@ BoundaryElementPoint BoundaryElementModel::solve(double load, std::vector<double
     return out;
 }
 
+double requireUnloadingPeak(double peakPressure, const std::optional<double>& hardness, const std::string& name,
+                            const std::string& capName)
+{
+    if (!hardness) {
+        throw ParameterError(name, "unloads a joint the cap has flattened: give " + capName +
+                                       " (elastic, unloading is loading)");
+    }
+    if (!std::isfinite(peakPressure) || peakPressure <= 0.0 || peakPressure >= *hardness) {
+        std::ostringstream os;
+        os << "the peak is a pressure above 0 and below the cap H = " << *hardness << " Pa, not " << peakPressure
+           << " Pa";
+        throw ParameterError(name, os.str());
+    }
+    return peakPressure;
+}
+
 ArealSurface BoundaryElementModel::deformedSurface(double peakLoad) const
 {
     checkLoad(peakLoad);
@@ -167,7 +183,7 @@ ArealSurface BoundaryElementModel::deformedSurface(double peakLoad) const
     }
     std::vector<double> z = surface_.heights();
     for (std::size_t i = 0; i < z.size(); ++i) {
-        z[i] -= s.overlap[i];
+        z[i] += std::min(0.0, s.gap[i]); // the depth flattened at p = H (ContactSolution::gap)
     }
     std::ostringstream name;
     name << surface_.source() << " deformed at F/(A_n E') = " << peakLoad;

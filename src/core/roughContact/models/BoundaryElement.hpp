@@ -51,6 +51,13 @@ struct BoundaryElementOptions {
     double progressEvery = progressInterval;
 };
 
+/// The peak pressure [Pa] a front-end's option `name` gives a joint to unload from
+/// (BoundaryElementModel::loadPath): it needs the cap `hardness` (`capName`: how the front-end
+/// names it; elastic, unloading is loading) and lies above 0 and below H (at H the whole surface
+/// flows). Returns it; ParameterError naming `name` otherwise.
+double requireUnloadingPeak(double peakPressure, const std::optional<double>& hardness, const std::string& name,
+                            const std::string& capName);
+
 /// The operator's edges of a solve: mirrored, periodic or padded (a patch). ParameterError
 /// naming "mirror" for both periodic and mirrored (a mirrored map is its own periodic surface).
 HalfSpaceOperator::Edges edgesOf(bool periodic, bool mirrored);
@@ -133,8 +140,8 @@ public:
               progress = {}) const;
 
     /// The surface a joint loaded to peakLoad = F/(A_n E') with the cap is left with: the
-    /// heights solved less the cap's interpenetration at the points at p = H (ContactSolution::
-    /// overlap), kept as permanent set (docs/theory.md §7.3). Without a cap, the heights solved.
+    /// heights solved less the cap's interpenetration at the points at p = H (the negative
+    /// ContactSolution::gap there), kept as permanent set (docs/theory.md §7.3). Without a cap, the heights solved.
     /// ParameterError when peakLoad E' >= H (the whole surface flows) or the solve does not converge.
     ArealSurface deformedSurface(double peakLoad) const;
     /// The points at `loads` (F/(A_n E'), in the order given) of a joint that has carried
