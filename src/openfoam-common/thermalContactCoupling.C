@@ -10,6 +10,7 @@
 
 #include "roughContact/thermal/InterfaceCoupling.hpp"
 
+#include <algorithm>
 #include <exception>
 #include <string>
 
@@ -27,7 +28,8 @@ Foam::thermalContactCoupling::thermalContactCoupling(const label n)
     contactPressure(n, Zero),
     contactState(n, Zero),
     gapConductance(n, Zero),
-    totalConductance(n, Zero)
+    totalConductance(n, Zero),
+    peakPressure(n, Zero)
 {}
 
 
@@ -80,7 +82,20 @@ void Foam::thermalContactCoupling::couple
                     in.gapWidthNbr = nbr.gapWidth.cdata();
                 }
             }
+            if (settings.interface->loadHistory())
+            {
+                in.peakPressure = peakPressure.cdata();
+                in.peakPressureNbr = nbr.peakPressure.cdata();
+            }
             roughContact::couple(*settings.interface, in, cache, outputs);
+            if (settings.interface->loadHistory())
+            {
+                std::copy
+                (
+                    outputs.peakPressure.begin(), outputs.peakPressure.end(),
+                    peakPressure.begin()
+                );
+            }
         }
     }
     catch (const roughContact::FaceError& e)
@@ -132,6 +147,16 @@ void Foam::thermalContactCoupling::couple
     if (settings.mode != mode::contact)
     {
         return;
+    }
+    if (!saidLoadHistory)
+    {
+        const std::string note = settings.interface->loadHistoryNote();
+        if (!note.empty())
+        {
+            Info<< "thermalContactResistance: " << who().c_str() << ": "
+                << note.c_str() << endl;
+        }
+        saidLoadHistory = true;
     }
     const bool apart = out.apart > 0;
     const bool beyondTable = out.beyondTable > 0;

@@ -41,6 +41,8 @@ void bindThermal(pybind11::module_& m);
 void bindFittedLaw(pybind11::module_& m);
 /// SurfaceSpec, ContactInterface (interface.cpp).
 void bindInterface(pybind11::module_& m);
+/// ContactInterface's regime, regime_at and accuracy_band (interfaceRegime.cpp).
+void bindInterfaceRegime(pybind11::module_& m);
 /// check, SurfaceCheck (check.cpp).
 void bindCheck(pybind11::module_& m);
 /// plot (plot.cpp).

@@ -145,6 +145,16 @@ InterfaceSpec interfaceSpec(const std::vector<SurfaceSpec>& surfaces, const Mate
     return s;
 }
 
+namespace {
+
+// The peak keyword: none (0: loading), else a finite pressure >= 0.
+double checkedPeak(std::optional<double> peak)
+{
+    return peak ? roughContact::requireNonNegative("peak", roughContact::requireFinite("peak", *peak)) : 0.0;
+}
+
+} // namespace
+
 void bindInterface(py::module_& m)
 {
     py::class_<SurfaceSpec>(m, "SurfaceSpec",
@@ -248,6 +258,8 @@ void bindInterface(py::module_& m)
         "bem_points_per_decade (None: " + std::to_string(defaults.bemPointsPerDecade) + "), table_file (the "
         "boundary-element table's cache file, as the condition's "
         "constant/boundaryElementTable.NAME.csv: read when it holds this table, else built and written); "
+        "load_history (default True): with a hardness, the table holds unloading curves (the peak keyword of "
+        "area_fraction, conductance_per_conductivity and conductance); "
         "gap a GapSpec (gas and/or radiation beside the contact) or None; threads the process's threads of the "
         "boundary-element solves (set_threads; None: as they are). Building the table takes a fraction of a second "
         "for the multi-scale models, far longer for boundaryElement.";
@@ -263,11 +275,13 @@ void bindInterface(py::module_& m)
                          std::optional<double> hardness, bool hardnessFromYield,
                          std::optional<std::size_t> bemPointsPerDecade, std::optional<GapSpec> gap,
                          std::optional<std::string> detrend,
-                         std::optional<std::string> tableFile, const py::object& threads, std::optional<bool> mirror) {
-                 const InterfaceSpec s =
+                         std::optional<std::string> tableFile, const py::object& threads, std::optional<bool> mirror,
+                         bool loadHistory) {
+                 InterfaceSpec s =
                      interfaceSpec(surfaces, side1, side2, model, conductance, microhardness, vickers, minPressure,
                                    maxPressure, pointsPerDecade, synthesize, seed, periodic, hardness,
                                    hardnessFromYield, bemPointsPerDecade, gap, detrend, mirror);
+                 s.loadHistory = loadHistory;
                  if (tableFile && tableFile->empty()) {
                      throw ParameterError("table_file", "is empty: give the table's file name (None: no file)");
                  }
@@ -313,28 +327,54 @@ void bindInterface(py::module_& m)
              py::arg("periodic") = py::none(), py::arg("hardness") = py::none(),
              py::arg("hardness_from_yield") = false, py::arg("bem_points_per_decade") = py::none(),
              py::arg("gap") = py::none(), py::arg("detrend") = py::none(), py::arg("table_file") = py::none(),
-             py::arg("threads") = py::none(), py::arg("mirror") = py::none(),
+             py::arg("threads") = py::none(), py::arg("mirror") = py::none(), py::arg("load_history") = true,
              interfaceDoc.c_str())
         .def(
             "area_fraction",
-            [](const ContactInterface& ci, const py::object& P) {
-                return vectorize(P, "pressures", [&](double p) { return ci.areaFraction(p); });
+            [](const ContactInterface& ci, const py::object& P, std::optional<double> peak) {
+                const double pk = checkedPeak(peak);
+                return vectorize(P, "pressures", [&](double p) {
+                    return peak ? ci.face(p, 1.0, 1.0, pk).areaFraction : ci.areaFraction(p);
+                });
             },
-            py::arg("pressures"), "A_r/A_n at the nominal pressures [Pa] (0 for P <= 0, 1 beyond complete contact).")
+            py::arg("pressures"), py::kw_only(), py::arg("peak") = py::none(),
+            "A_r/A_n at the nominal pressures [Pa] (0 for P <= 0, 1 beyond complete contact); peak [Pa]: the "
+            "heaviest load the joint carried (below it, the unloading curves where the model has them: "
+            "remembers_load).")
         .def(
             "conductance_per_conductivity",
-            [](const ContactInterface& ci, const py::object& P) {
-                return vectorize(P, "pressures", [&](double p) { return ci.conductancePerConductivity(p); });
+            [](const ContactInterface& ci, const py::object& P, std::optional<double> peak) {
+                const double pk = checkedPeak(peak);
+                return vectorize(P, "pressures", [&](double p) {
+                    return peak ? ci.face(p, 1.0, 1.0, pk).conductance : ci.conductancePerConductivity(p);
+                });
             },
-            py::arg("pressures"), "h_c/k_s [1/m] at the nominal pressures [Pa] (inf beyond complete contact).")
+            py::arg("pressures"), py::kw_only(), py::arg("peak") = py::none(),
+            "h_c/k_s [1/m] at the nominal pressures [Pa] (inf beyond complete contact); peak as area_fraction's.")
         .def(
             "conductance",
-            [](const ContactInterface& ci, const py::object& P, double k1, double k2) {
-                return vectorize(P, "pressures", [&](double p) { return ci.face(p, k1, k2).conductance; });
+            [](const ContactInterface& ci, const py::object& P, double k1, double k2, std::optional<double> peak) {
+                const double pk = checkedPeak(peak);
+                return vectorize(P, "pressures", [&](double p) { return ci.face(p, k1, k2, pk).conductance; });
             },
-            py::arg("pressures"), py::arg("k1"), py::arg("k2"),
+            py::arg("pressures"), py::arg("k1"), py::arg("k2"), py::kw_only(), py::arg("peak") = py::none(),
             "h_c [W/(m^2 K)] at the pressures [Pa] between solids of conductivities k1, k2 [W/(m K)] "
-            "(k_s = 2 k1 k2/(k1 + k2)).")
+            "(k_s = 2 k1 k2/(k1 + k2)); peak as area_fraction's.")
+        .def_property_readonly("remembers_load", &ContactInterface::remembersLoad,
+                               "True when the model has unloading curves (boundaryElement with a hardness and "
+                               "load_history): below its peak a joint conducts as they say.")
+        .def_property_readonly(
+            "unloading_peaks",
+            [](const ContactInterface& ci) {
+                std::vector<double> peaks;
+                for (const UnloadingCurve& c : ci.unloading().curves()) {
+                    peaks.push_back(c.peak);
+                }
+                return toArray(peaks);
+            },
+            "The peaks [Pa] of the solved unloading curves (between them interpolated; docs/theory.md §7.6).")
+        .def_property_readonly("load_history_note", &ContactInterface::loadHistoryNote,
+                               "What the load history does with this model, as the condition's log says it.")
         .def(
             "mean_separation",
             [](const ContactInterface& ci, const py::object& P) {
@@ -389,40 +429,6 @@ void bindInterface(py::module_& m)
             py::arg("separation"), py::arg("T1"), py::arg("T2"),
             "(h_g, h_r) [W/(m^2 K)] at the separations Y [m] and the two face temperatures T1, T2 [K] (the gas "
             "at their mean), as the boundary condition adds them to h_c. ParameterError without a gap.")
-        .def_property_readonly(
-            "regime", [](const ContactInterface& ci) { return ci.regime().describe(); },
-            "The regime at the table's ends (p/E', p/(E' h'), P/H, the plasticity index) and the law's measured "
-            "accuracy band there (the log's lines).")
-        .def(
-            "regime_at",
-            [](const ContactInterface& ci, const py::object& P) {
-                const Array a = numbers(P, "pressures");
-                std::vector<std::pair<std::string, double>> at;
-                for (py::ssize_t i = 0; i < a.size(); ++i) {
-                    at.emplace_back("", a.data()[i]);
-                }
-                return ci.regime().describeAt(at);
-            },
-            py::arg("pressures"),
-            "The regime at the nominal pressures [Pa] (p/E', p/(E' h'), P/H) and the law's measured band of "
-            "h/exact there, a line each (none for P <= 0), as the condition's log says it at its faces' pressures.")
-        .def(
-            "accuracy_band",
-            [](const ContactInterface& ci, const py::object& P) {
-                const auto band = [&](double p, bool high) {
-                    if (!(p > 0.0) || ci.regime().areaModel == "boundaryElement") {
-                        return std::numeric_limits<double>::quiet_NaN();
-                    }
-                    const RegimeAt r = ci.regime().at(p);
-                    return r.band ? (high ? r.band->high : r.band->low) : std::numeric_limits<double>::quiet_NaN();
-                };
-                return py::make_tuple(vectorize(P, "pressures", [&](double p) { return band(p, false); }),
-                                      vectorize(P, "pressures", [&](double p) { return band(p, true); }));
-            },
-            py::arg("pressures"),
-            "(low, high): the smallest and largest h/exact the studies measured for this interface's law at the "
-            "nominal pressures [Pa] (docs/checking.md); NaN where nothing was measured, for P <= 0 and for the "
-            "exact model.")
         .def("summary", &ContactInterface::summary, "A few lines for a log.");
 }
 

@@ -114,6 +114,7 @@ PYBIND11_MODULE(roughcontact, m)
 
     // ---- the interface
     roughcontact_py::bindInterface(m);
+    roughcontact_py::bindInterfaceRegime(m);
     roughcontact_py::bindCheck(m);
     roughcontact_py::bindPlot(m);
 }

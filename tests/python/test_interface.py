@@ -79,6 +79,32 @@ def test_boundary_element_interface():
     assert np.all(np.diff(ci.table_area_fractions) >= 0)
 
 
+def test_a_capped_boundary_element_interface_unloads():
+    """With a hardness the table holds unloading curves (load_history, default True): below its
+    peak a joint conducts as they say, more than on loading; at the peak, and without memory,
+    the loading value; the peak keyword is checked."""
+    kw = dict(surfaces=[rc.SurfaceSpec.profile(STANDIN)], side1=STEEL_M, side2=STEEL_M, model="boundaryElement",
+              synthesize=32, seed=2, hardness_from_yield=True)
+    ci = rc.ContactInterface(**kw)
+    assert ci.remembers_load and len(ci.unloading_peaks) >= 4
+    assert "exact unloading curves" in ci.load_history_note
+    peak = ci.unloading_peaks[-2]
+    P = np.array([0.1, 0.3, 1.0]) * peak
+    loading = ci.conductance(P, 50.0, 50.0)
+    unloading = ci.conductance(P, 50.0, 50.0, peak=peak)
+    assert unloading[0] > 1.05 * loading[0]  # a tenth of the peak: the flattened summits conduct more
+    assert unloading[-1] == loading[-1]  # at the peak: the loading curve
+    assert np.array_equal(ci.conductance_per_conductivity(P), ci.conductance_per_conductivity(P, peak=0.0))
+    assert ci.area_fraction(P[0], peak=peak) > ci.area_fraction(P[0])
+    with pytest.raises(rc.ParameterError, match="^peak"):
+        ci.conductance(P, 50.0, 50.0, peak=float("nan"))
+    with pytest.raises(rc.ParameterError, match="^peak"):
+        ci.area_fraction(P, peak=-1.0)
+    forgetful = rc.ContactInterface(**kw, load_history=False)
+    assert not forgetful.remembers_load and forgetful.load_history_note == ""
+    assert np.array_equal(forgetful.conductance(P, 50.0, 50.0, peak=peak), loading)
+
+
 def test_boundary_element_table_file(tmp_path):
     """table_file (issue 21, item 3): the core's cache, as the condition keeps it in
     constant/boundaryElementTable.NAME.csv: written by the first build, read by the next (the same
@@ -88,7 +114,7 @@ def test_boundary_element_table_file(tmp_path):
     path = tmp_path / "boundaryElementTable.slabs.csv"
     built = rc.ContactInterface(**kw, table_file=str(path))
     text = path.read_text()
-    assert text.startswith("# roughContact boundary-element table v3") and "# sha256 " in text
+    assert text.startswith("# roughContact boundary-element table v4") and "# sha256 " in text
     inode = path.stat().st_ino  # a rewrite is a new file renamed over it: a new inode
     again = rc.ContactInterface(**kw, table_file=str(path))
     assert path.read_text() == text and path.stat().st_ino == inode  # reused, not rewritten

@@ -22,7 +22,8 @@ const char* const
 Foam::functionObjects::thermalContactMonitor::outputNames[nOutputs] =
 {
     "contactConductance", "contactAreaFraction", "contactPressure",
-    "contactState", "gapConductance"
+    "contactState", "gapConductance", "contactPeakPressure",
+    "contactUnloading"
 };
 
 
@@ -60,6 +61,7 @@ namespace
             scalar* x :
             {
                 &s.area, &s.touchingArea, &s.partialArea, &s.pressureArea,
+                &s.peakPressureArea,
                 &s.areaFractionArea, &s.areaFractionPartialArea,
                 &s.hTouchingArea, &s.hPartialArea, &s.hAllArea, &s.gapAllArea
             }
@@ -69,7 +71,8 @@ namespace
         }
         for
         (
-            std::size_t* c : {&s.apart, &s.partial, &s.complete, &s.beyondTable}
+            std::size_t* c :
+            {&s.apart, &s.partial, &s.complete, &s.beyondTable, &s.unloading}
         )
         {
             label n = label(*c);
@@ -105,11 +108,23 @@ void Foam::functionObjects::thermalContactMonitor::storeFields
     const label patchi = side.patch().index();
     const dimensionSet hDims(dimPower/dimArea/dimTemperature);
     const dimensionSet dims[nOutputs] =
-        {hDims, dimless, dimPressure, dimless, hDims};
+        {hDims, dimless, dimPressure, dimless, hDims, dimPressure, dimless};
+    // 1 where a face in contact is below its peak (unloaded or reloading)
+    scalarField unloading(side.size(), Zero);
+    if (side.loadHistory())
+    {
+        forAll(unloading, facei)
+        {
+            const scalar P = side.contactPressure()[facei];
+            unloading[facei] = P > 0 && P < side.peakPressure()[facei];
+        }
+    }
     const scalarField* values[nOutputs] =
     {
         &side.conductance(), &side.areaFraction(), &side.contactPressure(),
-        &side.contactState(), &side.gapConductance()
+        &side.contactState(), &side.gapConductance(),
+        side.loadHistory() ? &side.peakPressure() : &side.contactPressure(),
+        &unloading
     };
     for (label k = 0; k < nOutputs; ++k)
     {
@@ -117,6 +132,7 @@ void Foam::functionObjects::thermalContactMonitor::storeFields
         (
             (side.constantConductance() && k != outConductance)
          || (k == outGap && !side.hasGap())
+         || (k == outUnloading && !side.loadHistory())
         )
         {
             continue;

@@ -210,7 +210,8 @@ void Foam::thermalContactResistanceFvPatchScalarField::updateCoeffs()
             {
                 nbrT, nbrK, nbrP,
                 withGap ? &static_cast<const scalarField&>(nbrField) : nullptr,
-                withGap && nbrField.hasGapWidth() ? &nbrW : nullptr
+                withGap && nbrField.hasGapWidth() ? &nbrW : nullptr,
+                loadHistory() ? &nbrField.peakPressure() : nullptr
             },
             size(),
             [&nbrMap](const auto& f)
@@ -269,6 +270,10 @@ void Foam::thermalContactResistanceFvPatchScalarField::write(Ostream& os) const
         foamCompat::writeEntry(os, "pressureField", settings_->pressureFieldName);
     }
     settings_->writeGap(os);
+    if (loadHistory())
+    {
+        foamCompat::writeFieldEntry(os, "peakPressure", coupling_.peakPressure);
+    }
     writeKappa(os);
 }
 

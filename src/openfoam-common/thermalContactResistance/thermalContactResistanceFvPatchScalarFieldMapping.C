@@ -9,7 +9,70 @@
 #include "volFields.H"
 #include "foamCompat.H"
 
+#include <cmath>
 #include <memory>
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::thermalContactResistanceFvPatchScalarField::readPeakPressure
+(
+    const dictionary& dict
+)
+{
+    const bool recorded = dict.found("peakPressure");
+    const bool initial = dict.found("initialPeakPressure");
+    if (!loadHistory())
+    {
+        if (initial)
+        {
+            FatalIOErrorInFunction(dict)
+                << who().c_str() << ": entry 'initialPeakPressure' is the"
+                << " load a joint carried before the run, for a load history;"
+                << (
+                       settings_->mode == conductanceMode::contact
+                     ? " the contact entry has loadHistory no"
+                     : " a constant 'h' has none"
+                   )
+                << exit(FatalIOError);
+        }
+        return;
+    }
+    scalarField& peak = coupling_.peakPressure;
+    const char* entry = recorded ? "peakPressure" : "initialPeakPressure";
+    if (recorded)
+    {
+        // A restart (or a decomposed or mapped field): the memory as written
+#if defined(ROUGHCONTACT_FOUNDATION)
+        peak = scalarField("peakPressure", dimPressure, dict, patch().size());
+#else
+        peak = scalarField("peakPressure", dict, patch().size());
+#endif
+    }
+    else if (initial)
+    {
+        peak = thermalContactLine::pressureValues
+        (
+            thermalContactLine::newPressure
+            (
+                patch(), dict, db().time(), "initialPeakPressure"
+            )(),
+            patch(),
+            db().time()
+        );
+    }
+    forAll(peak, facei)
+    {
+        if (!(peak[facei] >= 0) || !std::isfinite(peak[facei]))
+        {
+            FatalIOErrorInFunction(dict)
+                << who().c_str() << ": entry '" << entry << "' gives "
+                << peak[facei] << " Pa at face " << facei << " ("
+                << patch().Cf()[facei] << "); a peak pressure must be"
+                << " finite and >= 0" << exit(FatalIOError);
+        }
+    }
+}
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -65,6 +128,7 @@ thermalContactResistanceFvPatchScalarField
     {
         pressure_ = thermalContactLine::newPressure(patch(), dict, db().time());
     }
+    readPeakPressure(dict);
     // The neighbour's field exists already when this region is read after
     // it: a neighbour of another type is reported here, before that other
     // condition (evaluated first) fails on it with no patch or file named.

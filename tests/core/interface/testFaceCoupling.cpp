@@ -11,6 +11,8 @@
 #include "roughContact/thermal/GapConductance.hpp"
 #include "roughContact/thermal/InterfaceCoupling.hpp"
 
+#include "SmallBoundaryElementSpec.hpp" // tests/support
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -594,4 +596,94 @@ TEST(FaceCoupling, InputThatIsProbablyAMistakeIsCountedAndSaid)
     in.gapWidthNbr = width.data();
     couple(gas, in, gasCache, out);
     EXPECT_EQ(out.apartAtFirstTouch, 0u);
+}
+
+namespace {
+
+// The small capped boundary-element interface (SmallBoundaryElementSpec with a cap: 17 loads
+// 0.1 MPa - 1 GPa and unloading curves from four peaks), built once.
+const ContactInterface& remembering()
+{
+    static const ContactInterface ci([] {
+        InterfaceSpec s = roughContactTest::smallBoundaryElementSpec();
+        s.hardness = 2e9;
+        return s;
+    }());
+    return ci;
+}
+
+} // namespace
+
+TEST(FaceCoupling, ALoadThatOnlyGrowsIsTheSameWithAndWithoutHistory)
+{
+    const ContactInterface& iface = remembering();
+    ASSERT_TRUE(iface.remembersLoad());
+    Side side(5);
+    std::vector<double> peak(5, 0.0);
+    CouplingCache withCache, withoutCache;
+    CouplingOutputs with, without;
+    for (double scale : {1.0, 1.0, 3.0, 10.0, 10.0, 47.0}) {
+        for (std::size_t i = 0; i < 5; ++i) {
+            side.P[i] = side.Pnbr[i] = scale * 1e6 * double(i); // face 0 apart
+        }
+        CouplingInputs in = side.inputs();
+        couple(iface, in, withoutCache, without);
+        in.peakPressure = peak.data();
+        in.peakPressureNbr = peak.data();
+        couple(iface, in, withCache, with);
+        peak = with.peakPressure;
+        EXPECT_EQ(with.unloading, 0u);
+        EXPECT_EQ(with.contactConductance, without.contactConductance); // bit for bit
+        EXPECT_EQ(with.areaFraction, without.areaFraction);
+        EXPECT_EQ(with.valueFraction, without.valueFraction);
+        EXPECT_EQ(with.peakPressure, with.pressure);
+    }
+}
+
+TEST(FaceCoupling, AFaceBelowItsPeakUnloadsByTheInterfacesCurves)
+{
+    const ContactInterface& iface = remembering();
+    Side side(4);
+    side.P = {2e7, 2e7, 2e7, 3e8};
+    side.Pnbr = side.P;
+    // Face 0 at its peak's tenth, on this side's memory; face 1 on the neighbour's; face 2 never
+    // heavier (loading); face 3 loaded beyond its old peak (loading on).
+    const std::vector<double> mine{2e8, 0.0, 0.0, 1e8};
+    const std::vector<double> theirs{0.0, 2e8, 1e7, 0.0};
+    CouplingInputs in = side.inputs();
+    in.peakPressure = mine.data();
+    in.peakPressureNbr = theirs.data();
+    CouplingCache cache;
+    CouplingOutputs out;
+    couple(iface, in, cache, out);
+    EXPECT_EQ(out.peakPressure, (std::vector<double>{2e8, 2e8, 2e7, 3e8}));
+    EXPECT_EQ(out.unloading, 2u);
+    for (std::size_t i = 0; i < 4; ++i) {
+        const FaceContact f = iface.face(side.P[i], 50.0, 50.0, out.peakPressure[i]);
+        EXPECT_EQ(out.contactConductance[i], f.conductance) << i;
+        EXPECT_EQ(out.areaFraction[i], f.areaFraction) << i;
+    }
+    EXPECT_GT(out.contactConductance[0], 1.1 * out.contactConductance[2]); // unloaded: more
+    EXPECT_EQ(out.contactConductance[0], out.contactConductance[1]);        // either side's memory
+    // The cache follows the peak, not only the pressure.
+    const std::vector<double> none(4, 0.0);
+    in.peakPressure = none.data();
+    in.peakPressureNbr = none.data();
+    couple(iface, in, cache, out);
+    EXPECT_EQ(out.contactConductance[0], out.contactConductance[2]);
+    // A bad memory is named with its face.
+    std::vector<double> bad = mine;
+    bad[3] = std::nan("");
+    in.peakPressure = bad.data();
+    try {
+        couple(iface, in, cache, out);
+        ADD_FAILURE() << "a NaN peak accepted";
+    } catch (const FaceError& e) {
+        EXPECT_EQ(e.face(), 3u);
+        EXPECT_NE(std::string(e.what()).find("peak pressure"), std::string::npos) << e.what();
+    }
+    bad[3] = -1.0;
+    EXPECT_THROW(couple(iface, in, cache, out), FaceError);
+    in.peakPressureNbr = nullptr; // one side's memory without the other's
+    EXPECT_THROW(couple(iface, in, cache, out), ParameterError);
 }

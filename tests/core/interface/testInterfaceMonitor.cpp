@@ -35,7 +35,7 @@ TEST(InterfaceMonitor, HeaderNamesTheSidesAndTheColumns)
     // One line, the header of a plain CSV file (no comment lines: numpy and pandas read it as is).
     EXPECT_EQ(interfaceSeriesHeader("bottom", "top"),
               "time,Q_from_bottom_W,Q_into_top_W,h_mean_touching,h_mean_all,h_gap_mean_all,P_mean_Pa,"
-              "Ar_An_mean_touching,faces_apart,faces_partial,faces_complete\n");
+              "Ar_An_mean_touching,faces_apart,faces_partial,faces_complete,P_peak_mean_Pa,faces_unloading\n");
 }
 
 // Four faces of areas 1, 2, 3, 4 (the summary of testFaceCoupling's
@@ -54,8 +54,10 @@ TEST(InterfaceMonitor, RowHoldsTheAreaWeightedMeans)
     s.hTouchingArea = 2e4 + 9e4 + 8e5;    // h 0, 1e4, 3e4, 2e5
     s.hAllArea = 2e4 + 9e4 + 8e5 + 5.0;   // the face apart: h_gap 5
     s.gapAllArea = 5.0 + 10.0;
+    s.peakPressureArea = 4e6 + 9e6 + 2e9; // peaks 0, 2e6, 3e6, 5e8
+    s.unloading = 1;
     const std::vector<std::string> f = fields(interfaceSeriesRow(1500.0, 12.5, 12.25, s));
-    ASSERT_EQ(f.size(), 11U);
+    ASSERT_EQ(f.size(), 13U);
     EXPECT_EQ(f[0], "1500");
     EXPECT_EQ(f[1], "12.5");
     EXPECT_EQ(f[2], "12.25");
@@ -66,14 +68,16 @@ TEST(InterfaceMonitor, RowHoldsTheAreaWeightedMeans)
     EXPECT_EQ(f[7], "0.4533333333"); // 4.08/9
     EXPECT_EQ(f[8], "1");
     EXPECT_EQ(f[9], "2");            // partial and beyond the table
-    EXPECT_EQ(f[10], "1\n");         // the last field carries the line's end
+    EXPECT_EQ(f[10], "1");
+    EXPECT_EQ(f[11], "201300000");   // 2.013e9/10
+    EXPECT_EQ(f[12], "1\n");         // the last field carries the line's end
 }
 
 TEST(InterfaceMonitor, AMeanOverNoFacesIsEmptyNotNaN)
 {
     CouplingSummary s; // no face at all (a processor's empty patch, summed: nothing)
     const std::string row = interfaceSeriesRow(0.0, 0.0, 0.0, s);
-    EXPECT_EQ(row, "0,0,0,,,,,,0,0,0\n");
+    EXPECT_EQ(row, "0,0,0,,,,,,0,0,0,,0\n");
     EXPECT_EQ(row.find("nan"), std::string::npos);
 }
 

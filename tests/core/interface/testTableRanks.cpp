@@ -265,6 +265,46 @@ TEST(TableRanks, RanksShareTheBuildAndAllHoldTheSameTable)
     }
 }
 
+TEST(TableRanks, RanksShareTheUnloadingCurvesToo)
+{
+    // With a cap the table holds unloading curves, dealt by peak: every rank holds rank 0's,
+    // the file holds them, and they are the serial build's (each curve is one load path solved
+    // alike on whichever rank: bit for bit, the peak's capped solve being the same cold start).
+    InterfaceSpec spec = smallSpec();
+    spec.hardness = 2e9;
+    const BoundaryElementTable one(spec);
+    const BoundaryElementTablePoints serial = one.build();
+    ASSERT_FALSE(serial.unloading.empty());
+    const std::string dir = freshDirectory("tableRanksUnloading");
+    const std::string file = dir + "/table.csv";
+    const std::vector<RankRun> runs = runJob(spec, 3, file);
+    for (std::size_t r = 0; r < 3; ++r) {
+        SCOPED_TRACE("rank " + std::to_string(r));
+        ASSERT_EQ(runs[r].error, "");
+        ASSERT_EQ(runs[r].points.unloading.size(), serial.unloading.size());
+        for (std::size_t c = 0; c < serial.unloading.size(); ++c) {
+            EXPECT_EQ(runs[r].points.unloading[c].peak, serial.unloading[c].peak);
+            EXPECT_EQ(runs[r].points.unloading[c].pressures, serial.unloading[c].pressures);
+            EXPECT_EQ(runs[r].points.unloading[c].conductancesPerConductivity,
+                      serial.unloading[c].conductancesPerConductivity);
+            EXPECT_EQ(runs[r].points.unloading[c].separations, serial.unloading[c].separations);
+        }
+    }
+    const BoundaryElementTableRead read = one.read(file);
+    ASSERT_EQ(read.status, BoundaryElementTableRead::Status::ok) << read.reason;
+    ASSERT_EQ(read.points->unloading.size(), serial.unloading.size());
+    EXPECT_EQ(read.points->unloading.back().areaFractions, serial.unloading.back().areaFractions);
+    // Read back by every rank: the curves travel with the broadcast.
+    const std::vector<RankRun> reused = runJob(spec, 3, file);
+    for (std::size_t r = 0; r < 3; ++r) {
+        ASSERT_EQ(reused[r].error, "");
+        ASSERT_EQ(reused[r].points.unloading.size(), serial.unloading.size());
+        EXPECT_EQ(reused[r].points.unloading.front().conductancesPerConductivity,
+                  serial.unloading.front().conductancesPerConductivity);
+    }
+    std::filesystem::remove_all(dir);
+}
+
 TEST(TableRanks, APaddedMapsWarningIsTheSerialBuildsOnEveryRank)
 {
     // The gains of the patch correction travel with the loads' values (BoundaryElementTable.cpp):

@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -43,11 +44,12 @@ const char* const patchWarningMirror =
 // patch has the patch's own constriction removed (BoundaryElement.hpp); 3 since the file
 // carries the mean separation (header v2). A table of an older version is foreign and rebuilt
 // (an older header is reported as foreign too, before its key is read); 4 since the file ends
-// in the digest of its contents (header v3).
-constexpr std::uint64_t formatVersion = 4;
+// in the digest of its contents (header v3); 5 since it carries the unloading curves (header v4).
+constexpr std::uint64_t formatVersion = 5;
 constexpr const char* headerStem = "# roughContact boundary-element table v";
 constexpr const char* columns = "pressure,area,h_per_k,separation";
 constexpr const char* digestTag = "# sha256 ";
+constexpr const char* unloadingTag = "# unloading from ";
 // h_c/k_s beyond this is perfect contact for any mesh (as ContactTable's ceiling).
 constexpr double conductanceCeiling = 1e9;
 
@@ -169,6 +171,18 @@ ContactTable BoundaryElementTablePoints::table(double Eprime) const
                                     end, Eprime, separations);
 }
 
+UnloadingTable BoundaryElementTablePoints::unloadingTable(const ContactTable& loading,
+                                                          std::optional<double> hardness) const
+{
+    return UnloadingTable(
+        unloading,
+        [&](double P) {
+            const ContactTable::Values v = loading.values(P);
+            return std::array<double, 3>{v.areaFraction, v.conductancePerConductivity, loading.meanSeparation(P)};
+        },
+        hardness);
+}
+
 BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
     // A synthesized surface is periodic (solvedSurface refuses 'periodic false' with it).
     : periodic_(spec.synthesize ? true : spec.periodic.value_or(false)), surface_(solvedSurface(spec))
@@ -195,6 +209,7 @@ BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
     precondition_ = defaults.precondition;
     pointsPerDecade_ = spec.bemPointsPerDecade;
     tableRanks_ = spec.tableRanks;
+    unloads_ = hardness_.has_value() && spec.loadHistory;
     limits::requireInRange("pointsPerDecade", double(pointsPerDecade_), double(limits::minimumPointsPerDecade),
                            double(limits::maximumPointsPerDecade), "");
     const double minP = spec.minPressure.value_or(1e-6 * Eprime_);
@@ -239,6 +254,7 @@ BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
     k.f64(tolerance_);
     k.f64(conductanceTolerance);
     k.u64(precondition_ ? 1 : 0);
+    k.u64(unloads_ ? unloadingDecades : 0);
     key_ = k.sha256Hex();
 
     std::ostringstream os;
@@ -253,6 +269,9 @@ BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
     }
     os << "; " << n << " loads from " << minP << " to " << maxP << " Pa (" << pointsPerDecade_
        << " per decade); tolerance " << tolerance_;
+    if (unloads_) {
+        os << "; unloading curves from two peaks a decade, each " << unloadingDecades << " decades down";
+    }
     inputs_ = os.str();
 }
 
@@ -260,7 +279,12 @@ double BoundaryElementTable::estimatedSeconds() const
 {
     const HalfSpaceOperator op(surface_.nx(), surface_.ny(), surface_.dx(), surface_.dy(), Eprime_,
                                edgesOf(periodic_, mirrored_));
-    return estimatedCurveSeconds(op, pressures_.size());
+    // An unloading curve: its peak's capped solve and its loads, counted as loads of the table.
+    std::size_t solves = pressures_.size();
+    for (std::size_t peak : unloadingPeaks(pressures_.size())) {
+        solves += 1 + unloadingLoads(peak).size();
+    }
+    return estimatedCurveSeconds(op, solves);
 }
 
 std::vector<std::size_t> shareOfLoads(std::size_t loads, std::size_t rank, std::size_t ranks)
@@ -281,18 +305,90 @@ std::vector<std::size_t> shareOfLoads(std::size_t loads, std::size_t rank, std::
     return mine;
 }
 
-std::vector<BoundaryElementPoint> BoundaryElementTable::solveLoads(const std::vector<std::size_t>& indices,
-                                                                   const Progress& progress,
-                                                                   const SolveProgressCallback& solveProgress) const
+BoundaryElementOptions BoundaryElementTable::solveOptions() const
 {
     BoundaryElementOptions bo;
-    bo.progress = solveProgress;
     bo.detrend = detrend_;
     bo.periodic = periodic_;
     bo.mirrored = mirrored_;
     bo.hardness = hardness_;
     bo.tolerance = tolerance_;
     bo.precondition = precondition_;
+    return bo;
+}
+
+std::vector<std::size_t> BoundaryElementTable::unloadingPeaks(std::size_t rows) const
+{
+    std::vector<std::size_t> peaks;
+    if (!unloads_) {
+        return peaks;
+    }
+    // Down from the last row while a curve's first load (a stride below) lies in the table.
+    const std::size_t step = unloadingPeakStep();
+    const std::size_t stride = unloadingStride();
+    for (std::size_t j = std::min(rows, loads_.size()); j >= stride + 1; j -= step) {
+        peaks.push_back(j - 1);
+        if (j <= step) {
+            break;
+        }
+    }
+    std::reverse(peaks.begin(), peaks.end());
+    return peaks;
+}
+
+std::vector<std::size_t> BoundaryElementTable::unloadingLoads(std::size_t peak) const
+{
+    // Every stride-th load down from the peak, over the decades the curve spans.
+    std::vector<std::size_t> out;
+    const std::size_t span = unloadingDecades * pointsPerDecade_;
+    const std::size_t stride = unloadingStride();
+    for (std::size_t d = stride; d <= std::min(span, peak); d += stride) {
+        out.push_back(peak - d);
+    }
+    std::reverse(out.begin(), out.end());
+    return out;
+}
+
+std::vector<BoundaryElementPoint> BoundaryElementTable::solveUnloading(std::size_t peak) const
+{
+    std::vector<double> loads;
+    for (std::size_t k : unloadingLoads(peak)) {
+        loads.push_back(loads_.at(k));
+    }
+    return BoundaryElementModel(surface_, Eprime_, solveOptions()).loadPath(loads_.at(peak), loads);
+}
+
+UnloadingCurve BoundaryElementTable::unloadingCurve(std::size_t peak, const std::vector<double>& areas,
+                                                    const std::vector<double>& conductances,
+                                                    const std::vector<double>& separations) const
+{
+    UnloadingCurve c;
+    c.peak = pressures_.at(peak);
+    const std::vector<std::size_t> at = unloadingLoads(peak);
+    for (std::size_t i = 0; i < at.size(); ++i) {
+        const double P = pressures_[at[i]];
+        if (!(std::isfinite(areas[i]) && std::isfinite(conductances[i]) && std::isfinite(separations[i]) &&
+              areas[i] > 0.0 && areas[i] <= 1.0 && conductances[i] > 0.0 && separations[i] >= 0.0)) {
+            std::ostringstream os;
+            os << "unloaded from " << c.peak << " Pa, the solve gives A_r/A_n = " << areas[i] << ", h_c/k_s = "
+               << conductances[i] << " 1/m and a separation of " << separations[i] << " m at " << P
+               << " Pa; the table needs A_r/A_n in (0, 1], a finite h_c/k_s > 0 and a finite separation >= 0";
+            throw ParameterError("boundary-element table", os.str());
+        }
+        c.pressures.push_back(P);
+        c.areaFractions.push_back(areas[i]);
+        c.conductancesPerConductivity.push_back(conductances[i]);
+        c.separations.push_back(separations[i]);
+    }
+    return c;
+}
+
+std::vector<BoundaryElementPoint> BoundaryElementTable::solveLoads(const std::vector<std::size_t>& indices,
+                                                                   const Progress& progress,
+                                                                   const SolveProgressCallback& solveProgress) const
+{
+    BoundaryElementOptions bo = solveOptions();
+    bo.progress = solveProgress;
     const BoundaryElementModel model(surface_, Eprime_, bo);
     const auto start = std::chrono::steady_clock::now();
     std::vector<double> loads;
@@ -322,6 +418,15 @@ BoundaryElementTablePoints BoundaryElementTable::build(const Progress& progress,
     }
     BoundaryElementTablePoints points = assemble(areas, conductances, separations);
     points.patchWarning = patchCorrectionWarning(curve, Eprime_, patchWarningMirror);
+    for (std::size_t peak : unloadingPeaks(points.pressures.size())) {
+        std::vector<double> a, h, y;
+        for (const BoundaryElementPoint& p : solveUnloading(peak)) {
+            a.push_back(p.areaFraction);
+            h.push_back(p.conductancePerConductivity);
+            y.push_back(p.meanSeparation);
+        }
+        points.unloading.push_back(unloadingCurve(peak, a, h, y));
+    }
     return points;
 }
 
@@ -397,6 +502,13 @@ std::string BoundaryElementTable::write(const BoundaryElementTablePoints& points
         s += number(points.pressures[k]) + "," + number(points.areaFractions[k]) + "," +
              number(points.conductancesPerConductivity[k]) + "," + number(points.separations[k]) + "\n";
     }
+    for (const UnloadingCurve& c : points.unloading) {
+        s += unloadingTag + number(c.peak) + "\n";
+        for (std::size_t k = 0; k < c.pressures.size(); ++k) {
+            s += number(c.pressures[k]) + "," + number(c.areaFractions[k]) + "," +
+                 number(c.conductancesPerConductivity[k]) + "," + number(c.separations[k]) + "\n";
+        }
+    }
     s += digestTag + digest(s) + "\n";
     return s;
 }
@@ -423,7 +535,7 @@ BoundaryElementTableRead BoundaryElementTable::parse(const std::string& text) co
             r.status = BoundaryElementTableRead::Status::foreign;
             r.reason = "it is a table of format " + detail::printable(lines[0].substr(std::string(headerStem).size() - 1), 20) +
                        ", not this version's (" + boundaryElementTableHeader +
-                       "; v2 added the mean separation, v3 the digest)";
+                       "; v2 added the mean separation, v3 the digest, v4 the unloading curves)";
             return r;
         }
         if (lines.empty() || lines[0] != boundaryElementTableHeader) {
@@ -471,10 +583,9 @@ BoundaryElementTableRead BoundaryElementTable::parse(const std::string& text) co
         if (lines.back().rfind(digestTag, 0) != 0) {
             return corrupt(std::string("the last line is not '") + digestTag + "<hash>' (cut short?)");
         }
-        for (std::size_t i = 5; i + 1 < lines.size(); ++i) {
+        // Four comma-separated finite numbers, or why not.
+        const auto row = [&](std::size_t i, double (&v)[4]) {
             const std::string& line = lines[i];
-            // Four comma-separated finite numbers.
-            double v[4];
             bool good = true;
             std::size_t from = 0;
             for (std::size_t f = 0; f < 4 && good; ++f) {
@@ -488,9 +599,15 @@ BoundaryElementTableRead BoundaryElementTable::parse(const std::string& text) co
                        std::isfinite(v[f]);
                 from = comma + 1;
             }
-            if (!good) {
-                return corrupt("line " + std::to_string(i + 1) + " '" + detail::printable(line, 80) +
-                               "' is not four finite numbers P,area,h_per_k,separation");
+            return good ? std::string()
+                        : "line " + std::to_string(i + 1) + " '" + detail::printable(line, 80) +
+                              "' is not four finite numbers P,area,h_per_k,separation";
+        };
+        std::size_t i = 5;
+        for (; i + 1 < lines.size() && lines[i].rfind(unloadingTag, 0) != 0; ++i) {
+            double v[4];
+            if (const std::string bad = row(i, v); !bad.empty()) {
+                return corrupt(bad);
             }
             const std::size_t k = i - 5;
             if (k >= pressures_.size() || v[0] != pressures_[k]) {
@@ -523,7 +640,42 @@ BoundaryElementTableRead BoundaryElementTable::parse(const std::string& text) co
             return corrupt(std::to_string(n) + " points of " + std::to_string(pressures_.size()) +
                            " loads do not make a whole table ending at " + endName(p.end) + " (cut short?)");
         }
-        (void)p.table(Eprime_); // the checks of a table: increasing, in range, non-decreasing
+        // The unloading curves: one block per peak of unloadingPeaks(n), each at its loads.
+        for (std::size_t peak : unloadingPeaks(n)) {
+            if (!(i + 1 < lines.size()) || lines[i] != unloadingTag + number(pressures_[peak])) {
+                return corrupt("line " + std::to_string(i + 1) + " is not '" + unloadingTag +
+                               number(pressures_[peak]) + "' (the unloading curve from the table's load " +
+                               std::to_string(peak + 1) + ")");
+            }
+            ++i;
+            UnloadingCurve c;
+            c.peak = pressures_[peak];
+            for (std::size_t k : unloadingLoads(peak)) {
+                double v[4];
+                if (!(i + 1 < lines.size())) {
+                    return corrupt("the unloading curve from " + number(c.peak) + " Pa is cut short");
+                }
+                if (const std::string bad = row(i, v); !bad.empty()) {
+                    return corrupt(bad);
+                }
+                if (v[0] != pressures_[k]) {
+                    return corrupt("line " + std::to_string(i + 1) + ": the pressure " + number(v[0]) +
+                                   " Pa is not the unloading curve's load " + number(pressures_[k]) + " Pa");
+                }
+                c.pressures.push_back(v[0]);
+                c.areaFractions.push_back(v[1]);
+                c.conductancesPerConductivity.push_back(v[2]);
+                c.separations.push_back(v[3]);
+                ++i;
+            }
+            p.unloading.push_back(std::move(c));
+        }
+        if (i + 1 != lines.size()) {
+            return corrupt("line " + std::to_string(i + 1) + " '" + detail::printable(lines[i], 80) +
+                           "' follows the table's last curve");
+        }
+        // The checks of a table (increasing, in range, non-decreasing) and of its unloading curves.
+        (void)p.unloadingTable(p.table(Eprime_), hardness_);
         // Last, the contents against their digest: a file whose numbers were changed (by hand, or
         // damaged) cannot be told from a valid one by the checks above.
         const std::size_t digestLine = text.rfind(digestTag);
@@ -585,7 +737,8 @@ bool isBoundaryElementTableText(const std::string& start)
 namespace {
 
 // A table's points as doubles, for a broadcast: their count, the four columns, the
-// complete-contact pressure (-1: none, so that no infinity need travel) and the end. Exact.
+// complete-contact pressure (-1: none, so that no infinity need travel), the end, and the
+// unloading curves' count, then each curve's peak, count and four columns. Exact.
 std::vector<double> flatten(const BoundaryElementTablePoints& p)
 {
     std::vector<double> v{double(p.pressures.size())};
@@ -595,23 +748,61 @@ std::vector<double> flatten(const BoundaryElementTablePoints& p)
     }
     v.push_back(std::isinf(p.completeContactPressure) ? -1.0 : p.completeContactPressure);
     v.push_back(double(int(p.end)));
+    v.push_back(double(p.unloading.size()));
+    for (const UnloadingCurve& u : p.unloading) {
+        v.push_back(u.peak);
+        v.push_back(double(u.pressures.size()));
+        for (const std::vector<double>* c :
+             {&u.pressures, &u.areaFractions, &u.conductancesPerConductivity, &u.separations}) {
+            v.insert(v.end(), c->begin(), c->end());
+        }
+    }
     return v;
 }
 
 BoundaryElementTablePoints unflatten(const std::vector<double>& v, std::size_t at)
 {
+    const auto incomplete = [] {
+        return ParameterError("boundary-element table", "the points received from rank 0 are incomplete");
+    };
+    // n values from v[i] on into c, or incomplete.
+    const auto take = [&](std::size_t& i, std::size_t n, std::vector<double>& c) {
+        if (v.size() < i + n) {
+            throw incomplete();
+        }
+        c.assign(v.begin() + std::ptrdiff_t(i), v.begin() + std::ptrdiff_t(i + n));
+        i += n;
+    };
     BoundaryElementTablePoints p;
     const auto n = static_cast<std::size_t>(v.at(at));
-    if (v.size() != at + 1 + 4 * n + 2) {
-        throw ParameterError("boundary-element table", "the points received from rank 0 are incomplete");
-    }
     std::size_t i = at + 1;
     for (std::vector<double>* c : {&p.pressures, &p.areaFractions, &p.conductancesPerConductivity, &p.separations}) {
-        c->assign(v.begin() + std::ptrdiff_t(i), v.begin() + std::ptrdiff_t(i + n));
-        i += n;
+        take(i, n, *c);
+    }
+    if (v.size() < i + 3) {
+        throw incomplete();
     }
     p.completeContactPressure = v[i] < 0.0 ? std::numeric_limits<double>::infinity() : v[i];
     p.end = ContactTable::End(int(v[i + 1]));
+    const auto curves = static_cast<std::size_t>(v[i + 2]);
+    i += 3;
+    for (std::size_t c = 0; c < curves; ++c) {
+        if (v.size() < i + 2) {
+            throw incomplete();
+        }
+        UnloadingCurve u;
+        u.peak = v[i];
+        const auto m = static_cast<std::size_t>(v[i + 1]);
+        i += 2;
+        for (std::vector<double>* col :
+             {&u.pressures, &u.areaFractions, &u.conductancesPerConductivity, &u.separations}) {
+            take(i, m, *col);
+        }
+        p.unloading.push_back(std::move(u));
+    }
+    if (i != v.size()) {
+        throw incomplete();
+    }
     return p;
 }
 
@@ -718,7 +909,11 @@ BoundaryElementTablePoints BoundaryElementTable::loadOrBuild(const std::string& 
                 const auto sharing = static_cast<std::size_t>(decision[1]);
                 std::ostringstream os;
                 os.precision(2);
-                os << "building the boundary-element table: " << loads_.size() << " loads, about "
+                os << "building the boundary-element table: " << loads_.size() << " loads";
+                if (unloads_) {
+                    os << " and " << unloadingPeaks(loads_.size()).size() << " unloading curves";
+                }
+                os << ", about "
                    << estimatedSeconds() / double(sharing) << " s";
                 if (sharing > 1) {
                     os << " (shared by " << sharing << " ranks, this one solving "
@@ -796,6 +991,61 @@ BoundaryElementTablePoints BoundaryElementTable::loadOrBuild(const std::string& 
             solved[k].patchCorrectionGain = values[3 * n + k];
         }
         points.patchWarning = patchCorrectionWarning(solved, Eprime_, patchWarningMirror);
+    }
+    {
+        // The unloading curves, dealt to the sharing ranks from the heaviest peak down (the
+        // solves of a peak are one load path); each curve's three columns summed to all as above.
+        const std::vector<std::size_t> peaks = unloadingPeaks(points.pressures.size());
+        std::vector<std::size_t> offset{0};
+        for (std::size_t peak : peaks) {
+            offset.push_back(offset.back() + 3 * unloadingLoads(peak).size());
+        }
+        std::vector<double> curves(offset.back() + 1, 0.0);
+        try {
+            for (std::size_t c = 0; c < peaks.size(); ++c) {
+                if ((peaks.size() - 1 - c) % sharing != ranks.rank) {
+                    continue;
+                }
+                const auto t0 = std::chrono::steady_clock::now();
+                const std::vector<BoundaryElementPoint> solved = solveUnloading(peaks[c]);
+                const std::size_t m = solved.size();
+                for (std::size_t k = 0; k < m; ++k) {
+                    curves[offset[c] + k] = solved[k].areaFraction;
+                    curves[offset[c] + m + k] = solved[k].conductancePerConductivity;
+                    curves[offset[c] + 2 * m + k] = solved[k].meanSeparation;
+                }
+                std::ostringstream os;
+                os.precision(3);
+                os << "unloading curve from " << pressures_[peaks[c]] << " Pa (" << c + 1 << " of " << peaks.size()
+                   << "): " << m << " loads in "
+                   << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s";
+                say(os.str(), false);
+            }
+        } catch (...) {
+            if (!shared) {
+                throw;
+            }
+            failure = std::current_exception();
+            curves.assign(offset.back() + 1, 0.0);
+            curves.back() = 1.0;
+        }
+        exchange(curves, true);
+        if (curves.back() > 0.0) {
+            if (failure) {
+                std::rethrow_exception(failure);
+            }
+            throw ParameterError("boundary-element table", "not built: an unloading curve's solves failed on " +
+                                                               std::to_string(std::lround(curves.back())) +
+                                                               " rank(s) (their errors say why)");
+        }
+        for (std::size_t c = 0; c < peaks.size(); ++c) {
+            const std::size_t m = (offset[c + 1] - offset[c]) / 3;
+            const auto part = [&](std::size_t col) {
+                const auto from = curves.begin() + std::ptrdiff_t(offset[c] + col * m);
+                return std::vector<double>(from, from + std::ptrdiff_t(m));
+            };
+            points.unloading.push_back(unloadingCurve(peaks[c], part(0), part(1), part(2)));
+        }
     }
     std::vector<double> written{1.0};
     if (first) {

@@ -4,13 +4,21 @@
 // for large maps) and so kept in a small self-describing text file keyed by a hash of every
 // input that changes it, which a later run reads instead of solving again.
 //
-// The file (v3; v1 had no separation column, v2 no digest; both are read as foreign, i.e. rebuilt):
-//     # roughContact boundary-element table v3
+// With a cap and loadHistory (InterfaceSpec), the table also holds unloading curves: from two
+// peaks a decade (down from the table's last load), the joint's load path
+// (BoundaryElementModel::loadPath) at three loads a decade over the two decades below it
+// (UnloadingTable.hpp interpolates between them; docs/theory.md §7.6).
+//
+// The file (v4; v1 had no separation column, v2 no digest, v3 no unloading curves; all are read
+// as foreign, i.e. rebuilt):
+//     # roughContact boundary-element table v4
 //     # key <64 hex digits: SHA-256 of the inputs, see key()>
 //     # inputs: <one human-readable line: surface, grid, periodic, E', hardness, loads, tolerance>
 //     # end <maxPressure|completeContact|conductanceCeiling> <complete-contact pressure [Pa] or inf>
 //     pressure,area,h_per_k,separation
 //     <P [Pa]>,<A_r/A_n>,<h_c/k_s [1/m]>,<Y [m]>   one line per point, 17 significant digits
+//     # unloading from <P_max [Pa]>                 for each peak (none without a cap or history)
+//     <P [Pa]>,<A_r/A_n>,<h_c/k_s [1/m]>,<Y [m]>   its load path below P_max, increasing
 //     # sha256 <64 hex digits: SHA-256 of every byte above this line>
 // A file is reused only when it is this version's, its key is the inputs' and its contents
 // match their digest: a table edited by hand (or damaged) is rebuilt, not trusted.
@@ -19,7 +27,9 @@
 #include "roughContact/bem/PolonskyKeer.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/thermal/ContactTable.hpp"
+#include "roughContact/thermal/UnloadingTable.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -32,6 +42,7 @@ namespace roughContact {
 struct InterfaceSpec;
 struct SurfaceSpec;
 struct BoundaryElementPoint;
+struct BoundaryElementOptions;
 
 /// The points of a boundary-element table: what ContactTable::fromPoints takes, and what a
 /// cache file holds.
@@ -58,9 +69,14 @@ struct BoundaryElementTablePoints {
     /// be trusted), or empty. Set by a build (build(), loadOrBuild() when it solves); not kept in
     /// the file, so a table read back has none.
     std::string patchWarning;
+    /// The unloading curves (peaks increasing; empty: none, without a cap or loadHistory).
+    std::vector<UnloadingCurve> unloading;
 
     /// The table these points make (ContactTable::fromPoints).
     ContactTable table(double Eprime) const;
+    /// The unloading curves over that table, of solves capped at `hardness` (empty without
+    /// curves).
+    UnloadingTable unloadingTable(const ContactTable& loading, std::optional<double> hardness) const;
 };
 
 /// What reading a cache file found.
@@ -127,6 +143,21 @@ public:
     bool mirrored() const noexcept { return mirrored_; }
     /// The cap p <= H [Pa] of the solve (none: elastic).
     std::optional<double> hardness() const noexcept { return hardness_; }
+    /// True when the table holds unloading curves: a cap and the spec's loadHistory.
+    bool unloads() const noexcept { return unloads_; }
+    /// The indices (into loads()) of the unloading curves' peaks of a table of `rows` loading
+    /// points: every unloadingPeakStep()-th load (two a decade) down from the last row, while
+    /// unloadingLoads() of it is not empty; increasing. Empty unless unloads().
+    std::vector<std::size_t> unloadingPeaks(std::size_t rows) const;
+    std::size_t unloadingPeakStep() const noexcept { return std::max<std::size_t>(1, pointsPerDecade_ / 2); }
+    /// The indices of the loads a peak's curve is solved at: every (pointsPerDecade/3)-th load
+    /// (at least every one; three a decade) down from it over the unloadingDecades below it;
+    /// increasing.
+    std::vector<std::size_t> unloadingLoads(std::size_t peak) const;
+    std::size_t unloadingStride() const noexcept { return std::max<std::size_t>(1, pointsPerDecade_ / 3); }
+    /// The decades below its peak an unloading curve spans (below them UnloadingTable holds
+    /// the lowest point's ratios).
+    static constexpr std::size_t unloadingDecades = 2;
 
     /// Progress of build(): after each load, the loads done, their number, the point and the
     /// seconds since the start.
@@ -203,6 +234,14 @@ private:
     /// what build() says of it.
     BoundaryElementTablePoints assemble(const std::vector<double>& areas, const std::vector<double>& conductances,
                                         const std::vector<double>& separations) const;
+    /// The load path of the peak at index `peak` (unloadingLoads(peak)) as solved.
+    std::vector<BoundaryElementPoint> solveUnloading(std::size_t peak) const;
+    /// The curve of those points (checked: positive area and h_c, finite separation).
+    UnloadingCurve unloadingCurve(std::size_t peak, const std::vector<double>& areas,
+                                  const std::vector<double>& conductances,
+                                  const std::vector<double>& separations) const;
+    /// The options every solve of this table uses.
+    BoundaryElementOptions solveOptions() const;
 
     bool periodic_; // before surface_: both are set from the spec in this order
     bool mirrored_ = false;
@@ -214,6 +253,7 @@ private:
     bool precondition_ = true;
     std::size_t pointsPerDecade_ = 0;
     std::optional<std::size_t> tableRanks_; // the spec's; not in the key (any share gives the table)
+    bool unloads_ = false;
     std::vector<double> loads_;
     std::vector<double> pressures_;
     std::string key_;
@@ -221,7 +261,7 @@ private:
 };
 
 /// The first line of a table file.
-inline constexpr const char* boundaryElementTableHeader = "# roughContact boundary-element table v3";
+inline constexpr const char* boundaryElementTableHeader = "# roughContact boundary-element table v4";
 /// True when `start` (a file's first bytes) begins as a table of this project does, of any
 /// format version: the files loadOrBuild may replace.
 bool isBoundaryElementTableText(const std::string& start);

@@ -312,11 +312,13 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
       modelName_(spec.model)
 {
     spec.checkEntries();
+    loadHistory_ = spec.loadHistory;
     if (spec.model == "boundaryElement") {
         conductanceLaw_ = "boundaryElement (exact)";
         const BoundaryElementTable bem(spec);
         const BoundaryElementTablePoints points = boundaryElementTable ? *boundaryElementTable : bem.build();
         table_ = std::make_unique<ContactTable>(points.table(bem.reducedModulus()));
+        unloading_ = points.unloadingTable(*table_, bem.hardness());
         tableWarning_ = points.patchWarning;
         std::ostringstream os;
         os << bem.surface().nx() << " x " << bem.surface().ny() << " "
@@ -408,12 +410,37 @@ const InterfaceGap& ContactInterface::gap() const
     return *gap_;
 }
 
-FaceContact ContactInterface::face(double P, double k1, double k2) const
+FaceContact ContactInterface::face(double P, double k1, double k2, double peak) const
 {
     requireFinite("pressure", P);
     const double ks = harmonicMeanConductivity(k1, k2);
     const ContactTable::Values v = table_->values(P);
-    return {v.areaFraction, ks * v.conductancePerConductivity};
+    const UnloadingFactors f = unloading_.factors(P, peak);
+    return {std::min(1.0, v.areaFraction * f.areaFraction), ks * v.conductancePerConductivity * f.conductancePerConductivity};
+}
+
+std::string ContactInterface::loadHistoryNote() const
+{
+    if (!loadHistory_) {
+        return std::string();
+    }
+    std::ostringstream os;
+    os.precision(3);
+    if (unloading_.empty()) {
+        os << "load history: each face keeps the largest pressure it carried, but " << conductanceLaw_
+           << (modelName_ == "boundaryElement" ? " without a cap (elastic: unloading retraces loading)"
+                                               : " has no unloading branch")
+           << ", so h follows the pressure of the moment (docs/limitations.md)";
+        return os.str();
+    }
+    os << "load history: each face keeps the largest pressure it carried; below it h_c and A_r/A_n follow the "
+          "exact unloading curves from ";
+    const auto& c = unloading_.curves();
+    for (std::size_t k = 0; k < c.size(); ++k) {
+        os << (k == 0 ? "" : k + 1 == c.size() ? " and " : ", ") << c[k].peak;
+    }
+    os << " Pa, interpolated between them (docs/theory.md §7.6)";
+    return os.str();
 }
 
 const MultiscaleModel& ContactInterface::model() const

@@ -18,6 +18,7 @@
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/thermal/ContactTable.hpp"
 #include "roughContact/thermal/Microhardness.hpp"
+#include "roughContact/thermal/UnloadingTable.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -131,6 +132,13 @@ struct InterfaceSpec {
     /// default 1e-6 E', to maxPressure, default min(0.1 E', 0.95 H)).
     std::size_t bemPointsPerDecade = 6;
 
+    /// Every face remembers the largest pressure it has carried, and a joint unloaded from it
+    /// conducts as the model's unloading curves say (docs/theory.md §7.6): boundaryElement with a
+    /// cap builds them into its table (BoundaryElementTable.hpp); the other models have none, so
+    /// h follows the pressure of the moment (the front-ends keep the peaks and say so). false:
+    /// no memory, no unloading curves (today's behaviour, a table without them).
+    bool loadHistory = true;
+
     /// The gap beside the contact (gas, radiation: InterfaceGap.hpp); none: nothing crosses
     /// where the surfaces do not touch.
     std::optional<GapSpec> gap;
@@ -230,9 +238,26 @@ public:
 
     /// A_r/A_n and h_c = k_s (h_c/k_s)(P) at the nominal pressure P [Pa] (finite; P <= 0: no
     /// contact) between solids of conductivities k1, k2 [W/(m K)] (finite, > 0), with
-    /// k_s = 2 k1 k2/(k1 + k2) (docs/theory.md §5.1). ParameterError on a NaN or infinite pressure or
-    /// a bad k.
-    FaceContact face(double P, double k1, double k2) const;
+    /// k_s = 2 k1 k2/(k1 + k2) (docs/theory.md §5.1), of a joint whose heaviest load so far was
+    /// `peak` [Pa] (at or below P: loading; remembersLoad() false: ignored). ParameterError on a
+    /// NaN or infinite pressure or a bad k.
+    FaceContact face(double P, double k1, double k2, double peak = 0.0) const;
+
+    /// True when the interface's model has unloading curves (boundaryElement with a cap and
+    /// loadHistory): a joint below the heaviest load it carried then conducts as they say.
+    bool remembersLoad() const noexcept { return !unloading_.empty(); }
+    /// The spec's loadHistory: a front-end keeps each face's peak pressure (and gives it to
+    /// couple(), CouplingInputs::peakPressure) when it is on.
+    bool loadHistory() const noexcept { return loadHistory_; }
+    /// The unloading curves (empty: none).
+    const UnloadingTable& unloading() const noexcept { return unloading_; }
+    /// The factors on the loading values at P [Pa] of a joint that has carried peak [Pa]
+    /// (UnloadingTable::factors; all 1 without curves or at P >= peak).
+    UnloadingFactors unloadingFactors(double P, double peak) const { return unloading_.factors(P, peak); }
+    /// What the load history does here, for a front-end to say once: with loadHistory on, the
+    /// unloading curves' peaks, or that the model has none and h follows the pressure of the
+    /// moment (the peaks are still kept); empty with it off.
+    std::string loadHistoryNote() const;
     /// The last pressure [Pa] the table resolves: above it and below complete contact the
     /// table returns its last values (a floor), so a boundary condition should say so.
     double tableEnd() const noexcept { return table_->pressures().back(); }
@@ -288,6 +313,8 @@ private:
     std::string surfaceChecksum_;
     std::optional<InterfaceGap> gap_;
     InterfaceRegime regime_;
+    UnloadingTable unloading_;
+    bool loadHistory_ = true;
 
     /// Builds gap_ from spec.gap (after the table).
     void buildGap(const InterfaceSpec& spec);

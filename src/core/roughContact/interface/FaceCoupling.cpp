@@ -18,7 +18,7 @@ void CouplingOutputs::resize(std::size_t n)
 {
     state.resize(n);
     for (std::vector<double>* v : {&pressure, &areaFraction, &contactConductance, &gapConductance,
-                                   &radiativeConductance, &conductance, &valueFraction, &refValue}) {
+                                   &radiativeConductance, &conductance, &valueFraction, &refValue, &peakPressure}) {
         v->resize(n);
     }
 }
@@ -30,7 +30,8 @@ void requireArrays(const CouplingInputs& in, bool contact, bool gap)
     const bool ok = in.kappa && in.kappaNbr && in.deltaCoeffs && in.deltaCoeffsNbr &&
                     (contact ? in.pressure && in.pressureNbr && in.cellTemperatureNbr : in.faceTemperatureNbr != nullptr) &&
                     (!gap || (in.faceTemperature && in.faceTemperatureNbr)) &&
-                    (in.gapWidth == nullptr) == (in.gapWidthNbr == nullptr);
+                    (in.gapWidth == nullptr) == (in.gapWidthNbr == nullptr) &&
+                    (in.peakPressure == nullptr) == (in.peakPressureNbr == nullptr);
     if (in.n > 0 && !ok) {
         throw ParameterError("interface coupling", "an input array the coupling needs is missing");
     }
@@ -67,9 +68,12 @@ void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCac
     out.resize(n);
     out.apart = 0;
     out.beyondTable = 0;
+    out.unloading = 0;
+    const bool history = in.peakPressure != nullptr;
     if (cache.pressure.size() != n) {
         // NaN never equals a pressure: every face is looked up on the first call.
         cache.pressure.assign(n, std::numeric_limits<double>::quiet_NaN());
+        cache.peak.assign(n, 0.0);
         cache.areaFraction.assign(n, 0.0);
         cache.conductancePerConductivity.assign(n, 0.0);
         cache.separation.assign(n, 0.0);
@@ -88,15 +92,23 @@ void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCac
     for (std::size_t i = 0; i < n; ++i) {
         try {
             const double P = requireFinite("nominal pressure", nominalPressure(in.pressure[i], in.pressureNbr[i]));
-            if (!(P == cache.pressure[i])) {
+            const double peak =
+                history ? std::max({P, requireNonNegative("peak pressure", requireFinite("peak pressure", in.peakPressure[i])),
+                                    requireNonNegative("neighbour peak pressure",
+                                                       requireFinite("neighbour peak pressure", in.peakPressureNbr[i]))})
+                        : P;
+            if (!(P == cache.pressure[i] && peak == cache.peak[i])) {
                 const ContactTable::Values v = table.values(P);
+                // 1 at the peak and for an interface without unloading curves.
+                const UnloadingFactors f = iface.unloadingFactors(P, peak);
                 cache.pressure[i] = P;
-                cache.areaFraction[i] = v.areaFraction;
-                cache.conductancePerConductivity[i] = v.conductancePerConductivity;
+                cache.peak[i] = peak;
+                cache.areaFraction[i] = std::min(1.0, v.areaFraction * f.areaFraction);
+                cache.conductancePerConductivity[i] = v.conductancePerConductivity * f.conductancePerConductivity;
                 // The gap's separation at this pressure (touching faces short of complete
                 // contact; looked up with the table, cached with it).
                 cache.separation[i] =
-                    gap && P > 0.0 && P < complete ? gap->separation(P) : 0.0;
+                    gap && P > 0.0 && P < complete ? gap->separation(P) * f.separation : 0.0;
             }
             const double k1 = in.kappa[i];
             const double k2 = in.kappaNbr[i];
@@ -120,6 +132,9 @@ void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCac
                 ++out.beyondTable;
             } else {
                 state = FaceState::partial;
+            }
+            if (P > 0.0 && P < peak) {
+                ++out.unloading;
             }
             // Input that is probably a mistake (counted; the caller warns).
             if (state == FaceState::partial && P < tableStart) {
@@ -166,6 +181,7 @@ void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCac
             out.conductance[i] = h;
             out.valueFraction[i] = hEff / (hEff + kDelta);
             out.refValue[i] = in.cellTemperatureNbr[i];
+            out.peakPressure[i] = peak;
         } catch (const ParameterError& e) {
             throw FaceError(i, e);
         }
@@ -185,6 +201,7 @@ void coupleConstant(double h, const CouplingInputs& in, CouplingOutputs& out)
     out.pressureMismatch = 0;
     out.largestPressureMismatch = 0.0;
     out.apartAtFirstTouch = 0;
+    out.unloading = 0;
     for (std::size_t i = 0; i < n; ++i) {
         try {
             const double kDelta =
@@ -199,6 +216,7 @@ void coupleConstant(double h, const CouplingInputs& in, CouplingOutputs& out)
             // The stock turbulentTemperatureCoupledBaffleMixed with layers, as it writes it.
             out.valueFraction[i] = h / (h + kDelta);
             out.refValue[i] = in.faceTemperatureNbr[i];
+            out.peakPressure[i] = 0.0;
         } catch (const ParameterError& e) {
             throw FaceError(i, e);
         }
@@ -273,6 +291,10 @@ void CouplingSummary::add(const CouplingOutputs& out, const double* magSf, const
         const double a = magSf[i];
         area += a;
         pressureArea += out.pressure[i] * a;
+        peakPressureArea += out.peakPressure[i] * a;
+        if (out.pressure[i] > 0.0 && out.pressure[i] < out.peakPressure[i]) {
+            ++unloading;
+        }
         hAllArea += shown[i] * a;
         gapAllArea += (out.gapConductance[i] + out.radiativeConductance[i]) * a;
         switch (out.state[i]) {

@@ -11,6 +11,10 @@
 //              ContactInterface::heldAtTableEnd) or complete (P >= complete contact)
 //   A_r/A_n, h_c = k_s (h_c/k_s)(P)  from the interface's table (ContactInterface), 0 apart,
 //              +inf at complete contact; k_s = 2 k1 k2/(k1 + k2)
+//   P_max    = max(P, peak1, peak2)  the heaviest load the face has carried (with a load history:
+//              each side keeps it, and takes the larger of the two so that both agree)
+//   A_r/A_n, h_c, Y  times the unloading factors at (P, P_max) (ContactInterface::
+//              unloadingFactors: 1 at P = P_max and for a model without unloading curves)
 //   h        = h_c + h_g + h_r       (docs/theory.md §5.12, "Interface conductance"), the gap terms
 //              (interface/InterfaceGap.hpp) where the interface has a gap, 0 otherwise; at
 //              complete contact there is no gap left and h = +inf
@@ -86,6 +90,10 @@ struct CouplingInputs {
     /// separation at first touch (InterfaceGap). Only with a gap.
     const double* gapWidth = nullptr;
     const double* gapWidthNbr = nullptr;
+    /// The heaviest nominal pressure each side's face has carried so far [Pa] (the condition's
+    /// memory, >= 0). Both null: no load history (every face loading).
+    const double* peakPressure = nullptr;
+    const double* peakPressureNbr = nullptr;
 };
 
 /// Per-face results (n each). Every array is written.
@@ -99,7 +107,12 @@ struct CouplingOutputs {
     std::vector<double> conductance;          ///< h = h_c + h_g + h_r, +inf at complete contact
     std::vector<double> valueFraction;        ///< the mixed condition's w
     std::vector<double> refValue;             ///< the mixed condition's reference temperature [K]
+    /// With a load history: P_max = max(P, both sides' peaks) [Pa], each face's memory after this
+    /// evaluation; without one: P.
+    std::vector<double> peakPressure;
     std::size_t apart = 0;                    ///< faces apart (couple(); 0 in coupleConstant)
+    /// Faces in contact below their peak (unloaded or reloading; couple()).
+    std::size_t unloading = 0;
     std::size_t beyondTable = 0;              ///< faces beyond the table (couple())
     /// Input that is probably a mistake (couple(); CouplingDiagnostics turns them into words):
     /// faces in contact below the table's first pressure (their values extrapolated), and the
@@ -145,6 +158,7 @@ struct CouplingDiagnostics {
 /// another size starts over.
 struct CouplingCache {
     std::vector<double> pressure;
+    std::vector<double> peak;
     std::vector<double> areaFraction;
     std::vector<double> conductancePerConductivity;
     std::vector<double> separation;
@@ -152,7 +166,7 @@ struct CouplingCache {
 
 /// The contact mode, as described above. FaceError (a ParameterError naming the face) on a
 /// non-finite pressure, a kappa or deltaCoeffs that is not finite and > 0, a bad temperature or
-/// gap width where the gap terms need them.
+/// gap width where the gap terms need them, a peak pressure that is negative or not finite.
 void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCache& cache, CouplingOutputs& out);
 
 /// The constant-h mode (h finite and > 0): state partial, h_c = h, h_g = h_r = 0, area 1 (not
@@ -167,6 +181,8 @@ struct CouplingSummary {
     double touchingArea = 0.0;         ///< of faces partial, beyondTable or complete
     double partialArea = 0.0;          ///< of faces partial or beyondTable
     double pressureArea = 0.0;         ///< sum P a
+    double peakPressureArea = 0.0;     ///< sum P_max a (CouplingOutputs::peakPressure)
+    std::size_t unloading = 0;         ///< faces in contact below their peak
     double areaFractionArea = 0.0;     ///< sum (A_r/A_n) a over touching faces
     double areaFractionPartialArea = 0.0; ///< sum (A_r/A_n) a over faces in partial contact
     double hTouchingArea = 0.0;        ///< sum h_shown a over touching faces

@@ -29,7 +29,7 @@ std::string interfaceSeriesHeader(const std::string& side1, const std::string& s
 {
     return "time,Q_from_" + side1 + "_W,Q_into_" + side2 +
            "_W,h_mean_touching,h_mean_all,h_gap_mean_all,P_mean_Pa,Ar_An_mean_touching,faces_apart,faces_partial,"
-           "faces_complete\n";
+           "faces_complete,P_peak_mean_Pa,faces_unloading\n";
 }
 
 std::string interfaceSeriesRow(double time, double heatFromSide1, double heatIntoSide2, const CouplingSummary& s)
@@ -39,7 +39,7 @@ std::string interfaceSeriesRow(double time, double heatFromSide1, double heatInt
        << mean(s.hTouchingArea, s.touchingArea) << ',' << mean(s.hAllArea, s.area) << ','
        << mean(s.gapAllArea, s.area) << ',' << mean(s.pressureArea, s.area) << ','
        << mean(s.areaFractionArea, s.touchingArea) << ',' << s.apart << ',' << s.partial + s.beyondTable << ','
-       << s.complete << '\n';
+       << s.complete << ',' << mean(s.peakPressureArea, s.area) << ',' << s.unloading << '\n';
     return os.str();
 }
 

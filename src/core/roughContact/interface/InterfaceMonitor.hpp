@@ -19,6 +19,9 @@
 //   P_mean_Pa              area-weighted mean nominal pressure [Pa] over all faces
 //   Ar_An_mean_touching    area-weighted mean A_r/A_n over faces in contact
 //   faces_apart, faces_partial, faces_complete   counts (partial includes beyond-the-table faces)
+//   P_peak_mean_Pa         area-weighted mean of each face's heaviest pressure so far [Pa] (its
+//                          pressure without a load history)
+//   faces_unloading        faces in contact below their peak (unloading or reloading)
 // A mean over no faces is written as an empty field, never as NaN.
 #pragma once
 

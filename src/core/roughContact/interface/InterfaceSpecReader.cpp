@@ -166,7 +166,7 @@ const std::vector<std::string>& interfaceEntries()
         "model",     "surface",        "surfaces",  "side1",    "side2",   "conductance",     "microhardness",
         "vickers",   "minPressure",    "maxPressure", "pointsPerDecade", "synthesize", "seed", "periodic",
         "mirror",    "detrend",   "hardness",       "hardnessFromYield", "gap", "check", "checkPeriods",
-        "checkPressures", "threads", "tableRanks"};
+        "checkPressures", "threads", "tableRanks", "loadHistory"};
     return names;
 }
 
@@ -436,6 +436,9 @@ void readInterfaceSettings(const SpecSource& source, InterfaceSpec& spec)
     }
     if (source.has("hardnessFromYield")) {
         spec.hardnessFromYield = source.flag("hardnessFromYield");
+    }
+    if (source.has("loadHistory")) {
+        spec.loadHistory = source.flag("loadHistory");
     }
     if (source.has("check")) {
         spec.check = source.flag("check");
