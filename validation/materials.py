@@ -37,6 +37,7 @@ class Pair:
     def __init__(self, ctx, a, b, capped):
         rc = ctx.rc()
         m = rc.ContactMaterials.pair(rc.Material(E=a[0], nu=a[1], Sy=a[2]), rc.Material(E=b[0], nu=b[1], Sy=b[2]))
+        self.materials = m  # the core's ContactMaterials (a multi-scale model's)
         self.Eprime = m.reduced_modulus
         self.hardness = m.hardness if capped else None
         self.arguments = ["--E", f"{a[0]:.6g},{b[0]:.6g}", "--nu", f"{a[1]:.6g},{b[1]:.6g}"] + (

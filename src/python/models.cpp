@@ -110,13 +110,24 @@ void bindModels(py::module_& m)
                                "True for the multi-scale models.")
         .def(
             "area_fraction",
-            [](const Model& x, const py::object& P) {
+            [](const Model& x, const py::object& P, std::optional<double> unloadFrom) {
                 const ContactModel& cm = *x.model;
                 const double Ep = x.Eprime;
-                return vectorize(P, "pressures", [&](double p) { return cm.areaFraction(p / Ep); });
+                if (!unloadFrom) {
+                    return vectorize(P, "pressures", [&](double p) { return cm.areaFraction(p / Ep); });
+                }
+                const MultiscaleModel* ms = x.multiscale();
+                if (ms == nullptr) {
+                    throw ParameterError("unload_from", "is for the multi-scale models (multiscale_model_names()) "
+                                                        "and BoundaryElement, not " + cm.name());
+                }
+                const double peak = checkLoad(requirePositive("unload_from", *unloadFrom) / Ep);
+                return vectorize(P, "pressures", [&](double p) { return ms->unloadingAreaFraction(p / Ep, peak); });
             },
-            py::arg("pressures"),
-            "A_r/A_n at the nominal pressures F/A_n [Pa] (a number or an array): the model at the load P/E'.")
+            py::arg("pressures"), py::kw_only(), py::arg("unload_from") = py::none(),
+            "A_r/A_n at the nominal pressures F/A_n [Pa] (a number or an array): the model at the load P/E'. "
+            "unload_from [Pa] (multi-scale models): of a contact that has carried that pressure, each level "
+            "unloading as a Hertzian contact from its peak (docs/theory.md §3.6).")
         .def(
             "area_fraction_at_load",
             [](const Model& x, const py::object& loads) {

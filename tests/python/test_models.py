@@ -66,6 +66,21 @@ def test_pressures_equal_the_cli_pressures_option(cli, spectrum, steel):
     np.testing.assert_allclose(law.conductance_per_conductivity(P), c["h_per_k"], rtol=1e-9)
 
 
+def test_a_multiscale_model_unloads(spectrum, steel):
+    """unload_from: each level a Hertzian contact of its peak (docs/theory.md §3.6): hertz retraces its
+    loading curve, jacksonGreen never falls below it and equals it at the peak; the other models refuse."""
+    P = np.array([1e5, 1e6, 1e7])
+    hertz = rc.Model("hertz", spectrum, steel)
+    np.testing.assert_allclose(hertz.area_fraction(P, unload_from=3e7), hertz.area_fraction(P), rtol=1e-12)
+    jg = rc.Model("jacksonGreen", spectrum, steel)
+    assert np.all(jg.area_fraction(P, unload_from=3e7) >= jg.area_fraction(P) * (1 - 1e-12))
+    assert jg.area_fraction(3e7, unload_from=3e7) == jg.area_fraction(3e7)
+    with pytest.raises(rc.ParameterError, match="^unload_from: is for the multi-scale models"):
+        rc.Model("persson", spectrum, steel).area_fraction(P, unload_from=3e7)
+    with pytest.raises(rc.ParameterError, match="^unload_from"):
+        jg.area_fraction(P, unload_from=-1.0)
+
+
 def test_fitted_elasto_plastic_takes_the_spectrums_bandwidth_ratio(spectrum):
     # W = m1/sqrt(m0 m2) of the line-scan spectrum: by hand from its levels (beta^2/2 weights).
     k = 2 * np.pi * np.asarray(spectrum.frequencies)

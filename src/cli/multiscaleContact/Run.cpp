@@ -134,10 +134,6 @@ int runCurve(const Options& o)
             throw ParameterError(what, "is for --model boundaryElement");
         }
     }
-    if (o.unloadFrom) {
-        throw ParameterError("--unload-from", "unloads the exact model (--model boundaryElement with a cap); the "
-                                              "multi-scale models and the laws have no unloading curve yet");
-    }
     // A gap implies the conductance columns: its separation is the law's where it has one, and
     // h_total adds its terms to h_c.
     const bool conductance = o.conductance || !o.conductanceLaw.empty() || gapInputs.has_value() || !o.plot.empty();
@@ -170,12 +166,29 @@ int runCurve(const Options& o)
     std::vector<double> pressures; // --pressures [Pa]: the first column
     const std::vector<double> loads = loadsOf(o, materials.reducedModulus(), &pressures);
     const auto model = makeContactModel(o.model, spectrum, materials, mo);
+    const auto* ms = dynamic_cast<const MultiscaleModel*>(model.get());
+    // --unload-from on a multi-scale model: its unloading area (docs/theory.md §3.6), a column
+    // beside the loading one; the laws have no unloading branch, so no conductance beside it.
+    double peakLoad = 0.0;
+    if (o.unloadFrom) {
+        if (ms == nullptr) {
+            throw ParameterError("--unload-from", "unloads --model boundaryElement (with a cap) and the multi-scale "
+                                                  "models' area; " + o.model + " has no unloading curve");
+        }
+        if (conductance || o.levels) {
+            throw ParameterError("--unload-from", std::string("of a multi-scale model gives its unloading area only: ") +
+                                                      (o.levels ? "leave out --levels" :
+                                                                  "the conductance laws have no unloading branch yet "
+                                                                  "(leave out the conductance and gap options, or "
+                                                                  "use --model boundaryElement with a cap)"));
+        }
+        peakLoad = checkLoad(requirePositive("--unload-from", *o.unloadFrom) / materials.reducedModulus());
+    }
 
     // The whole CSV is made before any of it is printed: an error half way leaves stdout empty.
     std::ostringstream out;
     out.precision(10);
     if (o.levels) {
-        const auto* ms = dynamic_cast<const MultiscaleModel*>(model.get());
         if (ms == nullptr) {
             throw ParameterError("--levels", "the per-level trace exists for the multi-scale models only");
         }
@@ -201,7 +214,6 @@ int runCurve(const Options& o)
         std::cout << out.str();
         return 0;
     }
-    const auto* ms = dynamic_cast<const MultiscaleModel*>(model.get());
     const auto* persson = dynamic_cast<const PerssonModel*>(model.get());
     const bool allLaws = o.conductanceLaw == "all";
     // persson's own conductance (Barber's relation with its mean separation) unless a law is named.
@@ -331,7 +343,7 @@ int runCurve(const Options& o)
     for (const auto& [name, l] : every) {
         out << ",h_per_k_" << name;
     }
-    out << '\n';
+    out << (o.unloadFrom ? ",unloading_area_fraction" : "") << '\n';
     for (std::size_t i = 0; i < loads.size(); ++i) {
         const double load = loads[i];
         if (!pressures.empty()) {
@@ -387,6 +399,9 @@ int runCurve(const Options& o)
         }
         for (const auto& [name, l] : every) {
             out << ',' << l->perConductivity(load * Ep);
+        }
+        if (o.unloadFrom) {
+            out << ',' << ms->unloadingAreaFraction(load, peakLoad);
         }
         out << '\n';
     }

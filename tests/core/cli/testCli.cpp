@@ -637,10 +637,40 @@ TEST(Cli, UnloadFromAddsTheJointThatCarriedThePeak)
     expectError(p + " --hardness-from-yield --loads 1e-4 --unload-from 1GPa", {"--unload-from", "below the cap"});
     expectError(p + " --hardness-from-yield --loads 1e-4 --unload-from 1MPa --gas air --gas-pressure 1e5 --temperature 300",
                 {"--unload-from", "gap"});
-    expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --loads 1e-4 --unload-from 1MPa",
-                {"--unload-from", "boundaryElement"});
+    expectError("--profile '" + standin + "' --model persson" + steel + " --loads 1e-4 --unload-from 1MPa",
+                {"--unload-from", "persson has no unloading curve"});
+    expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --conductance --loads 1e-4 "
+                "--unload-from 1MPa",
+                {"--unload-from", "no unloading branch"});
     expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --check --loads 1e-4 --unload-from 1MPa",
                 {"--unload-from", "--check"});
+}
+
+TEST(Cli, UnloadFromGivesAMultiscaleModelsUnloadingArea)
+{
+    // A multi-scale model's unloading area (docs/theory.md §3.6) is the library's, to the 10
+    // digits the CLI prints; hertz unloads along its loading curve.
+    for (const char* model : {"jacksonGreen", "hertz"}) {
+        SCOPED_TRACE(model);
+        const CommandResult r = run("--profile '" + standin + "' --model " + model + steel +
+                                    " --pressures 1MPa,10MPa,30MPa --unload-from 30MPa");
+        ASSERT_EQ(r.status, 0) << r.err;
+        const Csv csv = parseCsv(r.out);
+        ASSERT_EQ(csv.rows.size(), 3U);
+        const ContactMaterials mat = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9});
+        const Spectrum s = Spectrum::fromProfile(readProfile(standin));
+        const auto m = makeContactModel(model, s, mat, {});
+        const auto& ms = dynamic_cast<const MultiscaleModel&>(*m);
+        const double Ep = mat.reducedModulus();
+        for (std::size_t i = 0; i < 3; ++i) {
+            const double P = std::stod(csv.rows[i].at(column(csv, "nominal_pressure")));
+            EXPECT_EQ(csv.rows[i].at(column(csv, "unloading_area_fraction")),
+                      formatNumber(ms.unloadingAreaFraction(P / Ep, 30e6 / Ep), 10));
+        }
+        if (std::string(model) == "hertz") {
+            EXPECT_EQ(csv.rows[0].at(column(csv, "unloading_area_fraction")), csv.rows[0].at(column(csv, "area_fraction")));
+        }
+    }
 }
 
 TEST(Cli, BoundaryElementInputsAHostileUserTried)

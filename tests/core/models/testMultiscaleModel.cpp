@@ -218,3 +218,65 @@ TEST(MultiscaleModel, completeContactShortcutGivesBitIdenticalAreas)
         }
     }
 }
+
+TEST(MultiscaleModel, anElasticContactUnloadsAlongItsLoadingCurve)
+{
+    // Hertzian asperities: Abar ~ Fbar^(2/3) on loading, so the Hertzian unloading of each level
+    // from its peak is its loading curve, whatever the peak; to round-off (pow and products
+    // over the levels, as hertzFollowsRecursionOfSeedEquation26).
+    const Spectrum s = standIn();
+    const MultiscaleModel m(s, Ep, std::make_shared<Hertz>(Ep));
+    for (double peak : {1e-5, 1e-3, 1e-1}) {
+        for (double f : {1.0, 0.5, 0.1, 1e-3}) {
+            EXPECT_NEAR(m.unloadingAreaFraction(f * peak, peak), m.areaFraction(f * peak),
+                        1e-12 * m.areaFraction(f * peak))
+                << "peak " << peak << ", fraction " << f;
+        }
+    }
+}
+
+TEST(MultiscaleModel, aContactThatYieldedKeepsMoreAreaOnUnloading)
+{
+    // The stand-in's levels are plastic (A = F/H) at light loads, where the hertzian rule keeps
+    // almost nothing more than loading (docs/theory.md §3.6: each finer level recovers part of
+    // what the coarser one shed); from a peak at complete contact (3e-3) the levels that were
+    // complete separate Hertzian, and the area stays above the loading curve.
+    const Spectrum s = standIn();
+    for (const auto& asperity : {std::shared_ptr<const AsperityModel>(std::make_shared<JacksonGreen>(Ep, nu, E, Sy)),
+                                 std::shared_ptr<const AsperityModel>(std::make_shared<Truncation>(Ep, nu, Sy))}) {
+        SCOPED_TRACE(asperity->name());
+        const MultiscaleModel m(s, Ep, asperity);
+        const double peak = 3e-3;
+        // At and above the peak: the loading curve, bit for bit.
+        EXPECT_EQ(m.unloadingAreaFraction(peak, peak), m.areaFraction(peak));
+        EXPECT_EQ(m.unloadingAreaFraction(2 * peak, peak), m.areaFraction(2 * peak));
+        double previous = m.areaFraction(peak);
+        for (double f = 0.95; f > 1e-3; f *= 0.9) {
+            const double unloaded = m.unloadingAreaFraction(f * peak, peak);
+            ASSERT_TRUE(std::isfinite(unloaded));
+            EXPECT_LE(unloaded, previous * (1 + 1e-12)) << f; // it falls as the load does
+            EXPECT_GE(unloaded, m.areaFraction(f * peak) * (1 - 1e-12)) << f; // never below loading
+            previous = unloaded;
+        }
+        for (double f : {0.5, 0.1}) {
+            EXPECT_GT(m.unloadingAreaFraction(f * peak, peak), 1.02 * m.areaFraction(f * peak)) << f;
+        }
+        EXPECT_EQ(m.unloadingAreaFraction(0.0, peak), 0.0);
+    }
+}
+
+TEST(MultiscaleModel, oneLevelUnloadsAsAHertzianContactOfItsPeak)
+{
+    // One level: A/A_n = r(pbar) on loading; unloaded from pbar_max, r(pbar_max) (pbar/pbar_max)^(2/3).
+    Spectrum one({1e4}, {1e-6}, 1e-3, "one level");
+    const auto jg = std::make_shared<JacksonGreen>(Ep, nu, E, Sy);
+    const MultiscaleModel m(one, Ep, jg);
+    const double peak = 3e-4; // A_r/A_n 0.10, the summits well past yield
+    const double rMax = m.areaFraction(peak);
+    ASSERT_LT(rMax, 1.0);
+    for (double f : {0.5, 0.1, 0.01}) {
+        EXPECT_NEAR(m.unloadingAreaFraction(f * peak, peak), rMax * std::pow(f, 2.0 / 3.0), 1e-14) << f;
+    }
+    // The level yielded at that peak: unloading keeps more than loading.
+    EXPECT_GT(m.unloadingAreaFraction(0.1 * peak, peak), 1.5 * m.areaFraction(0.1 * peak)); // 1.96
+}

@@ -61,6 +61,39 @@ double MultiscaleModel::areaFraction(double load) const
     return A / An_;
 }
 
+double MultiscaleModel::unloadingAreaFraction(double load, double peakLoad) const
+{
+    checkLoad(peakLoad);
+    if (checkLoad(load) == 0.0) {
+        return 0.0;
+    }
+    if (!(load < peakLoad)) {
+        return areaFraction(load);
+    }
+    const double F = load * An_ * Eprime_;
+    const double Fmax = peakLoad * An_ * Eprime_;
+    double A = An_;    // the unloading state's A_{i-1}
+    double Amax = An_; // the peak's
+    for (std::size_t k = 0; k < levels_.size(); ++k) {
+        const double pbarMax = Fmax / Amax;
+        const double pbar = F / A;
+        // The level's area at the peak as its law gives it, beyond complete contact too (the
+        // Hertzian radius of an elastic level that reached it is its own).
+        const Level& level = levels_[k];
+        const double rMax = asperity_->areaRatio(pbarMax, level);
+        // Fbar/Fbar_max = (F/N_i)/(Fmax/N_i,max) = pbar/pbarMax (eta_i cancels).
+        const double r = pbar < pbarMax ? rMax * std::pow(pbar / pbarMax, 2.0 / 3.0)
+                                        : (pbar >= completeAt_[k] ? 1.0 : asperity_->areaRatio(pbar, level));
+        if (rMax < 1.0) { // assumption 5, at the peak and now
+            Amax *= rMax;
+        }
+        if (r < 1.0) {
+            A *= r;
+        }
+    }
+    return A / An_;
+}
+
 std::vector<LevelState> MultiscaleModel::trace(double load) const
 {
     checkLoad(load);
