@@ -57,6 +57,13 @@ void bindCheck(py::module_& m)
                       "checked surfaces are stretched so along y. 1 for an isotropic surface or a map.")
         .def_readonly("levels_kept", &SurfaceCheck::levelsKept, "Levels of the spectrum in the check.")
         .def_readonly("levels_given", &SurfaceCheck::levelsGiven, "Levels of the spectrum given.")
+        .def_readonly("unload_from", &SurfaceCheck::unloadFrom, "The peak [Pa] the check unloaded from (None: none).")
+        .def_property_readonly("exact_unloading_h_per_k",
+                               [](const SurfaceCheck& c) { return toArray(c.exactUnloadingHPerK); },
+                               "With unload_from: the checked surface's exact h_c/k_s unloaded from it [1/m].")
+        .def_property_readonly("chosen_unloading_ratio",
+                               [](const SurfaceCheck& c) { return toArray(c.chosenUnloadingRatio); },
+                               "With unload_from: the chosen law's h (its loading value) over the exact unloading h.")
         .def_readonly("light_load_periods", &SurfaceCheck::lightLoadPeriods,
                       "The period [scan lengths] of the pressures up to p/(E' h') = 1e-3 (1: none on a longer one).")
         .def_readonly("light_levels_kept", &SurfaceCheck::lightLevelsKept,
@@ -169,7 +176,7 @@ void bindCheck(py::module_& m)
     // The signature's default light-load period is the core's (one place for it).
     static const std::string checkDoc =
         "check(*, surfaces, side1, side2, model=None, conductance=None, ..., pressures=[], grid=None, "
-        "seeds=None, count=None, progress=None, threads=None, mirror=None, light_load_periods=None): the exact model "
+        "seeds=None, count=None, progress=None, threads=None, mirror=None, light_load_periods=None, unload_from=None): the exact model "
         "(boundaryElement) on the user's "
         "own surface (an areal map as it is, or mirror=True: mirrored about its edges into a periodic surface; a 1-D description as `seeds` surfaces of grid x grid synthesized from its "
         "spectrum, cut at grid/8 levels, up to p/(E' h') = 1e-3 on periods of light_load_periods scan lengths, 1 to 64, None: " +
@@ -179,8 +186,9 @@ void bindCheck(py::module_& m)
         "hardness_from_yield or S_y say, elastic otherwise; every law's ratio to it. The interface's keyword "
         "arguments are ContactInterface's. None: grid " + std::to_string(SurfaceCheckOptions{}.gridSize) +
         ", seeds " + seedList(SurfaceCheckOptions{}.seeds) + ", count " + std::to_string(SurfaceCheckOptions{}.pressureCount) + ". progress: a callable given a line after each solve. threads: the "
-        "process's threads of the solves (set_threads; None: as they are). About 0.5 s "
-        "a pressure and seed at 512^2.";
+        "process's threads of the solves (set_threads; None: as they are). unload_from [Pa], with a cap: the joint "
+        "has carried it; the check also unloads each surface from it (exact_unloading_h_per_k, "
+        "chosen_unloading_ratio). About 0.5 s a pressure and seed at 512^2.";
     m.def(
         "check",
         [](const std::vector<SurfaceSpec>& surfaces, const Material& side1, const Material& side2,
@@ -191,13 +199,15 @@ void bindCheck(py::module_& m)
            bool hardnessFromYield, std::optional<std::string> detrend, const std::vector<double>& pressures,
            std::optional<std::size_t> grid, const std::optional<std::vector<std::uint64_t>>& seeds,
            std::optional<std::size_t> count, const py::object& progress,
-           const py::object& threads, std::optional<bool> mirror, std::optional<std::uint64_t> lightLoadPeriods) {
+           const py::object& threads, std::optional<bool> mirror, std::optional<std::uint64_t> lightLoadPeriods,
+           std::optional<double> unloadFrom) {
             const InterfaceSpec spec = interfaceSpec(surfaces, side1, side2, model, conductance, microhardness, vickers,
                                                      minPressure, maxPressure, std::nullopt, std::nullopt, std::nullopt,
                                                      periodic, hardness, hardnessFromYield, std::nullopt,
                                                      std::nullopt, detrend, mirror, true);
             SurfaceCheckOptions o; // what is left None: the core's
-            o.names = {"grid", "seeds", "pressures", "light_load_periods"};
+            o.names = {"grid", "seeds", "pressures", "light_load_periods", "unload_from"};
+            o.unloadFrom = unloadFrom;
             o.gridSize = grid.value_or(o.gridSize);
             o.seeds = seeds.value_or(o.seeds);
             o.pressureCount = count.value_or(o.pressureCount);
@@ -229,7 +239,7 @@ void bindCheck(py::module_& m)
         py::arg("pressures") = std::vector<double>{}, py::arg("grid") = py::none(),
         py::arg("seeds") = py::none(), py::arg("count") = py::none(), py::arg("progress") = py::none(),
         py::arg("threads") = py::none(), py::arg("mirror") = py::none(), py::arg("light_load_periods") = py::none(),
-        checkDoc.c_str());
+        py::arg("unload_from") = py::none(), checkDoc.c_str());
 }
 
 } // namespace roughcontact_py

@@ -58,6 +58,28 @@ def test_check_is_the_clis(cli):
     assert "note: " + c.small_cell_note in c.report()
 
 
+def test_check_unloads_from_a_peak_as_the_cli(cli):
+    """unload_from: the check also unloads each surface from the peak (the same numbers as the CLI's
+    --check --unload-from); the flattened summits conduct more, and the chosen law (no unloading
+    branch) falls short of that."""
+    kw = dict(surfaces=[rc.SurfaceSpec.profile(STANDIN)], side1=STEEL_M, side2=STEEL_M, grid=64,
+              light_load_periods=1, pressures=[2e7, 6e7])
+    c = rc.check(**kw, unload_from=3e8)
+    assert c.unload_from == 3e8
+    assert np.all(c.exact_unloading_h_per_k > c.checked_exact)
+    np.testing.assert_allclose(c.chosen_unloading_ratio, c.ratios[c.chosen_law] * c.checked_exact / c.exact_unloading_h_per_k,
+                               rtol=1e-14)
+    assert "unloaded from 3e+08 Pa" in c.report()
+    cli_numbers = cli_check(cli, "--synthesize", "64", "--pressures", "2e7,6e7", "--check-periods", "1",
+                            "--E", "179.52e9,179.52e9", "--nu", "0.32,0.32", "--Sy", "0.2e9,0.2e9", "--unload-from", "3e8")
+    np.testing.assert_array_equal(c.exact_unloading_h_per_k, cli_numbers["h_per_k_checked_surface_unloading"])
+    np.testing.assert_array_equal(c.chosen_unloading_ratio, cli_numbers["ratio_chosen_unloading"])
+    plain = rc.check(**kw)
+    assert plain.unload_from is None and len(plain.exact_unloading_h_per_k) == 0
+    with pytest.raises(rc.ParameterError, match="^unload_from"):
+        rc.check(**kw, unload_from=1e9)  # at or above H = 0.57 GPa
+
+
 def test_check_of_a_padded_map_near_complete_contact_warns(tmp_path):
     """A map checked padded (no mirror) up to near complete contact: exact_warning says where its
     exact h_c is not to be trusted (and the report repeats it); mirror=True: none. The map of

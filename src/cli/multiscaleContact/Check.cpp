@@ -107,6 +107,8 @@ int runCheck(const Options& o)
     in.maxPressure = pressures.back();
     so.names.gridSize = "--synthesize";
     so.names.lightLoadPeriods = "--check-periods";
+    so.names.unloadFrom = "--unload-from";
+    so.unloadFrom = o.unloadFrom; // the joint's peak: the check unloads from it too
     if (!o.loadRange.empty()) {
         // --load-range MIN:MAX:N is a range: N pressures (1 to 5) across its checked part, as
         // Python's min_pressure, max_pressure and count.

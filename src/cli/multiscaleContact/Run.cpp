@@ -77,10 +77,10 @@ int run(const Options& o)
             }
         }
     }
-    if (o.unloadFrom && (o.check || !o.table.empty() || !o.plot.empty())) {
-        throw ParameterError("--unload-from", std::string("adds the unloading columns to the load curve of --model "
-                                                          "boundaryElement; ") +
-                                                  (o.check ? "--check" : !o.table.empty() ? "--table" : "--plot") +
+    if (o.unloadFrom && (!o.table.empty() || !o.plot.empty())) {
+        throw ParameterError("--unload-from", std::string("adds the unloading columns to the load curve and to "
+                                                          "--check; ") +
+                                                  (!o.table.empty() ? "--table" : "--plot") +
                                                   " has no unloading branch yet");
     }
     if (!o.checkPeriods.empty() && !o.check) {

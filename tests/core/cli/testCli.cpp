@@ -642,8 +642,9 @@ TEST(Cli, UnloadFromAddsTheJointThatCarriedThePeak)
     expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --conductance --loads 1e-4 "
                 "--unload-from 1MPa",
                 {"--unload-from", "no unloading branch"});
-    expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --check --loads 1e-4 --unload-from 1MPa",
-                {"--unload-from", "--check"});
+    expectError("--profile '" + standin + "' --model hertz --E 179.52e9 --nu 0.32 --check --loads 1e-4 "
+                "--unload-from 1MPa",
+                {"--unload-from", "hardness"});
 }
 
 TEST(Cli, UnloadFromGivesAMultiscaleModelsUnloadingArea)

@@ -764,3 +764,48 @@ TEST(SurfaceCheck, AFinishWithALayIsCheckedOnSurfacesStretchedAlongIt)
     // the single profile's.
     EXPECT_NE(c.gradient, single.gradient);
 }
+
+TEST(SurfaceCheck, UnloadedFromAPeakTheExactAnswerIsTheLoadPath)
+{
+    // unloadFrom: each checked surface is also unloaded from the peak (BoundaryElementModel::
+    // loadPath on the same surface, at the same loads: to round-off), reported beside the loading
+    // answer, with the chosen law (no unloading branch: its loading h) over it. A soft cap
+    // (H = 0.2 GPa) and one period, so that the surface is the one scan length's.
+    InterfaceSpec spec = powerLawSpec(true);
+    spec.hardness = 2e8;
+    SurfaceCheckOptions o = small();
+    o.seeds = {1};
+    o.lightLoadPeriods = 1;
+    o.pressures = {4e7, 1e8};
+    o.unloadFrom = 1.6e8;
+    const SurfaceCheck c = checkSurface(spec, o);
+    ASSERT_EQ(c.pressures, o.pressures);
+    ASSERT_TRUE(c.unloadFrom.has_value());
+    ASSERT_EQ(c.exactUnloadingHPerK.size(), 2U);
+    const double Ep = ContactMaterials::pair(spec.side1, spec.side2).reducedModulus();
+    const Spectrum cut = spec.surfaces[0].spectrum().truncated(16.0 / 1e-3 * (1 + 1e-9));
+    BoundaryElementOptions bo;
+    bo.periodic = true;
+    bo.hardness = 2e8;
+    const auto path = BoundaryElementModel(synthesizeIsotropic(cut, grid, 1), Ep, bo).loadPath(1.6e8 / Ep, {4e7 / Ep, 1e8 / Ep});
+    for (std::size_t i = 0; i < 2; ++i) {
+        EXPECT_NEAR(c.exactUnloadingHPerK[i], path[i].conductancePerConductivity, 1e-12 * c.exactUnloadingHPerK[i]);
+        EXPECT_GT(c.exactUnloadingHPerK[i], 1.1 * c.exactHPerK[i]); // the flattened summits conduct more
+        EXPECT_DOUBLE_EQ(c.chosenUnloadingRatio[i], c.chosen().hPerK[i] / c.exactUnloadingHPerK[i]);
+    }
+    EXPECT_NE(c.report().find("unloaded from 1.6e+08 Pa"), std::string::npos) << c.report();
+    EXPECT_NE(c.csv().find(",h_per_k_checked_surface_unloading,ratio_chosen_unloading\n"), std::string::npos);
+    // Without it, none of that; a peak at the cap or without one is refused, named as the options say.
+    EXPECT_FALSE(checkSurface(spec, small()).unloadFrom.has_value());
+    o.unloadFrom = 2e8;
+    o.names.unloadFrom = "--unload-from";
+    EXPECT_THROW(
+        try { checkSurface(spec, o); } catch (const ParameterError& e) {
+            EXPECT_NE(std::string(e.what()).find("--unload-from"), std::string::npos) << e.what();
+            throw;
+        },
+        ParameterError);
+    o.unloadFrom = 1e8;
+    o.pressures = {1e6};
+    EXPECT_THROW(checkSurface(powerLawSpec(false), o), ParameterError);
+}

@@ -294,6 +294,23 @@ std::string SurfaceCheck::report() const
         }
         os << "\n";
     }
+    if (unloadFrom) {
+        os << "  unloaded from " << number(*unloadFrom) << " Pa (the joint carried it; docs/theory.md §7.3):";
+        row("  exact h_c/k_s [1/m]");
+        for (double h : exactUnloadingHPerK) {
+            cell(number(h));
+        }
+        row("  unloading / loading");
+        for (std::size_t i = 0; i < pressures.size(); ++i) {
+            cell(number(exactUnloadingHPerK[i] / exactHPerK[i]));
+        }
+        row("  the law / exact unloading");
+        for (std::size_t i = 0; i < pressures.size(); ++i) {
+            cell(number(chosenUnloadingRatio[i]) + (counted(i) ? "" : "*"));
+        }
+        os << "\n  (no law has an unloading branch yet: the law's h is its loading value; the condition "
+              "unloads by the exact curves only with model boundaryElement)\n";
+    }
     const int tolerance = int(checkTolerance * 100 + 0.5);
     const std::vector<double> notTrusted = untrusted();
     if (!notTrusted.empty()) {
@@ -347,7 +364,7 @@ std::string SurfaceCheck::csv() const
             os << ",ratio_" << l.name;
         }
     }
-    os << '\n';
+    os << (unloadFrom ? ",h_per_k_checked_surface_unloading,ratio_chosen_unloading" : "") << '\n';
     for (std::size_t i = 0; i < pressures.size(); ++i) {
         const bool trusted = i >= exactTrusted.size() || exactTrusted[i];
         os << formatNumber(pressures[i]) << ',' << formatNumber(pressures[i] / reducedModulus) << ','
@@ -360,6 +377,9 @@ std::string SurfaceCheck::csv() const
             if (l.unavailable.empty()) {
                 os << ',' << formatNumber(l.ratio[i]);
             }
+        }
+        if (unloadFrom) {
+            os << ',' << formatNumber(exactUnloadingHPerK[i]) << ',' << formatNumber(chosenUnloadingRatio[i]);
         }
         os << '\n';
     }
@@ -709,12 +729,21 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
     bo.hardness = out.hardness;
     bo.detrend = detrend;
     struct Exact {
-        std::vector<double> logMean, area, logLow, logHigh;
+        std::vector<double> logMean, area, logLow, logHigh, logUnloading;
     };
+    // The peak of an unloading check: with the cap, below H (requireUnloadingPeak's rule).
+    std::optional<double> peakLoad;
+    if (options.unloadFrom) {
+        out.unloadFrom = requireUnloadingPeak(*options.unloadFrom, out.hardness, options.names.unloadFrom,
+                                              "the hardness (a cap: hardness, hardnessFromYield or the softer "
+                                              "solid's S_y)");
+        peakLoad = checkLoad(*out.unloadFrom / Ep);
+    }
     out.exactTrusted.assign(count, true);
     std::vector<Exact> exact(parts.size(), Exact{std::vector<double>(count, 0.0), std::vector<double>(count, 0.0),
                                                  std::vector<double>(count, std::numeric_limits<double>::infinity()),
-                                                 std::vector<double>(count, -std::numeric_limits<double>::infinity())});
+                                                 std::vector<double>(count, -std::numeric_limits<double>::infinity()),
+                                                 std::vector<double>(count, 0.0)});
     log("check: the exact model on " + out.surface + ", " + out.regime + ", at " +
         (count == 1 ? "1 pressure, " + number(out.pressures.front()) + " Pa"
                     : std::to_string(count) + " pressures from " + number(out.pressures.front()) + " to " +
@@ -745,6 +774,22 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
                        << " s";
                     log(os.str());
                 });
+            // Unloaded from the peak at the same loads (each a positive, finite h_c/k_s: the
+            // deformed surface keeps at least the contact of the loading solve below the peak).
+            std::vector<BoundaryElementPoint> unloaded;
+            if (peakLoad) {
+                unloaded = model.loadPath(*peakLoad, loads);
+                for (std::size_t j = 0; j < unloaded.size(); ++j) {
+                    const double h = unloaded[j].conductancePerConductivity;
+                    if (!std::isfinite(h) || !(h > 0.0)) {
+                        throw ParameterError("check", "the exact conductance unloaded from " + number(*out.unloadFrom) +
+                                                          " Pa is " + number(h) + " 1/m at " +
+                                                          number(out.pressures[part.at[j]]) + " Pa");
+                    }
+                }
+                log("check: surface " + std::to_string(done) + " of " + std::to_string(surfaces) +
+                    " unloaded from " + number(*out.unloadFrom) + " Pa; " + number(seconds()) + " s");
+            }
             if (const std::string warning =
                     patchCorrectionWarning(points, Ep, "mirror true; in the contact entry, --mirror with --check, "
                                                    "mirror=True in Python");
@@ -768,6 +813,10 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
                                                       "): check other pressures");
                 }
                 exact[k].logMean[i] += std::log(h) / double(part.solved.size());
+                if (peakLoad) {
+                    exact[k].logUnloading[i] += std::log(unloaded[j].conductancePerConductivity) /
+                                                double(part.solved.size());
+                }
                 exact[k].area[i] += points[j].areaFraction / double(part.solved.size());
                 exact[k].logLow[i] = std::min(exact[k].logLow[i], std::log(h));
                 exact[k].logHigh[i] = std::max(exact[k].logHigh[i], std::log(h));
@@ -846,6 +895,13 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
             const double scale = answer / checked.hPerK[i];
             out.answerExactLow.push_back(out.exactTrusted[i] ? scale * out.exactHPerKLow[i] : nan);
             out.answerExactHigh.push_back(out.exactTrusted[i] ? scale * out.exactHPerKHigh[i] : nan);
+        }
+    }
+    if (peakLoad) {
+        const CheckedLaw& checked = out.chosen();
+        for (std::size_t i = 0; i < count; ++i) {
+            out.exactUnloadingHPerK.push_back(joined(i, [&](std::size_t k) { return std::exp(exact[k].logUnloading[i]); }));
+            out.chosenUnloadingRatio.push_back(checked.hPerK[i] / out.exactUnloadingHPerK[i]);
         }
     }
     out.seconds = seconds();

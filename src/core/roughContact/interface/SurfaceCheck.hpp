@@ -101,6 +101,11 @@ struct SurfaceCheckOptions {
     /// on periods of this many scan lengths, and joined with one scan length's up to
     /// checkBlendEnd (1 to 64; 1: one scan length at every pressure).
     std::size_t lightLoadPeriods = 4;
+    /// The joint has carried this nominal pressure [Pa] (with a cap, below it): each solved
+    /// surface is also unloaded from it (BoundaryElementModel::loadPath, docs/theory.md §7.3) at the
+    /// checked pressures, and the check gives the exact unloading h_c/k_s beside the loading one
+    /// and the chosen law's h (no law has an unloading branch: its loading value) over it.
+    std::optional<double> unloadFrom;
     /// A line for a log, at the start and after each solve.
     std::function<void(const std::string&)> log;
     /// How the front-end names these options in errors (the CLI's --synthesize, the contact
@@ -110,6 +115,7 @@ struct SurfaceCheckOptions {
         std::string seeds = "check seeds";
         std::string pressures = "check pressures";
         std::string lightLoadPeriods = "check light-load periods";
+        std::string unloadFrom = "check unload-from";
     } names;
 };
 
@@ -163,6 +169,12 @@ struct SurfaceCheck {
     /// Per pressure: false where the exact answer is not to be trusted (exactWarning); such a
     /// pressure counts for no law.
     std::vector<bool> exactTrusted;
+    /// With SurfaceCheckOptions::unloadFrom: that peak [Pa], and per pressure the checked
+    /// surface's exact h_c/k_s unloaded from it (geometric mean over the seeds, the periods joined
+    /// as the loading one) and the chosen law's over it (empty without a peak).
+    std::optional<double> unloadFrom;
+    std::vector<double> exactUnloadingHPerK;
+    std::vector<double> chosenUnloadingRatio;
     std::vector<CheckedLaw> laws;        ///< every law, in conductanceLawNames() order
     std::string chosenLaw;               ///< the spec's (or the default)
     /// The smallest worstFactor over the counted pressures; empty when none is counted.
@@ -199,7 +211,8 @@ struct SurfaceCheck {
     /// h_per_k_answer and the exact answer it implies (h_per_k_answer_exact_low, _high), the
     /// checked surface's exact area and h_c/k_s (area_checked_surface, h_per_k_checked_surface,
     /// its seeds' _min and _max), exact_trusted (1 or 0), one ratio_NAME column per law that
-    /// could be built.
+    /// could be built; with a peak, h_per_k_checked_surface_unloading and
+    /// ratio_chosen_unloading last.
     std::string csv() const;
 };
 
