@@ -39,30 +39,49 @@ void Foam::thermalContactResistanceFvPatchScalarField::readPeakPressure
     }
     scalarField& peak = coupling_.peakPressure;
     const char* entry = recorded ? "peakPressure" : "initialPeakPressure";
-    if (recorded)
+    // OpenFOAM's own errors of the entry (a list of another size than the
+    // patch, a word for a number) thrown, then reported naming it here
+    const bool throwing = foamCompat::throwFatalIOErrors();
+    try
     {
-        // A restart (or a decomposed or mapped field): the memory as written
+        if (recorded)
+        {
+            // A restart (or a decomposed or mapped field): the memory as
+            // written
 #if defined(ROUGHCONTACT_FOUNDATION)
-        peak = scalarField("peakPressure", dimPressure, dict, patch().size());
+            peak = scalarField("peakPressure", dimPressure, dict, patch().size());
 #else
-        peak = scalarField("peakPressure", dict, patch().size());
+            peak = scalarField("peakPressure", dict, patch().size());
 #endif
-    }
-    else if (initial)
-    {
-        peak = thermalContactLine::pressureValues
-        (
-            thermalContactLine::newPressure
+        }
+        else if (initial)
+        {
+            peak = thermalContactLine::pressureValues
             (
-                patch(), dict, db().time(), "initialPeakPressure"
-            )(),
-            patch(),
-            db().time()
-        );
+                thermalContactLine::newPressure
+                (
+                    patch(), dict, db().time(), "initialPeakPressure"
+                )(),
+                patch(),
+                db().time()
+            );
+        }
+        foamCompat::restoreFatalIOErrors(throwing);
+    }
+    catch (const IOerror& e)
+    {
+        foamCompat::restoreFatalIOErrors(throwing);
+        FatalIOErrorAt
+        (
+            e.ioFileName(), e.ioStartLineNumber(), e.ioEndLineNumber()
+        )
+            << who().c_str() << ": entry '" << entry << "' ("
+            << patch().size() << " faces): " << e.message().c_str()
+            << exit(FatalIOError);
     }
     forAll(peak, facei)
     {
-        if (!(peak[facei] >= 0) || !std::isfinite(peak[facei]))
+        if (!std::isfinite(peak[facei]) || peak[facei] < 0)
         {
             FatalIOErrorInFunction(dict)
                 << who().c_str() << ": entry '" << entry << "' gives "
