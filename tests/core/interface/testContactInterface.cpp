@@ -98,6 +98,24 @@ TEST(ContactInterface, EqualsTheHandBuiltModel)
     EXPECT_NE(ci.summary().find("jacksonGreen"), std::string::npos);
 }
 
+TEST(ContactInterface, AModelWithoutUnloadingCurvesFollowsThePressureOfTheMoment)
+{
+    // The default law has no unloading branch: the interface keeps no curves, a peak changes
+    // nothing (bit for bit), and the note a front-end says once tells why; without loadHistory
+    // it says nothing.
+    InterfaceSpec spec = steelOnCopper();
+    const ContactInterface ci(spec);
+    EXPECT_FALSE(ci.remembersLoad());
+    EXPECT_TRUE(ci.loadHistory());
+    EXPECT_EQ(ci.face(1e6, 50.0, 20.0, 1e8).conductance, ci.face(1e6, 50.0, 20.0).conductance);
+    EXPECT_NE(ci.loadHistoryNote().find(defaultConductanceLaw() + " has no unloading branch, so h follows the "
+                                        "pressure of the moment"),
+              std::string::npos)
+        << ci.loadHistoryNote();
+    spec.loadHistory = false;
+    EXPECT_EQ(ContactInterface(spec).loadHistoryNote(), "");
+}
+
 TEST(ContactInterface, ConductanceLawByName)
 {
     // `conductance NAME` of the boundary condition: the table's h column is the named law at

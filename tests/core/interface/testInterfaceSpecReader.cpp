@@ -333,6 +333,20 @@ TEST(InterfaceSpecReader, MirrorIsAFlag)
     messageOf([&] { readInterfaceSpec(c); }, "--mirror");
 }
 
+TEST(InterfaceSpecReader, LoadHistoryIsAFlagOnByDefaultForEveryModel)
+{
+    // loadHistory (the condition's memory of each face's peak): yes unless said, for any model
+    // (a law without unloading curves keeps the peaks and follows the pressure of the moment).
+    SpecValues c = contact();
+    EXPECT_TRUE(readInterfaceSpec(c).loadHistory);
+    c.set("loadHistory", false);
+    EXPECT_FALSE(readInterfaceSpec(c).loadHistory);
+    c.set("loadHistory", true);
+    EXPECT_TRUE(readInterfaceSpec(c).loadHistory);
+    c.set("loadHistory", 2.0);
+    messageOf([&] { readInterfaceSpec(c); }, "--loadHistory");
+}
+
 TEST(InterfaceSpecReader, SeedBelongsToSynthesize)
 {
     SpecValues c = contact();
