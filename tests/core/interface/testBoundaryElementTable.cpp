@@ -709,6 +709,25 @@ TEST(BoundaryElementTable, WithACapTheTableHoldsTheLoadPathsOfItsPeaks)
     EXPECT_FALSE(BoundaryElementTable(elastic).unloads());
     EXPECT_EQ(BoundaryElementTable(elastic).key(), BoundaryElementTable(elasticOff).key());
     EXPECT_NE(ContactInterface(elastic).loadHistoryNote().find("retraces loading"), std::string::npos);
+    // The curves follow pointsPerDecade, which a range under a decade's load list may not show
+    // (8 and 9 a decade over 0.55 decades: the same 6 loads): the key tells them apart.
+    InterfaceSpec short8 = spec;
+    short8.minPressure = 1e7;
+    short8.maxPressure = 1e7 * std::pow(10.0, 0.55);
+    short8.bemPointsPerDecade = 8;
+    InterfaceSpec short9 = short8;
+    short9.bemPointsPerDecade = 9;
+    ASSERT_EQ(BoundaryElementTable(short8).loads(), BoundaryElementTable(short9).loads());
+    EXPECT_NE(BoundaryElementTable(short8).key(), BoundaryElementTable(short9).key());
+    // A capped table too short for a curve (two loads, a stride of two) says so, not "no cap".
+    InterfaceSpec tiny = spec;
+    tiny.minPressure = 1e7;
+    tiny.maxPressure = 1.4e7;
+    tiny.bemPointsPerDecade = 6;
+    const ContactInterface tinyInterface(tiny);
+    EXPECT_FALSE(tinyInterface.remembersLoad());
+    EXPECT_NE(tinyInterface.loadHistoryNote().find("too short for an unloading curve"), std::string::npos)
+        << tinyInterface.loadHistoryNote();
 }
 
 TEST(BoundaryElementTable, BetweenPeaksTheInterpolatedUnloadingIsCloserThanLoading)

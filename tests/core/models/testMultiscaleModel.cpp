@@ -280,3 +280,28 @@ TEST(MultiscaleModel, oneLevelUnloadsAsAHertzianContactOfItsPeak)
     // The level yielded at that peak: unloading keeps more than loading.
     EXPECT_GT(m.unloadingAreaFraction(0.1 * peak, peak), 1.5 * m.areaFraction(0.1 * peak)); // 1.96
 }
+
+TEST(MultiscaleModel, NoModelUnloadsBelowItsLoadingCurveAndElasticOnesRetraceIt)
+{
+    // Every asperity law, peaks from light to complete contact: the unloading area never falls
+    // below the loading one at the same load (the flattened summits keep at least the virgin
+    // contact), and an elastic law's (hertz, jgh, jghConsistent) is its loading curve, bit for bit.
+    // (jgh caps a level at complete contact and grows faster than p^(2/3) near it: the Hertzian
+    // rule alone would drop such levels, 0.1 instead of 1.0 at a tenth of the peak 0.1.)
+    const Spectrum s = standIn();
+    for (const auto& asperity : allAsperityModels()) {
+        SCOPED_TRACE(asperity->name());
+        const MultiscaleModel m(s, Ep, asperity);
+        for (double peak : {1e-4, 1e-3, 1e-2, 1e-1}) {
+            for (double f : {0.9, 0.5, 0.1, 0.01}) {
+                const double unloaded = m.unloadingAreaFraction(f * peak, peak);
+                const double loaded = m.areaFraction(f * peak);
+                if (asperity->yields()) {
+                    EXPECT_GE(unloaded, loaded) << "peak " << peak << ", fraction " << f;
+                } else {
+                    EXPECT_EQ(unloaded, loaded) << "peak " << peak << ", fraction " << f;
+                }
+            }
+        }
+    }
+}

@@ -39,6 +39,9 @@ public:
     {
         return std::numeric_limits<double>::infinity();
     }
+    /// True when its asperities can yield (a plastic law past some force); false for an elastic
+    /// law, whose contact unloads along its loading curve (MultiscaleModel::unloadingAreaFraction).
+    virtual bool yields() const { return true; }
 };
 
 } // namespace roughContact

@@ -12,6 +12,7 @@ public:
     explicit Hertz(double Eprime);
 
     std::string name() const override { return "hertz"; }
+    bool yields() const override { return false; }
     double area(double w, double R) const override;
     double force(double w, double R) const override;
     double areaAtForce(double F, double R) const override;

@@ -31,6 +31,7 @@ public:
     JohnsonGreenwoodHigginson(double Eprime, Form form = Form::seed);
 
     std::string name() const override;
+    bool yields() const override { return false; } // elastic sinusoids
     double areaRatio(double pbar, const Level& level) const override;
 
     /// p* for the level (Eq. 6, or sqrt(2) pi E' beta f in the consistent form); from p* on

@@ -254,7 +254,10 @@ BoundaryElementTable::BoundaryElementTable(const InterfaceSpec& spec)
     k.f64(tolerance_);
     k.f64(conductanceTolerance);
     k.u64(precondition_ ? 1 : 0);
+    // The curves' peaks, loads and span follow pointsPerDecade too, which a short range's load
+    // list alone may not tell apart.
     k.u64(unloads_ ? unloadingDecades : 0);
+    k.u64(unloads_ ? pointsPerDecade_ : 0);
     key_ = k.sha256Hex();
 
     std::ostringstream os;
@@ -503,6 +506,9 @@ std::string BoundaryElementTable::write(const BoundaryElementTablePoints& points
              number(points.conductancesPerConductivity[k]) + "," + number(points.separations[k]) + "\n";
     }
     for (const UnloadingCurve& c : points.unloading) {
+        if (c.separations.size() != c.pressures.size()) {
+            throw ParameterError("boundary-element table", "an unloading curve has no separation column to write");
+        }
         s += unloadingTag + number(c.peak) + "\n";
         for (std::size_t k = 0; k < c.pressures.size(); ++k) {
             s += number(c.pressures[k]) + "," + number(c.areaFractions[k]) + "," +
@@ -750,6 +756,9 @@ std::vector<double> flatten(const BoundaryElementTablePoints& p)
     v.push_back(double(int(p.end)));
     v.push_back(double(p.unloading.size()));
     for (const UnloadingCurve& u : p.unloading) {
+        if (u.separations.size() != u.pressures.size()) {
+            throw ParameterError("boundary-element table", "an unloading curve has no separation column to send");
+        }
         v.push_back(u.peak);
         v.push_back(double(u.pressures.size()));
         for (const std::vector<double>* c :

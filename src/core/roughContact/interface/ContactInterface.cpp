@@ -319,6 +319,7 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
         const BoundaryElementTablePoints points = boundaryElementTable ? *boundaryElementTable : bem.build();
         table_ = std::make_unique<ContactTable>(points.table(bem.reducedModulus()));
         unloading_ = points.unloadingTable(*table_, bem.hardness());
+        cappedTable_ = bem.hardness().has_value();
         tableWarning_ = points.patchWarning;
         std::ostringstream os;
         os << bem.surface().nx() << " x " << bem.surface().ny() << " "
@@ -428,8 +429,10 @@ std::string ContactInterface::loadHistoryNote() const
     os.precision(3);
     if (unloading_.empty()) {
         os << "load history: each face keeps the largest pressure it carried, but " << conductanceLaw_
-           << (modelName_ == "boundaryElement" ? " without a cap (elastic: unloading retraces loading)"
-                                               : " has no unloading branch")
+           << (modelName_ != "boundaryElement" ? " has no unloading branch"
+               : cappedTable_ ? " has a table too short for an unloading curve (a curve needs a load below its "
+                                "peak: widen minPressure to maxPressure)"
+                              : " without a cap (elastic: unloading retraces loading)")
            << ", so h follows the pressure of the moment (docs/limitations.md)";
         return os.str();
     }

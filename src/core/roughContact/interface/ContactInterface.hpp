@@ -315,6 +315,7 @@ private:
     InterfaceRegime regime_;
     UnloadingTable unloading_;
     bool loadHistory_ = true;
+    bool cappedTable_ = false; ///< boundaryElement with a cap (for loadHistoryNote)
 
     /// Builds gap_ from spec.gap (after the table).
     void buildGap(const InterfaceSpec& spec);

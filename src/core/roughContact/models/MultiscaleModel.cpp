@@ -5,6 +5,7 @@
 #include "roughContact/Limits.hpp"
 #include "roughContact/surface/Roughness.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -67,8 +68,8 @@ double MultiscaleModel::unloadingAreaFraction(double load, double peakLoad) cons
     if (checkLoad(load) == 0.0) {
         return 0.0;
     }
-    if (!(load < peakLoad)) {
-        return areaFraction(load);
+    if (!(load < peakLoad) || !asperity_->yields()) {
+        return areaFraction(load); // at or above the peak, or elastic: the loading curve
     }
     const double F = load * An_ * Eprime_;
     const double Fmax = peakLoad * An_ * Eprime_;
@@ -82,8 +83,11 @@ double MultiscaleModel::unloadingAreaFraction(double load, double peakLoad) cons
         const Level& level = levels_[k];
         const double rMax = asperity_->areaRatio(pbarMax, level);
         // Fbar/Fbar_max = (F/N_i)/(Fmax/N_i,max) = pbar/pbarMax (eta_i cancels).
-        const double r = pbar < pbarMax ? rMax * std::pow(pbar / pbarMax, 2.0 / 3.0)
-                                        : (pbar >= completeAt_[k] ? 1.0 : asperity_->areaRatio(pbar, level));
+        // The loading law at pbar: what the level has when loaded there (beyond its peak's force,
+        // loading on); below it the Hertzian unloading, never less (the flattened summits keep at
+        // least the contact the virgin ones would have).
+        const double loading = pbar >= completeAt_[k] ? 1.0 : asperity_->areaRatio(pbar, level);
+        const double r = pbar < pbarMax ? std::max(rMax * std::pow(pbar / pbarMax, 2.0 / 3.0), loading) : loading;
         if (rMax < 1.0) { // assumption 5, at the peak and now
             Amax *= rMax;
         }

@@ -40,10 +40,10 @@ public:
     /// from the state the peak left them in, as a Hertzian contact of the radius that gives their
     /// peak area at their peak force (the continuous-radius unloading of a flattened sphere;
     /// docs/theory.md §3.6):
-    ///   Abar_i = Abar_i(Fbar_i,max) (Fbar_i/Fbar_i,max)^(2/3)   for Fbar_i < Fbar_i,max,
+    ///   Abar_i = max(Abar_i(Fbar_i,max) (Fbar_i/Fbar_i,max)^(2/3), Abar_i(Fbar_i))   for Fbar_i < Fbar_i,max,
     /// their loading law above it; Fbar_i = F/N_i with N_i = eta_i A_{i-1} of the unloading
-    /// state, Fbar_i,max of the peak's; assumption 5 as on loading. An elastic (hertz) level
-    /// unloads along its loading curve.
+    /// state, Fbar_i,max of the peak's; assumption 5 as on loading. An elastic asperity law
+    /// (AsperityModel::yields false: hertz, jgh, jghConsistent) unloads along its loading curve.
     double unloadingAreaFraction(double load, double peakLoad) const;
     /// Every level's state at the load (levels with zero amplitude omitted).
     std::vector<LevelState> trace(double load) const;
