@@ -15,6 +15,7 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/interface/BoundaryElementTable.hpp"
 #include "roughContact/interface/ContactInterface.hpp"
+#include "roughContact/interface/FaceCoupling.hpp"
 #include "roughContact/interface/InterfaceGap.hpp"
 #include "roughContact/interface/InterfaceSpecReader.hpp"
 #include "roughContact/interface/SpecSource.hpp"
@@ -147,10 +148,13 @@ InterfaceSpec interfaceSpec(const std::vector<SurfaceSpec>& surfaces, const Mate
 
 namespace {
 
-// The peak keyword: none (0: loading), else a finite pressure >= 0.
+// The peak keyword: none (0: loading), else a peak pressure (isPeakPressure).
 double checkedPeak(std::optional<double> peak)
 {
-    return peak ? roughContact::requireNonNegative("peak", roughContact::requireFinite("peak", *peak)) : 0.0;
+    if (peak && !roughContact::isPeakPressure(*peak)) {
+        throw roughContact::ParameterError("peak", "must be a finite pressure >= 0, got " + std::to_string(*peak));
+    }
+    return peak.value_or(0.0);
 }
 
 } // namespace
@@ -258,7 +262,8 @@ void bindInterface(py::module_& m)
         "bem_points_per_decade (None: " + std::to_string(defaults.bemPointsPerDecade) + "), table_file (the "
         "boundary-element table's cache file, as the condition's "
         "constant/boundaryElementTable.NAME.csv: read when it holds this table, else built and written); "
-        "load_history (default True): with a hardness, the table holds unloading curves (the peak keyword of "
+        "load_history (None: " + std::string(defaults.loadHistory ? "True" : "False") + "): with a hardness, the "
+        "table holds unloading curves (the peak keyword of "
         "area_fraction, conductance_per_conductivity and conductance); "
         "gap a GapSpec (gas and/or radiation beside the contact) or None; threads the process's threads of the "
         "boundary-element solves (set_threads; None: as they are). Building the table takes a fraction of a second "
@@ -276,12 +281,14 @@ void bindInterface(py::module_& m)
                          std::optional<std::size_t> bemPointsPerDecade, std::optional<GapSpec> gap,
                          std::optional<std::string> detrend,
                          std::optional<std::string> tableFile, const py::object& threads, std::optional<bool> mirror,
-                         bool loadHistory) {
+                         std::optional<bool> loadHistory) {
                  InterfaceSpec s =
                      interfaceSpec(surfaces, side1, side2, model, conductance, microhardness, vickers, minPressure,
                                    maxPressure, pointsPerDecade, synthesize, seed, periodic, hardness,
                                    hardnessFromYield, bemPointsPerDecade, gap, detrend, mirror);
-                 s.loadHistory = loadHistory;
+                 if (loadHistory) {
+                     s.loadHistory = *loadHistory;
+                 }
                  if (tableFile && tableFile->empty()) {
                      throw ParameterError("table_file", "is empty: give the table's file name (None: no file)");
                  }
@@ -327,7 +334,7 @@ void bindInterface(py::module_& m)
              py::arg("periodic") = py::none(), py::arg("hardness") = py::none(),
              py::arg("hardness_from_yield") = false, py::arg("bem_points_per_decade") = py::none(),
              py::arg("gap") = py::none(), py::arg("detrend") = py::none(), py::arg("table_file") = py::none(),
-             py::arg("threads") = py::none(), py::arg("mirror") = py::none(), py::arg("load_history") = true,
+             py::arg("threads") = py::none(), py::arg("mirror") = py::none(), py::arg("load_history") = py::none(),
              interfaceDoc.c_str())
         .def(
             "area_fraction",

@@ -9,7 +9,6 @@
 #include "volFields.H"
 #include "foamCompat.H"
 
-#include <cmath>
 #include <memory>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -81,7 +80,7 @@ void Foam::thermalContactResistanceFvPatchScalarField::readPeakPressure
     }
     forAll(peak, facei)
     {
-        if (!std::isfinite(peak[facei]) || peak[facei] < 0)
+        if (!roughContact::isPeakPressure(peak[facei]))
         {
             FatalIOErrorInFunction(dict)
                 << who().c_str() << ": entry '" << entry << "' gives "

@@ -92,11 +92,18 @@ void couple(const ContactInterface& iface, const CouplingInputs& in, CouplingCac
     for (std::size_t i = 0; i < n; ++i) {
         try {
             const double P = requireFinite("nominal pressure", nominalPressure(in.pressure[i], in.pressureNbr[i]));
-            const double peak =
-                history ? std::max({P, requireNonNegative("peak pressure", requireFinite("peak pressure", in.peakPressure[i])),
-                                    requireNonNegative("neighbour peak pressure",
-                                                       requireFinite("neighbour peak pressure", in.peakPressureNbr[i]))})
-                        : P;
+            double peak = P;
+            if (history) {
+                const double mine = in.peakPressure[i];
+                const double theirs = in.peakPressureNbr[i];
+                // One test on the fast path; the named error otherwise.
+                if (!(isPeakPressure(mine) && isPeakPressure(theirs))) {
+                    const bool bad = !isPeakPressure(mine);
+                    throw ParameterError(bad ? "peak pressure" : "neighbour peak pressure",
+                                         "must be a finite pressure >= 0, got " + std::to_string(bad ? mine : theirs));
+                }
+                peak = std::max({P, mine, theirs});
+            }
             if (!(P == cache.pressure[i] && peak == cache.peak[i])) {
                 const ContactTable::Values v = table.values(P);
                 // 1 at the peak and for an interface without unloading curves.

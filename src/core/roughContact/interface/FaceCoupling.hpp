@@ -32,6 +32,7 @@
 
 #include "roughContact/Error.hpp"
 
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <string>
@@ -68,6 +69,11 @@ inline int contactStateCode(FaceState s) { return s == FaceState::beyondTable ? 
 /// giving 0, see half of it). Each half first: 0.5 (a + b) overflows for pressures near the
 /// largest double, 0.5 a + 0.5 b does not.
 inline double nominalPressure(double P, double Pnbr) { return 0.5 * P + 0.5 * Pnbr; }
+
+/// The rule of a face's memory (CouplingInputs::peakPressure, the condition's peakPressure and
+/// initialPeakPressure, Python's peak=): a finite pressure >= 0 [Pa]. Finiteness first: no
+/// ordered comparison with a NaN, which OpenFOAM's floating-point trap would end.
+inline bool isPeakPressure(double p) { return std::isfinite(p) && p >= 0.0; }
 
 /// The gap width of a face apart from the widths both sides give [m]: their mean, as for the
 /// pressure (both sides get the same h).
