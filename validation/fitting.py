@@ -100,15 +100,16 @@ def nelder_mead(f, x0, step=0.1, iterations=4000):
     return simplex[i], values[i]
 
 
-def minimax(rc, c, free, pts, valid=lambda c: True, top=64):
+def minimax(rc, c, free, pts, valid=lambda c: True, top=64, miss=misses):
     """c with the constants named in `free` fitted: a minimax of |law/exact - 1| over pts,
     approached through q-norms of increasing q (4, 8, ... up to top), three Nelder-Mead runs
-    each; `valid(c)` refuses constants outside the law's domain."""
+    each; `valid(c)` refuses constants outside the law's domain. miss(rc, c, pts): the misses
+    made small (default: the loading law's, misses)."""
     def objective(y, q):
         z = constants(rc, dict(zip(free, y)), c)
         if not valid(z):
             return 1e9
-        return float(numpy.mean(misses(rc, z, pts) ** q) ** (1.0 / q))
+        return float(numpy.mean(miss(rc, z, pts) ** q) ** (1.0 / q))
     y = numpy.array([getattr(c, name) for name in free], float)
     for q in (q for q in (4, 8, 16, 32, 64) if q <= top):
         for _ in range(3):

@@ -113,6 +113,39 @@ void bindFittedLaw(py::module_& m)
         "each point: nominal pressure P [Pa], rms height sigma [m], mean absolute slope m, bandwidth ratio W, "
         "E' [Pa], the cap H [Pa] (NaN: elastic), the heights' shrunk skewness and the first level's share s1 "
         "(NaN: no light-load factor), with `constants`. Equally long arrays (or numbers) in, an array out.");
+    m.def(
+        "fitted_unloading_factor",
+        [](const py::handle& P, const py::handle& peak, const py::handle& m, const py::handle& Eprime,
+           const py::handle& hardness, const FittedElastoPlasticConstants& constants) {
+            const Array p = numbers(P, "P");
+            const Array arrays[] = {numbers(peak, "peak"), numbers(m, "m"), numbers(Eprime, "Eprime"),
+                                    numbers(hardness, "hardness")};
+            const auto n = static_cast<std::size_t>(p.size());
+            for (const Array& a : arrays) {
+                if (static_cast<std::size_t>(a.size()) != n) {
+                    throw ParameterError("fitted_unloading_factor", "every argument needs as many values as P (" +
+                                                                        std::to_string(n) + ")");
+                }
+            }
+            Array out(p.request().shape);
+            double* r = out.mutable_data();
+            {
+                py::gil_scoped_release release;
+                for (std::size_t i = 0; i < n; ++i) {
+                    const double Hi = arrays[3].data()[i];
+                    r[i] = fittedUnloadingFactor(p.data()[i], arrays[0].data()[i], arrays[1].data()[i],
+                                                 arrays[2].data()[i],
+                                                 std::isnan(Hi) ? std::nullopt : std::optional<double>(Hi), constants);
+                }
+            }
+            return out;
+        },
+        py::arg("P"), py::arg("peak"), py::arg("m"), py::arg("Eprime"), py::arg("hardness"),
+        py::arg("constants") = FittedElastoPlasticConstants{},
+        "R of fittedElastoPlastic's unloading branch (the core's fittedUnloadingFactor): the factor on the "
+        "law's loading h_c/k_s at the nominal pressure P [Pa] of a joint that has carried peak [Pa], for the "
+        "mean absolute slope m, E' [Pa] and the cap H [Pa] (NaN: elastic, R = 1), with `constants`. Equally "
+        "long arrays (or numbers) in, an array out.");
     m.def("gaussian_plastic_spot_conductance", &gaussianPlasticSpotConductance, py::arg("a"),
           "g(a): sigma h_c/(k_s m) of Gaussian plastic spots covering the area fraction a (FittedElastoPlastic.hpp).");
 }

@@ -96,11 +96,25 @@ void bindThermal(py::module_& m)
         .def_property_readonly("name", [](const Law& x) { return x.law->name(); }, "The law's name.")
         .def(
             "conductance_per_conductivity",
-            [](const Law& x, const py::object& P) {
+            [](const Law& x, const py::object& P, std::optional<double> unloadFrom) {
                 const ConductanceLaw& law = *x.law;
-                return vectorize(P, "pressures", [&](double p) { return law.perConductivity(p); });
+                if (!unloadFrom) {
+                    return vectorize(P, "pressures", [&](double p) { return law.perConductivity(p); });
+                }
+                if (!law.unloads()) {
+                    throw ParameterError("unload_from", "the law " + law.name() + " has no unloading branch "
+                                                        "(fittedElastoPlastic with a hardness has one)");
+                }
+                const double peak = requirePositive("unload_from", *unloadFrom);
+                return vectorize(P, "pressures",
+                                 [&](double p) { return law.perConductivity(p) * law.unloadingFactor(p, peak); });
             },
-            py::arg("pressures"), "h_c/k_s [1/m] at the nominal pressures [Pa] (inf at complete contact).")
+            py::arg("pressures"), py::kw_only(), py::arg("unload_from") = py::none(),
+            "h_c/k_s [1/m] at the nominal pressures [Pa] (inf at complete contact). unload_from [Pa]: the "
+            "heaviest pressure the joint has carried; below it the law's unloading branch (docs/theory.md "
+            "§5.7c), at and above it the loading value. ParameterError for a law without one (unloads).")
+        .def_property_readonly("unloads", [](const Law& x) { return x.law->unloads(); },
+                               "True when the law has an unloading branch (fittedElastoPlastic with a hardness).")
         .def(
             "mean_separation",
             [](const Law& x, const py::object& P) {

@@ -39,6 +39,38 @@ def test_table_is_the_model_and_the_law(interface):
                                law.conductance_per_conductivity(some), rtol=1e-12)
 
 
+def test_the_default_law_unloads_by_its_branch(interface):
+    """A multi-scale interface with the default law and a cap: below a peak h_c is the loading
+    value times the law's unloading factor (roughcontact.fitted_unloading_factor on the profile's
+    m, E' and H = 2.84 S_y), A_r/A_n the loading one; the law alone gives the same with
+    unload_from; a law without a branch refuses it."""
+    pair = rc.ContactMaterials.pair(STEEL_M, STEEL_M)
+    m = rc.profile_roughness(rc.read_profile(STANDIN)).mean_absolute_slope
+    H = 2.84 * STEEL_M.Sy
+    peak = 1e8
+    P = np.array([1e6, 1e7, 5e7])
+    R = rc.fitted_unloading_factor(P, np.full(3, peak), np.full(3, m), np.full(3, pair.reduced_modulus),
+                                   np.full(3, H))
+    assert np.all(R > 1.0)
+    assert interface.remembers_load and "unloading branch" in interface.load_history_note
+    np.testing.assert_allclose(interface.conductance_per_conductivity(P, peak=peak),
+                               R * interface.conductance_per_conductivity(P), rtol=1e-14)
+    assert np.array_equal(interface.area_fraction(P, peak=peak), interface.area_fraction(P))
+    model = rc.Model("jacksonGreen", interface.surface, pair)
+    law = rc.ConductanceLaw(rc.default_conductance_law(), model=model, Eprime=pair.reduced_modulus,
+                            roughness=rc.profile_roughness(rc.read_profile(STANDIN)), hardness=H)
+    assert law.unloads
+    np.testing.assert_allclose(law.conductance_per_conductivity(P, unload_from=peak),
+                               R * law.conductance_per_conductivity(P), rtol=1e-14)
+    assert np.array_equal(law.conductance_per_conductivity([2e8], unload_from=peak),
+                          law.conductance_per_conductivity([2e8]))
+    mikic = rc.ConductanceLaw("mikic", Eprime=pair.reduced_modulus,
+                              roughness=rc.profile_roughness(rc.read_profile(STANDIN)))
+    assert not mikic.unloads
+    with pytest.raises(rc.ParameterError, match="^unload_from.*mikic has no unloading branch"):
+        mikic.conductance_per_conductivity(P, unload_from=peak)
+
+
 def test_queries(interface):
     assert interface.area_fraction(0.0) == 0.0 and interface.conductance_per_conductivity(-1.0) == 0.0
     P = np.array([[1e4, 1e5], [1e6, 1e7]])

@@ -6,7 +6,8 @@ constants being fitted). Its seven constants are fitted as the law is built: the
 (C_E, A, beta) on the engineering range's four training spectra, elastic; the plastic branch and
 the blend (C_P, K, N) on their capped points; the light-load slope A_s1 on the light loads of
 those four and of the eight spectra of spectralShapes; in turn until none moves. The skewness
-factor's constants are the skewness study's fit, the heavy-load rate's the heavyLoads study's.
+factor's constants are the skewness study's fit, the heavy-load rate's the heavyLoads study's, the
+unloading branch's the unloading study's.
 `run` writes all of them into src/core/roughContact/thermal/FittedElastoPlasticConstants.inc;
 `check` fits again from the committed data and fails where that file differs (docs/validation/
 fittedElastoPlastic.md). Held out: the X3P map and the second hold-out, never fitted.
@@ -162,13 +163,13 @@ def constant_sets(ctx):
     FittedElastoPlasticConstants.inc: the fit's (rounded to 4 decimals, as the file keeps them),
     the light-load factor's parameters, and the skewness and heavyLoads studies' (their fits,
     rounded, and their own ranges)."""
-    from . import heavyLoads, skewness
+    from . import heavyLoads, skewness, unloading
     pts = points(ctx)
     fitted, _ = fit(ctx, pts)
     values = {n: round(getattr(fitted, n), 4) for n in FITTED}
     values.update(LIGHT)
     what = dict(WHAT)
-    for study in (skewness, heavyLoads):
+    for study in (skewness, heavyLoads, unloading):
         found = study.fit(ctx)
         for name, (value, description) in found.items():
             values[name] = round(value, 4)

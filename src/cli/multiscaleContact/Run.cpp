@@ -167,20 +167,20 @@ int runCurve(const Options& o)
     const std::vector<double> loads = loadsOf(o, materials.reducedModulus(), &pressures);
     const auto model = makeContactModel(o.model, spectrum, materials, mo);
     const auto* ms = dynamic_cast<const MultiscaleModel*>(model.get());
-    // --unload-from on a multi-scale model: its unloading area (docs/theory.md §3.6), a column
-    // beside the loading one; the laws have no unloading branch, so no conductance beside it.
+    // --unload-from on a multi-scale model: its unloading area (docs/theory.md §3.6) and, with a
+    // conductance, the law's unloading branch (§5.7c), columns beside the loading ones.
     double peakLoad = 0.0;
     if (o.unloadFrom) {
         if (ms == nullptr) {
             throw ParameterError("--unload-from", "unloads --model boundaryElement (with a cap) and the multi-scale "
-                                                  "models' area; " + o.model + " has no unloading curve");
+                                                  "models; " + o.model + " has no unloading curve");
         }
-        if (conductance || o.levels) {
-            throw ParameterError("--unload-from", std::string("of a multi-scale model gives its unloading area only: ") +
-                                                      (o.levels ? "leave out --levels" :
-                                                                  "the conductance laws have no unloading branch yet "
-                                                                  "(leave out the conductance and gap options, or "
-                                                                  "use --model boundaryElement with a cap)"));
+        if (o.levels || gapInputs) {
+            throw ParameterError("--unload-from", std::string("of a multi-scale model gives its unloading area and "
+                                                              "the law's unloading conductance: ") +
+                                                      (o.levels ? "leave out --levels"
+                                                                : "the gap has no unloading branch (leave out the gap "
+                                                                  "options)"));
         }
         peakLoad = checkLoad(requirePositive("--unload-from", *o.unloadFrom) / materials.reducedModulus());
     }
@@ -261,6 +261,14 @@ int runCurve(const Options& o)
         if (why.empty()) {
             law = makeConductanceLaw(lawName, in);
         }
+    }
+    if (o.unloadFrom && conductance && !(law && law->unloads())) {
+        throw ParameterError("--unload-from", "the conductance law " + lawName + " has no unloading branch" +
+                                                  (lawName == "fittedElastoPlastic"
+                                                       ? " without a cap (an elastic joint retraces its loading "
+                                                         "curve): give --Sy or --hardness"
+                                                       : " (fittedElastoPlastic with a cap has one)") +
+                                                  "; leave out the conductance options for the unloading area alone");
     }
     // --conductance-law all: every law that can be built here, a column h_per_k_NAME each.
     std::vector<std::pair<std::string, std::unique_ptr<ConductanceLaw>>> every;
@@ -343,7 +351,8 @@ int runCurve(const Options& o)
     for (const auto& [name, l] : every) {
         out << ",h_per_k_" << name;
     }
-    out << (o.unloadFrom ? ",unloading_area_fraction" : "") << '\n';
+    out << (o.unloadFrom ? ",unloading_area_fraction" : "") << (o.unloadFrom && conductance ? ",unloading_h_per_k" : "")
+        << (o.unloadFrom && conductance && ks ? ",unloading_h" : "") << '\n';
     for (std::size_t i = 0; i < loads.size(); ++i) {
         const double load = loads[i];
         if (!pressures.empty()) {
@@ -402,6 +411,14 @@ int runCurve(const Options& o)
         }
         if (o.unloadFrom) {
             out << ',' << ms->unloadingAreaFraction(load, peakLoad);
+            if (conductance) {
+                // The law checked above: it unloads (at and above the peak its loading value).
+                const double hk = law->perConductivity(load * Ep) * law->unloadingFactor(load * Ep, peakLoad * Ep);
+                out << ',' << hk;
+                if (ks) {
+                    out << ',' << *ks * hk;
+                }
+            }
         }
         out << '\n';
     }

@@ -639,9 +639,15 @@ TEST(Cli, UnloadFromAddsTheJointThatCarriedThePeak)
                 {"--unload-from", "gap"});
     expectError("--profile '" + standin + "' --model persson" + steel + " --loads 1e-4 --unload-from 1MPa",
                 {"--unload-from", "persson has no unloading curve"});
-    expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --conductance --loads 1e-4 "
+    expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --conductance-law mikic --loads 1e-4 "
                 "--unload-from 1MPa",
-                {"--unload-from", "no unloading branch"});
+                {"--unload-from", "mikic has no unloading branch"});
+    expectError("--profile '" + standin + "' --model hertz --E 179.52e9 --nu 0.32 --conductance --loads 1e-4 "
+                "--unload-from 1MPa",
+                {"--unload-from", "fittedElastoPlastic has no unloading branch without a cap"});
+    expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --conductance --loads 1e-4 "
+                "--unload-from 1MPa --gas air --gas-pressure 1e5 --temperature 300",
+                {"--unload-from", "the gap has no unloading branch"});
     expectError("--profile '" + standin + "' --model hertz --E 179.52e9 --nu 0.32 --check --loads 1e-4 "
                 "--unload-from 1MPa",
                 {"--unload-from", "hardness"});
@@ -670,6 +676,35 @@ TEST(Cli, UnloadFromGivesAMultiscaleModelsUnloadingArea)
         }
         if (std::string(model) == "hertz") {
             EXPECT_EQ(csv.rows[0].at(column(csv, "unloading_area_fraction")), csv.rows[0].at(column(csv, "area_fraction")));
+        }
+    }
+}
+
+TEST(Cli, UnloadFromGivesTheDefaultLawsUnloadingBranch)
+{
+    // With a conductance the default law's unloading branch (docs/theory.md §5.7c) stands beside
+    // the loading h: the law's h at P times its unloading factor from the peak, to the 10 digits
+    // the CLI prints; above the loading h below the peak, equal to it at and above the peak.
+    const CommandResult r = run("--profile '" + standin + "' --model jacksonGreen" + steel +
+                                " --conductance --k1 50 --k2 50 --pressures 1MPa,10MPa,30MPa,40MPa --unload-from 30MPa");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Csv csv = parseCsv(r.out);
+    ASSERT_EQ(csv.rows.size(), 4U);
+    const double Ep = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9}).reducedModulus();
+    const double m = profileRoughness(readProfile(standin)).meanAbsoluteSlope;
+    for (std::size_t i = 0; i < 4; ++i) {
+        const double P = std::stod(csv.rows[i].at(column(csv, "nominal_pressure")));
+        SCOPED_TRACE(P);
+        // h_per_k as printed (10 digits) times the factor: within the printing's rounding.
+        const double loading = std::stod(csv.rows[i].at(column(csv, "h_per_k")));
+        const double hk = loading * fittedUnloadingFactor(P, 30e6, m, Ep, 2.84 * 0.2e9);
+        const double printed = std::stod(csv.rows[i].at(column(csv, "unloading_h_per_k")));
+        EXPECT_NEAR(printed, hk, 2e-9 * hk);
+        EXPECT_NEAR(std::stod(csv.rows[i].at(column(csv, "unloading_h"))), 50.0 * printed, 2e-9 * 50.0 * printed);
+        if (P < 30e6) {
+            EXPECT_GT(hk, 1.05 * loading);
+        } else {
+            EXPECT_EQ(csv.rows[i].at(column(csv, "unloading_h_per_k")), csv.rows[i].at(column(csv, "h_per_k")));
         }
     }
 }

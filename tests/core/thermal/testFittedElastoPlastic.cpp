@@ -479,3 +479,110 @@ TEST(FittedElastoPlastic, ATableEndsWhereTheLawConductsPerfectly)
                                                                      firstLevelShare(ci.surface()));
     EXPECT_NEAR(ci.conductancePerConductivity(P), law, 5e-3 * law); // the table's tolerance
 }
+
+TEST(FittedElastoPlastic, TheUnloadingBranchIsItsClosedForm)
+{
+    // R = exp((l_0 Phi(gamma) + l_1 c)(1 - s^q)), s = P/P_max, c = -ln(1 - P_max/H),
+    // Phi = 1/(1 + (gamma/gamma_M)^2), gamma = H/(E' m sqrt(pi/2)) (FittedElastoPlastic.hpp),
+    // computed here from the constants; 1 on loading and without a cap, bit for bit.
+    const FittedElastoPlasticConstants c;
+    const double H = 1.42e9;
+    const double m = rough.meanAbsoluteSlope;
+    const double gamma = H / (Ep * m * std::sqrt(pi / 2.0));
+    for (double peakOverH : {0.01, 0.3, 0.77}) {
+        for (double s : {0.0, 0.03, 0.2, 0.5, 0.99}) {
+            SCOPED_TRACE(std::to_string(peakOverH) + " " + std::to_string(s));
+            const double peak = peakOverH * H;
+            const double L = c.unloadingBase / (1.0 + std::pow(gamma / c.unloadingPlasticityMidpoint, 2)) -
+                             c.unloadingFlow * std::log(1.0 - peakOverH);
+            const double R = std::exp(L * (1.0 - std::pow(s, c.unloadingRise)));
+            EXPECT_NEAR(fittedUnloadingFactor(s * peak, peak, m, Ep, H), R, 1e-14 * R);
+            EXPECT_GT(R, 1.0);
+        }
+        EXPECT_EQ(fittedUnloadingFactor(peakOverH * H, peakOverH * H, m, Ep, H), 1.0);
+        EXPECT_EQ(fittedUnloadingFactor(2.0 * peakOverH * H, peakOverH * H, m, Ep, H), 1.0);
+        EXPECT_EQ(fittedUnloadingFactor(0.1 * peakOverH * H, peakOverH * H, m, Ep, std::nullopt), 1.0);
+    }
+    // Continuous at the peak: a hair below it, R is 1 to the hair.
+    EXPECT_NEAR(fittedUnloadingFactor(1e7 * (1.0 - 1e-9), 1e7, m, Ep, H), 1.0, 1e-8);
+    // Mikic's criterion: predominantly plastic at gamma <= 0.33 (Phi 0.9), elastic at >= 3 (0.1).
+    EXPECT_NEAR(fittedUnloadingPlasticShare(1.0 / 3.0), 0.9, 1e-12);
+    EXPECT_NEAR(fittedUnloadingPlasticShare(3.0), 0.1, 1e-12);
+    EXPECT_EQ(fittedUnloadingPlasticShare(0.0), 1.0);
+    // P_max/H held at 0.9 above it (the study's peaks reach 0.77).
+    EXPECT_NEAR(fittedUnloadingFactor(0.2 * 0.95 * H, 0.95 * H, m, Ep, H),
+                fittedUnloadingFactor(0.2 * 0.9 * H, 0.9 * H, m, Ep, H), 1e-14);
+    EXPECT_GT(fittedUnloadingFactor(0.2 * 0.9 * H, 0.9 * H, m, Ep, H),
+              fittedUnloadingFactor(0.2 * 0.8 * H, 0.8 * H, m, Ep, H));
+}
+
+TEST(FittedElastoPlastic, AnUnloadedJointConductsLessTheFurtherItIsUnloaded)
+{
+    // h_u(P) = h(P) R(P/P_max) rises with P from deep unloading up to the peak, where it meets
+    // the loading curve, and stays above the loading curve below it: over plasticity indices
+    // 0.03-3, peaks x = 1e-4 to 0.1 (up to 0.9 H) and W 0.45-0.8.
+    const double m = rough.meanAbsoluteSlope;
+    int cases = 0;
+    for (double gamma : {0.03, 0.1, 0.3, 1.0, 3.0}) {
+        const double H = gamma * Ep * m * std::sqrt(pi / 2.0);
+        for (double w : {0.45, 0.65, 0.8}) {
+            for (double xmax : {1e-4, 1e-3, 1e-2, 0.1}) {
+                const double peak = xmax * Ep * std::sqrt(pi) * m;
+                if (peak > 0.9 * H) {
+                    continue;
+                }
+                ++cases;
+                SCOPED_TRACE("gamma " + std::to_string(gamma) + " W " + std::to_string(w) + " x " +
+                             std::to_string(xmax));
+                double previous = fittedElastoPlasticConductancePerConductivity(peak, rough, w, Ep, H);
+                for (double s = 0.98; s >= 0.01; s *= 0.9) {
+                    const double P = s * peak;
+                    const double loading = fittedElastoPlasticConductancePerConductivity(P, rough, w, Ep, H);
+                    const double h = loading * fittedUnloadingFactor(P, peak, m, Ep, H);
+                    ASSERT_LT(h, previous) << "s " << s;
+                    ASSERT_GT(h, loading) << "s " << s;
+                    previous = h;
+                }
+            }
+        }
+    }
+    EXPECT_GE(cases, 40);
+}
+
+TEST(FittedElastoPlastic, TheUnloadingBranchRefusesBadInputAndIsTheLaws)
+{
+    const double m = rough.meanAbsoluteSlope;
+    const struct {
+        double P, peak, m;
+        const char* entry;
+    } bad[] = {{std::nan(""), 1e7, m, "contact pressure P"}, {-1.0, 1e7, m, "contact pressure P"},
+               {1e6, std::nan(""), m, "peak pressure P_max"},  {1e6, -1.0, m, "peak pressure P_max"},
+               {1e6, std::numeric_limits<double>::infinity(), m, "peak pressure P_max"},
+               {1e6, 1e7, 0.0, "mean absolute slope m"},      {1e6, 1e7, std::nan(""), "mean absolute slope m"}};
+    for (const auto& b : bad) {
+        try {
+            fittedUnloadingFactor(b.P, b.peak, b.m, Ep, 1.42e9);
+            ADD_FAILURE() << b.entry << " accepted";
+        } catch (const ParameterError& e) {
+            EXPECT_NE(std::string(e.what()).find(b.entry), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_THROW(fittedUnloadingFactor(1e6, 1e7, m, Ep, -1.0), ParameterError);
+    EXPECT_THROW(fittedUnloadingPlasticShare(-0.1), ParameterError);
+    // The law by name: its branch with a cap, none without one; the other laws have none.
+    const Spectrum two({1e3, 3e3}, {1e-6, 1e-6}, 1e-3);
+    ConductanceLawInputs in;
+    in.Eprime = Ep;
+    in.roughness = rough;
+    in.spectrum = &two;
+    in.hardness = 1.42e9;
+    const auto law = makeConductanceLaw("fittedElastoPlastic", in);
+    EXPECT_TRUE(law->unloads());
+    EXPECT_EQ(law->unloadingFactor(1e6, 1e7), fittedUnloadingFactor(1e6, 1e7, m, Ep, 1.42e9));
+    in.hardness.reset();
+    EXPECT_FALSE(makeConductanceLaw("fittedElastoPlastic", in)->unloads());
+    in.microhardness = 1.42e9;
+    const auto cmy = makeConductanceLaw("cooperMikicYovanovich", in);
+    EXPECT_FALSE(cmy->unloads());
+    EXPECT_EQ(cmy->unloadingFactor(1e6, 1e7), 1.0);
+}

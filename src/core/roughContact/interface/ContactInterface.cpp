@@ -368,9 +368,9 @@ ContactInterface::ContactInterface(const InterfaceSpec& spec, const BoundaryElem
     // A measured profile's or map's (the regime says it too); none for a spectrum.
     const std::optional<HeightSkewness> skewness = equivalentSkewness(spec.surfaces);
     in.skewness = skewness;
-    const std::unique_ptr<ConductanceLaw> law = makeConductanceLaw(conductanceLaw_, in);
+    law_ = makeConductanceLaw(conductanceLaw_, in);
     table_ = std::make_unique<ContactTable>(*model_, spec.minPressure.value_or(1e-9 * Ep),
-                                            spec.maxPressure.value_or(Ep), spec.pointsPerDecade, law.get());
+                                            spec.maxPressure.value_or(Ep), spec.pointsPerDecade, law_.get());
     // Held to the capped reference when the area model caps the pressure, or when the law has a
     // plastic branch and a cap to use; P/H with the law's cap (conductanceLawHardness).
     const std::optional<double> H = conductanceLawHardness(spec.microhardness, materials_);
@@ -416,8 +416,21 @@ FaceContact ContactInterface::face(double P, double k1, double k2, double peak) 
     requireFinite("pressure", P);
     const double ks = harmonicMeanConductivity(k1, k2);
     const ContactTable::Values v = table_->values(P);
-    const UnloadingFactors f = unloading_.factors(P, peak);
+    const UnloadingFactors f = unloadingFactors(P, peak);
     return {std::min(1.0, v.areaFraction * f.areaFraction), ks * v.conductancePerConductivity * f.conductancePerConductivity};
+}
+
+UnloadingFactors ContactInterface::unloadingFactors(double P, double peak) const
+{
+    if (!unloading_.empty() || !lawUnloads()) {
+        return unloading_.factors(P, peak);
+    }
+    UnloadingFactors f;
+    // As the curves': 1 for faces apart (h_c 0 anyway) and at or above the peak.
+    if (P > 0.0 && P < peak) {
+        f.conductancePerConductivity = law_->unloadingFactor(P, peak);
+    }
+    return f;
 }
 
 std::string ContactInterface::loadHistoryNote() const
@@ -427,6 +440,11 @@ std::string ContactInterface::loadHistoryNote() const
     }
     std::ostringstream os;
     os.precision(3);
+    if (lawUnloads()) {
+        os << "load history: each face keeps the largest pressure it carried; below it h_c follows "
+           << conductanceLaw_ << "'s unloading branch (docs/theory.md §5.7c), A_r/A_n the pressure of the moment";
+        return os.str();
+    }
     if (unloading_.empty()) {
         os << "load history: each face keeps the largest pressure it carried, but " << conductanceLaw_
            << (modelName_ != "boundaryElement" ? " has no unloading branch"

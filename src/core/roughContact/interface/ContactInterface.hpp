@@ -16,6 +16,7 @@
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/Roughness.hpp"
 #include "roughContact/surface/Spectrum.hpp"
+#include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ContactTable.hpp"
 #include "roughContact/thermal/Microhardness.hpp"
 #include "roughContact/thermal/UnloadingTable.hpp"
@@ -134,9 +135,11 @@ struct InterfaceSpec {
 
     /// Every face remembers the largest pressure it has carried, and a joint unloaded from it
     /// conducts as the model's unloading curves say (docs/theory.md §7.6): boundaryElement with a
-    /// cap builds them into its table (BoundaryElementTable.hpp); the other models have none, so
-    /// h follows the pressure of the moment (the front-ends keep the peaks and say so). false:
-    /// no memory, no unloading curves (today's behaviour, a table without them).
+    /// cap builds them into its table (BoundaryElementTable.hpp); a multi-scale model's h_c takes
+    /// its law's unloading branch where the law has one (fittedElastoPlastic with a cap,
+    /// §5.7c; A_r/A_n then follows the pressure of the moment); otherwise h follows the pressure
+    /// of the moment (the front-ends keep the peaks and say so). false: no memory, no unloading
+    /// curves (today's behaviour, a table without them).
     bool loadHistory = true;
 
     /// The gap beside the contact (gas, radiation: InterfaceGap.hpp); none: nothing crosses
@@ -243,17 +246,19 @@ public:
     /// NaN or infinite pressure or a bad k.
     FaceContact face(double P, double k1, double k2, double peak = 0.0) const;
 
-    /// True when the interface's model has unloading curves (boundaryElement with a cap and
-    /// loadHistory): a joint below the heaviest load it carried then conducts as they say.
-    bool remembersLoad() const noexcept { return !unloading_.empty(); }
+    /// True with loadHistory when the interface unloads: boundaryElement with a cap (its unloading
+    /// curves) or a law with an unloading branch (ConductanceLaw::unloads): a joint below the
+    /// heaviest load it carried then conducts as they say.
+    bool remembersLoad() const noexcept { return !unloading_.empty() || lawUnloads(); }
     /// The spec's loadHistory: a front-end keeps each face's peak pressure (and gives it to
     /// couple(), CouplingInputs::peakPressure) when it is on.
     bool loadHistory() const noexcept { return loadHistory_; }
     /// The unloading curves (empty: none).
     const UnloadingTable& unloading() const noexcept { return unloading_; }
-    /// The factors on the loading values at P [Pa] of a joint that has carried peak [Pa]
-    /// (UnloadingTable::factors; all 1 without curves or at P >= peak).
-    UnloadingFactors unloadingFactors(double P, double peak) const { return unloading_.factors(P, peak); }
+    /// The factors on the loading values at P [Pa] of a joint that has carried peak [Pa]: the
+    /// unloading curves' (UnloadingTable::factors), or h_c's by the law's unloading branch (A_r/A_n
+    /// and the separation 1); all 1 at P >= peak and where the interface does not unload.
+    UnloadingFactors unloadingFactors(double P, double peak) const;
     /// What the load history does here, for a front-end to say once: with loadHistory on, the
     /// unloading curves' peaks, or that the model has none and h follows the pressure of the
     /// moment (the peaks are still kept); empty with it off.
@@ -316,6 +321,10 @@ private:
     UnloadingTable unloading_;
     bool loadHistory_ = true;
     bool cappedTable_ = false; ///< boundaryElement with a cap (for loadHistoryNote)
+    /// A multi-scale model's conductance law (its unloading branch); none for boundaryElement.
+    std::unique_ptr<ConductanceLaw> law_;
+
+    bool lawUnloads() const noexcept { return loadHistory_ && law_ && law_->unloads(); }
 
     /// Builds gap_ from spec.gap (after the table).
     void buildGap(const InterfaceSpec& spec);

@@ -308,8 +308,8 @@ std::string SurfaceCheck::report() const
         for (std::size_t i = 0; i < pressures.size(); ++i) {
             cell(number(chosenUnloadingRatio[i]) + (counted(i) ? "" : "*"));
         }
-        os << "\n  (no law has an unloading branch yet: the law's h is its loading value; the condition "
-              "unloads by the exact curves only with model boundaryElement)\n";
+        os << (chosenUnloads ? "\n  (the law's h on unloading: its unloading branch, docs/theory.md §5.7c)\n"
+                             : "\n  (the chosen law has no unloading branch: its h is its loading value)\n");
     }
     const int tolerance = int(checkTolerance * 100 + 0.5);
     const std::vector<double> notTrusted = untrusted();
@@ -897,10 +897,21 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
         }
     }
     if (peakLoad) {
-        const CheckedLaw& checked = out.chosen();
+        // The chosen law's h on unloading: its unloading branch where it has one (ConductanceLaw::
+        // unloadingFactor; 1 for the others: the loading value), each realization's own.
+        std::size_t l = 0;
+        while (laws[0][l].first != out.chosenLaw) {
+            ++l;
+        }
+        out.chosenUnloads = laws[0][l].second && laws[0][l].second->unloads();
         for (std::size_t i = 0; i < count; ++i) {
+            const double P = out.pressures[i];
             out.exactUnloadingHPerK.push_back(joined(i, [&](std::size_t k) { return std::exp(exact[k].logUnloading[i]); }));
-            out.chosenUnloadingRatio.push_back(checked.hPerK[i] / out.exactUnloadingHPerK[i]);
+            const double law = joined(i, [&](std::size_t k) {
+                const ConductanceLaw& c = *laws[k][l].second;
+                return c.perConductivity(P) * c.unloadingFactor(P, *out.unloadFrom);
+            });
+            out.chosenUnloadingRatio.push_back(law / out.exactUnloadingHPerK[i]);
         }
     }
     out.seconds = seconds();

@@ -104,7 +104,8 @@ struct SurfaceCheckOptions {
     /// The joint has carried this nominal pressure [Pa] (with a cap, below it): each solved
     /// surface is also unloaded from it (BoundaryElementModel::loadPath, docs/theory.md §7.3) at the
     /// checked pressures, and the check gives the exact unloading h_c/k_s beside the loading one
-    /// and the chosen law's h (no law has an unloading branch: its loading value) over it.
+    /// and the chosen law's h on unloading (its unloading branch, or its loading value for a law
+    /// without one) over it.
     std::optional<double> unloadFrom;
     /// A line for a log, at the start and after each solve.
     std::function<void(const std::string&)> log;
@@ -175,6 +176,7 @@ struct SurfaceCheck {
     std::optional<double> unloadFrom;
     std::vector<double> exactUnloadingHPerK;
     std::vector<double> chosenUnloadingRatio;
+    bool chosenUnloads = false; ///< the chosen law has an unloading branch (else its loading h)
     std::vector<CheckedLaw> laws;        ///< every law, in conductanceLawNames() order
     std::string chosenLaw;               ///< the spec's (or the default)
     /// The smallest worstFactor over the counted pressures; empty when none is counted.

@@ -121,6 +121,11 @@ public:
     {
         return fittedElastoPlasticConductancePerConductivity(P, r_, W_, Eprime_, H_, s_, s1_);
     }
+    bool unloads() const override { return H_.has_value(); }
+    double unloadingFactor(double P, double peak) const override
+    {
+        return fittedUnloadingFactor(P, peak, r_.meanAbsoluteSlope, Eprime_, H_);
+    }
 
 private:
     SurfaceRoughness r_;
@@ -162,6 +167,13 @@ double ConductanceLaw::meanSeparation(double P) const
 {
     checkPressure(P);
     return std::numeric_limits<double>::quiet_NaN();
+}
+
+double ConductanceLaw::unloadingFactor(double P, double peak) const
+{
+    checkPressure(P);
+    checkPressure(peak);
+    return 1.0;
 }
 
 std::optional<double> conductanceLawHardness(std::optional<double> microhardness, const ContactMaterials& materials)

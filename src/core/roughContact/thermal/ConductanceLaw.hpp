@@ -54,6 +54,13 @@ public:
     /// NaN when its model does not reach complete contact. Both are Barber-consistent with
     /// perConductivity: h_c/k_s = -(1/E') dP/dY.
     virtual double meanSeparation(double P) const;
+    /// True when the law has an unloading branch: below the heaviest pressure a joint has carried
+    /// it conducts unloadingFactor times its loading value (fittedElastoPlastic with a cap,
+    /// docs/theory.md §5.7c). false (this default): h follows the pressure of the moment.
+    virtual bool unloads() const { return false; }
+    /// The factor on perConductivity(P) at the nominal pressure P [Pa] of a joint that has carried
+    /// peak [Pa]: 1 at P >= peak and for a law without an unloading branch (this default).
+    virtual double unloadingFactor(double P, double peak) const;
 };
 
 /// What the laws are built from; each law takes what it needs and refuses (ParameterError

@@ -187,4 +187,43 @@ double fittedElastoPlasticConductancePerConductivity(double P, const SurfaceRoug
     return std::pow(elasticN * std::exp(c.blend * share * logSkew) + plasticN, 1.0 / c.blend);
 }
 
+double fittedUnloadingPlasticShare(double plasticityIndex, const FittedElastoPlasticConstants& c)
+{
+    requireFinite("plasticity index gamma", plasticityIndex);
+    if (plasticityIndex < 0.0) {
+        throw ParameterError("plasticity index gamma", "must be >= 0, got " + std::to_string(plasticityIndex));
+    }
+    const double g = plasticityIndex / c.unloadingPlasticityMidpoint;
+    return 1.0 / (1.0 + g * g);
+}
+
+double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, double Eprime, std::optional<double> H,
+                             const FittedElastoPlasticConstants& c)
+{
+    requireFinite("contact pressure P", P);
+    requireFinite("peak pressure P_max", peak);
+    if (P < 0.0 || peak < 0.0) {
+        throw ParameterError(P < 0.0 ? "contact pressure P" : "peak pressure P_max",
+                             "must be >= 0, got " + std::to_string(P < 0.0 ? P : peak));
+    }
+    requireFinite("mean absolute slope m", meanAbsoluteSlope);
+    if (!(meanAbsoluteSlope > 0.0)) {
+        throw ParameterError("mean absolute slope m", "must be > 0, got " + std::to_string(meanAbsoluteSlope));
+    }
+    limits::requireInRange("reduced modulus E'", Eprime, limits::minimumReducedModulus, limits::maximumReducedModulus,
+                           "Pa");
+    if (!H) {
+        return 1.0;
+    }
+    limits::requireInRange("hardness H", *H, limits::minimumHardness, limits::maximumHardness, "Pa");
+    if (!(P < peak)) {
+        return 1.0;
+    }
+    // gamma with Mikic's rms profile slope, m sqrt(pi/2) for Gaussian heights.
+    const double gamma = *H / (Eprime * meanAbsoluteSlope * std::sqrt(0.5 * pi));
+    const double flow = -std::log1p(-std::min(peak / *H, c.unloadingPeakHeaviest));
+    const double logRatio = c.unloadingBase * fittedUnloadingPlasticShare(gamma, c) + c.unloadingFlow * flow;
+    return std::exp(logRatio * (1.0 - std::pow(P / peak, c.unloadingRise)));
+}
+
 } // namespace roughContact

@@ -10,6 +10,11 @@
 //   h_c/k_s = (h_el^N + h_pl^N)^(1/N) with a cap H (f then enters as f^w, w = h_el^N/(h_el^N +
 //   h_pl^N)), h_el without one
 //
+// and, below the heaviest pressure P_max a joint has carried, its unloading branch (§5.7c):
+// h_c/k_s(P) R(P/P_max) with ln R = (l_0 Phi(gamma) + l_1 c)(1 - (P/P_max)^q),
+// c = -ln(1 - P_max/H), Phi(gamma) = 1/(1 + (gamma/gamma_M)^2) and gamma = H/(E' m sqrt(pi/2))
+// Mikic's plasticity index (R = 1 without a cap: an elastic joint retraces its loading curve)
+//
 // with x = P/(sqrt(pi) E' m) (= P/(E' h') for Gaussian slopes), sigma and m the rms height and
 // mean absolute slope, W the bandwidth ratio and s1 the first level's share of the line-scan
 // spectrum, s the heights' shrunk skewness, E' the reduced modulus, H the cap (2.84 S_y of the
@@ -54,6 +59,18 @@ double fittedHeavyLoadGrowth(double bandwidth, const FittedElastoPlasticConstant
 /// g(a) of the header: sigma h_c/(k_s m) of Gaussian plastic spots covering the area fraction a
 /// (0 <= a < 1; 0 gives 0). ParameterError outside [0, 1).
 double gaussianPlasticSpotConductance(double a);
+
+/// Phi(gamma) of the header: the share of the unloading branch's light-peak ratio a pair of
+/// plasticity index gamma = H/(E' m sqrt(pi/2)) (finite, >= 0) keeps; 1 at 0, 1/2 at gamma_M.
+double fittedUnloadingPlasticShare(double plasticityIndex, const FittedElastoPlasticConstants& c = {});
+
+/// R of the header: the unloading branch's factor on the law's loading h_c/k_s at the nominal
+/// pressure P [Pa] (finite, >= 0) of a joint that has carried the pressure peak [Pa] (finite,
+/// >= 0), for the combined surfaces' mean absolute slope m (> 0), the reduced modulus E' [Pa] and
+/// the cap H [Pa]. 1 at P >= peak (loading) and without a cap; P_max/H held at
+/// unloadingPeakHeaviest (0.9) above it. ParameterError naming the entry on bad input.
+double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, double Eprime, std::optional<double> H,
+                             const FittedElastoPlasticConstants& c = {});
 
 /// h_c/k_s [1/m] of the law at the nominal pressure P [Pa] (finite, >= 0), for the combined
 /// roughness r (sigma [m], m), the bandwidth ratio W of the combined line-scan spectrum (0 < W <= 1,
