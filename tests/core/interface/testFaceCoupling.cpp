@@ -7,7 +7,10 @@
 #include "roughContact/Error.hpp"
 #include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/interface/FaceCoupling.hpp"
+#include "roughContact/io/ProfileReader.hpp"
+#include "roughContact/surface/Roughness.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
+#include "roughContact/thermal/FittedElastoPlastic.hpp"
 #include "roughContact/thermal/GapConductance.hpp"
 #include "roughContact/thermal/InterfaceCoupling.hpp"
 
@@ -638,6 +641,33 @@ TEST(FaceCoupling, ALoadThatOnlyGrowsIsTheSameWithAndWithoutHistory)
         EXPECT_EQ(with.valueFraction, without.valueFraction);
         EXPECT_EQ(with.peakPressure, with.pressure);
     }
+}
+
+TEST(FaceCoupling, AMultiscaleFaceBelowItsPeakUnloadsByTheDefaultLawsBranch)
+{
+    // The multi-scale interface with the default law and copper's cap: a face below its peak
+    // conducts its loading h_c times the law's unloading factor, A_r/A_n unchanged; a face at its
+    // peak is the loading face bit for bit.
+    const ContactInterface& iface = interface();
+    ASSERT_TRUE(iface.remembersLoad());
+    Side side(2);
+    side.P = {1e6, 1e7};
+    side.Pnbr = side.P;
+    const std::vector<double> peaks{1e8, 1e7};
+    CouplingInputs in = side.inputs();
+    in.peakPressure = peaks.data();
+    in.peakPressureNbr = peaks.data();
+    CouplingCache cache, plainCache;
+    CouplingOutputs out, plain;
+    couple(iface, in, cache, out);
+    couple(iface, side.inputs(), plainCache, plain);
+    EXPECT_EQ(out.unloading, 1u);
+    const double m = profileRoughness(readProfile(standin)).meanAbsoluteSlope;
+    const double R = fittedUnloadingFactor(1e6, 1e8, m, iface.reducedModulus(), 2.84 * 0.07e9);
+    EXPECT_GT(R, 1.1);
+    EXPECT_NEAR(out.contactConductance[0], R * plain.contactConductance[0], 1e-14 * out.contactConductance[0]);
+    EXPECT_EQ(out.areaFraction[0], plain.areaFraction[0]);
+    EXPECT_EQ(out.contactConductance[1], plain.contactConductance[1]);
 }
 
 TEST(FaceCoupling, AFaceBelowItsPeakUnloadsByTheInterfacesCurves)
