@@ -63,7 +63,10 @@ void bindCheck(py::module_& m)
                                "With unload_from: the checked surface's exact h_c/k_s unloaded from it [1/m].")
         .def_property_readonly("chosen_unloading_ratio",
                                [](const SurfaceCheck& c) { return toArray(c.chosenUnloadingRatio); },
-                               "With unload_from: the chosen law's h (its loading value) over the exact unloading h.")
+                               "With unload_from: the chosen law's h on unloading (its unloading branch, or its "
+                               "loading value for a law without one) over the exact unloading h.")
+        .def_readonly("chosen_unloads", &SurfaceCheck::chosenUnloads,
+                      "True when the chosen law has an unloading branch (chosen_unloading_ratio holds it).")
         .def_readonly("light_load_periods", &SurfaceCheck::lightLoadPeriods,
                       "The period [scan lengths] of the pressures up to p/(E' h') = 1e-3 (1: none on a longer one).")
         .def_readonly("light_levels_kept", &SurfaceCheck::lightLevelsKept,

@@ -42,6 +42,19 @@ const std::vector<ConstantInfo>& constantInfo()
     };
     return info;
 }
+
+// The number of values of P, each of `arrays` as many (ParameterError naming `function` otherwise).
+template <std::size_t N>
+std::size_t sameLength(const char* function, const Array& p, const Array (&arrays)[N])
+{
+    const auto n = static_cast<std::size_t>(p.size());
+    for (const Array& a : arrays) {
+        if (static_cast<std::size_t>(a.size()) != n) {
+            throw ParameterError(function, "every argument needs as many values as P (" + std::to_string(n) + ")");
+        }
+    }
+    return n;
+}
 } // namespace
 
 void bindFittedLaw(py::module_& m)
@@ -85,13 +98,7 @@ void bindFittedLaw(py::module_& m)
                                     numbers(bandwidth, "bandwidth"), numbers(Eprime, "Eprime"),
                                     numbers(hardness, "hardness"),   numbers(skewness, "skewness"),
                                     numbers(firstLevelShare, "first_level_share")};
-            const auto n = static_cast<std::size_t>(p.size());
-            for (const Array& a : arrays) {
-                if (static_cast<std::size_t>(a.size()) != n) {
-                    throw ParameterError("fitted_elasto_plastic", "every argument needs as many values as P (" +
-                                                                      std::to_string(n) + ")");
-                }
-            }
+            const std::size_t n = sameLength("fitted_elasto_plastic", p, arrays);
             Array out(p.request().shape);
             double* h = out.mutable_data();
             {
@@ -120,13 +127,7 @@ void bindFittedLaw(py::module_& m)
             const Array p = numbers(P, "P");
             const Array arrays[] = {numbers(peak, "peak"), numbers(m, "m"), numbers(Eprime, "Eprime"),
                                     numbers(hardness, "hardness")};
-            const auto n = static_cast<std::size_t>(p.size());
-            for (const Array& a : arrays) {
-                if (static_cast<std::size_t>(a.size()) != n) {
-                    throw ParameterError("fitted_unloading_factor", "every argument needs as many values as P (" +
-                                                                        std::to_string(n) + ")");
-                }
-            }
+            const std::size_t n = sameLength("fitted_unloading_factor", p, arrays);
             Array out(p.request().shape);
             double* r = out.mutable_data();
             {

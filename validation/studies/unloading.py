@@ -8,7 +8,8 @@ four capped pairs (H = 2.84 S_y of the softer): loaded to a peak p/E' = 1e-4, 1e
 tenth and a thirtieth of it (the CLI's --unload-from: the cap's overlap at the peak kept as
 permanent set, the deformed surface unloaded elastically; docs/theory.md §7.3). The loading
 curve is solved at the same pressures. blindSpectra's four shapes are solved the same way on
-three pairs and seeds 1-2: held out. The default law's unloading branch (docs/theory.md §5.7c)
+three pairs and seeds 1-2: held out; and the light end, peaks p/E' = 1e-5 (x = 1e-4), on true
+periods of 4L (grid 4N, seed 1) for steel and copper on the three spectra: not fitted either. The default law's unloading branch (docs/theory.md §5.7c)
 multiplies its loading h by a ratio R; `fit` fits R's constants to the exact unloading over
 loading h of the three spectra (the core's fittedUnloadingFactor evaluated, never a copy), and
 the fittedElastoPlastic study writes them into the core. The tables hold R and the whole law to
@@ -45,86 +46,115 @@ SUMMARY = ("# The exact unloading of a capped joint (written by validation/studi
            "# (jacksonGreen) unloading over loading A_r/A_n and its unloading A_r/A_n over the exact one.\n")
 
 
+class Case:
+    """A spectrum on a regime: its seeds, its role (FITTED, HELD_OUT or LIGHT), the period kL it is
+    solved on (grid kN) and its peaks p/E'."""
+
+    def __init__(self, name, regime, seeds, role, k, peaks):
+        self.name, self.regime, self.seeds, self.role, self.k, self.peaks = name, regime, seeds, role, k, peaks
+
+    @property
+    def label(self):
+        return self.name if self.k == 1 else f"{self.name} ({self.k}L)"
+
+
+FITTED, HELD_OUT_ROLE, LIGHT = "fitted", "held out", "light peak"
+
+
 class Design:
     def __init__(self, quick):
         if quick:
             self.N, self.seeds, self.peaks = 64, [1], [1e-3]
             self.regimes = ["steelSteel"]
             self.held_out, self.held_out_regimes = HELD_OUT[:1], ["steelSteel"]
+            self.light_regimes, self.light_period = [], 4
         else:
             self.N, self.seeds, self.peaks = 512, [1, 2, 3, 4, 5, 6], [1e-4, 1e-3, 1e-2]
             self.regimes = [key for key, _, pair in materials.REGIMES if pair is not None]
             self.held_out, self.held_out_regimes = HELD_OUT, ["steelSteel", "copperCopper", "hardSteel"]
+            # The light end of the engineering range, x = 1e-4 (p/E' = 1e-5): on periods of 4L
+            # (grid 4N), where its contact spots are many enough.
+            self.light_regimes, self.light_period = ["steelSteel", "copperCopper"], 4
         self.spectra = [name for name, _, _, _ in SELF_AFFINE]  # the unloading branch is fitted on these
         self.held_out_seeds = self.seeds[:2]
+        self.light_peaks = [1e-5]
 
-    def cases(self):
-        """[(spectrum, regime, seeds, held out)]: the training spectra on every capped pair and
-        seed, the held-out ones (blindSpectra's four shapes) on three pairs and one seed."""
-        return ([(name, regime, self.seeds, False) for name in self.spectra for regime in self.regimes] +
-                [(name, regime, self.held_out_seeds, True) for name, _, _ in self.held_out
-                 for regime in self.held_out_regimes])
+    def cases(self, ctx):
+        """[Case]: the training spectra on every capped pair and seed (fitted); the held-out ones
+        (blindSpectra's four shapes) on three pairs and two seeds; the training spectra's light
+        peaks on periods of 4L (seed 1), not fitted. Peaks up to 0.9 H only."""
+        def peaks(regime, of):
+            pair = materials.regime_pair(ctx, regime)
+            return [pe for pe in of if pe * pair.Eprime <= 0.9 * pair.hardness]
+        return ([Case(name, regime, self.seeds, FITTED, 1, peaks(regime, self.peaks))
+                 for name in self.spectra for regime in self.regimes] +
+                [Case(name, regime, self.held_out_seeds, HELD_OUT_ROLE, 1, peaks(regime, self.peaks))
+                 for name, _, _ in self.held_out for regime in self.held_out_regimes] +
+                [Case(name, regime, self.seeds[:1], LIGHT, self.light_period, peaks(regime, self.light_peaks))
+                 for name in self.spectra for regime in self.light_regimes])
 
 
 class Study:
     def __init__(self, ctx):
         self.ctx = ctx
         self.design = d = Design(ctx.quick)
-        self.spectrum = self_affine_spectra(ctx, "unloading", d.N // 8, GRADIENT)
-        self.spectrum.update({name: spectra.self_affine(ctx.scratch_path("unloading", name + ".spectrum"), hurst,
-                                                        rolloff, d.N // 8, GRADIENT)
-                              for name, hurst, rolloff in d.held_out})
+        self.cases = d.cases(ctx)
+        spectrum = self_affine_spectra(ctx, "unloading", d.N // 8, GRADIENT)
+        spectrum.update({name: spectra.self_affine(ctx.scratch_path("unloading", name + ".spectrum"), hurst,
+                                                   rolloff, d.N // 8, GRADIENT)
+                         for name, hurst, rolloff in d.held_out})
+        # {(name, k): the spectrum file on the period kL}
+        self.spectrum = {(name, 1): path for name, path in spectrum.items()}
+        for c in self.cases:
+            if (c.name, c.k) not in self.spectrum:
+                self.spectrum[(c.name, c.k)] = spectra.on_period(ctx, spectrum[c.name], c.k)
         self.store = solves.Store(ctx, "unloading", KEYS)
         rc = ctx.rc()
-        self.given = {name: surrogates.LawInputs(rc, rc.SurfaceSpec.spectrum(path))
-                      for name, path in self.spectrum.items()}
-        self.levels = {name: rc.SurfaceSpec.spectrum(path).read_spectrum() for name, path in self.spectrum.items()}
+        self.given = {key: surrogates.LawInputs(rc, rc.SurfaceSpec.spectrum(path)) for key, path in self.spectrum.items()}
+        self.levels = {key: rc.SurfaceSpec.spectrum(path).read_spectrum() for key, path in self.spectrum.items()}
 
-    def multiscale(self, name, regime, peak):
+    def multiscale(self, case, peak):
         """[(loading, unloading A_r/A_n)] of the multi-scale model (jacksonGreen on the spectrum)
         at the FRACTIONS of the peak p/E'."""
-        pair = materials.regime_pair(self.ctx, regime)
-        model = self.ctx.rc().Model("jacksonGreen", self.levels[name], pair.materials)
+        pair = materials.regime_pair(self.ctx, case.regime)
+        model = self.ctx.rc().Model("jacksonGreen", self.levels[(case.name, case.k)], pair.materials)
         P = [f * peak * pair.Eprime for f in FRACTIONS]
         return list(zip((float(a) for a in model.area_fraction(P)),
                         (float(a) for a in model.area_fraction(P, unload_from=peak * pair.Eprime))))
 
-    def peaks(self, regime):
-        """The peaks p/E' of the regime: up to 0.9 H."""
-        pair = materials.regime_pair(self.ctx, regime)
-        return [pe for pe in self.design.peaks if pe * pair.Eprime <= 0.9 * pair.hardness]
-
-    def key(self, name, regime, seed, peak, branch):
-        return {"surface": name, "regime": regime, "grid": self.design.N, "seed": seed, "peak": peak,
-                "branch": branch}
+    def key(self, case, seed, peak, branch):
+        return {"surface": case.name, "regime": case.regime, "grid": self.design.N * case.k, "seed": seed,
+                "peak": peak, "branch": branch}
 
     def solves(self):
         out = []
         d = self.design
-        for name, regime, seeds, _ in d.cases():
-            pair = materials.regime_pair(self.ctx, regime)
-            for seed in seeds:
-                base = (["--spectrum", self.spectrum[name], "--synthesize", f"{d.N},{seed}", "--model",
+        for c in self.cases:
+            pair = materials.regime_pair(self.ctx, c.regime)
+            for seed in c.seeds:
+                base = (["--spectrum", self.spectrum[(c.name, c.k)], "--synthesize", f"{d.N * c.k},{seed}", "--model",
                          "boundaryElement"] + pair.arguments + ["--hardness-from-yield"])
-                for peak in self.peaks(regime):
+                for peak in c.peaks:
                     loads = [f * peak for f in FRACTIONS]
-                    out.append(solves.Solve(self.key(name, regime, seed, peak, "loading"), base, loads))
-                    out.append(solves.Solve(self.key(name, regime, seed, peak, "unloading"),
+                    out.append(solves.Solve(self.key(c, seed, peak, "loading"), base, loads))
+                    out.append(solves.Solve(self.key(c, seed, peak, "unloading"),
                                             base + ["--unload-from", f"{peak * pair.Eprime:.17g}"], loads,
                                             solves.UNLOADING_COLUMNS))
         return out
 
-    def points(self, name, regime, seed, peak):
+    def points(self, case, seed, peak):
         """[(P/P_max, loading row, unloading row, the default law's h_c/k_s there)]."""
-        pair = materials.regime_pair(self.ctx, regime)
+        pair = materials.regime_pair(self.ctx, case.regime)
         rows = {}
         for branch in ("loading", "unloading"):
-            c = self.store.curve(self.key(name, regime, seed, peak, branch))
+            c = self.store.curve(self.key(case, seed, peak, branch))
             rows[branch] = [solves.at(c, f * peak) for f in FRACTIONS]
             if not all(rows[branch]):
-                raise SystemExit(f"unloading: {name} {regime} seed {seed} peak {peak} {branch} is not at the loads")
+                raise SystemExit(f"unloading: {case.label} {case.regime} seed {seed} peak {peak} {branch} is not at "
+                                 "the loads")
+        given = self.given[(case.name, 1)]  # the surface as described (on L), as the law takes it
         law = fitting.law(self.ctx.rc(), self.ctx.rc().FittedElastoPlasticConstants(),
-                          fitting.Points([self.given[name].point(f * peak * pair.Eprime, pair) for f in FRACTIONS]))
+                          fitting.Points([given.point(f * peak * pair.Eprime, pair) for f in FRACTIONS]))
         return list(zip(FRACTIONS, rows["loading"], rows["unloading"], (float(v) for v in law)))
 
 
@@ -137,7 +167,7 @@ class Ratios:
     """The exact unloading over loading h at the same pressure, R = h_u/h_l (geometric mean over
     the seeds), below the peak, and what the law's unloading branch takes there: arrays P and
     peak [Pa], m, E' [Pa], H [Pa], the exact R; per point a dict (spectrum, regime, peak p/E',
-    fraction, held out)."""
+    fraction, role)."""
 
     def __init__(self, rows):
         self.rows = list(rows)
@@ -152,20 +182,20 @@ class Ratios:
 
 
 def ratio_points(s):
-    """Ratios of every case below its peak (training and held out)."""
+    """Ratios of every case below its peak (fitted, held out and the light peaks)."""
     rows = []
-    for name, regime, seeds, held_out in s.design.cases():
-        pair = materials.regime_pair(s.ctx, regime)
-        for peak in s.peaks(regime):
-            per_seed = [s.points(name, regime, seed, peak) for seed in seeds]
+    for c in s.cases:
+        pair = materials.regime_pair(s.ctx, c.regime)
+        for peak in c.peaks:
+            per_seed = [s.points(c, seed, peak) for seed in c.seeds]
             for i, f in enumerate(FRACTIONS):
                 if f >= 1.0:
                     continue
                 ratio = geometric_mean([float(p[i][2]["h_per_k_per_m"]) / float(p[i][1]["h_per_k_per_m"])
                                         for p in per_seed])
-                rows.append({"spectrum": name, "regime": regime, "peak_p_per_Eprime": peak, "fraction": f,
-                             "held_out": held_out, "P": f * peak * pair.Eprime, "peak": peak * pair.Eprime,
-                             "m": s.given[name].m, "E": pair.Eprime, "H": pair.hardness, "exact": ratio})
+                rows.append({"spectrum": c.label, "regime": c.regime, "peak_p_per_Eprime": peak, "fraction": f,
+                             "role": c.role, "P": f * peak * pair.Eprime, "peak": peak * pair.Eprime,
+                             "m": s.given[(c.name, 1)].m, "E": pair.Eprime, "H": pair.hardness, "exact": ratio})
     return Ratios(rows)
 
 
@@ -191,7 +221,7 @@ def fit(ctx, base=None):
     the light peaks, and a minimax fits that scatter (it drives q to 11, a step just below the
     peak that makes h rise on unloading)."""
     rc = ctx.rc()
-    pts = ratio_points(Study(ctx)).where(lambda r: not r["held_out"])
+    pts = ratio_points(Study(ctx)).where(lambda r: r["role"] == FITTED)
     c = fitting.constants(rc, {**{n: v for n, (v, _) in FIXED.items()}, **START}, base)
     fitted = fitting.minimax(rc, c, list(FREE), pts, valid, top=4, miss=misses)
     out = {n: (getattr(fitted, n), what) for n, what in FREE.items()}
@@ -200,18 +230,18 @@ def fit(ctx, base=None):
 
 
 def summary(s):
-    d = s.design
     rc = s.ctx.rc()
     c = rc.FittedElastoPlasticConstants()
     rows = []
-    for name, regime, seeds, held_out in d.cases():
-        pair = materials.regime_pair(s.ctx, regime)
-        for peak in s.peaks(regime):
-            per_seed = [s.points(name, regime, seed, peak) for seed in seeds]
-            ms = s.multiscale(name, regime, peak)
+    for case in s.cases:
+        pair = materials.regime_pair(s.ctx, case.regime)
+        for peak in case.peaks:
+            per_seed = [s.points(case, seed, peak) for seed in case.seeds]
+            ms = s.multiscale(case, peak)
             P = numpy.array([f * peak * pair.Eprime for f in FRACTIONS])
             R = rc.fitted_unloading_factor(P, numpy.full(P.shape, peak * pair.Eprime),
-                                           numpy.full(P.shape, s.given[name].m), numpy.full(P.shape, pair.Eprime),
+                                           numpy.full(P.shape, s.given[(case.name, 1)].m),
+                                           numpy.full(P.shape, pair.Eprime),
                                            numpy.full(P.shape, pair.hardness), c)
             for i, f in enumerate(FRACTIONS):
                 load = [float(p[i][1]["h_per_k_per_m"]) for p in per_seed]
@@ -221,7 +251,7 @@ def summary(s):
                 law = [p[i][3] / u for p, u in zip(per_seed, unload)]
                 branch_law = [float(R[i]) * p[i][3] / u for p, u in zip(per_seed, unload)]
                 exact_area = geometric_mean([float(p[i][2]["area_fraction"]) for p in per_seed])
-                rows.append({"spectrum": name, "held_out": "yes" if held_out else "no", "regime": regime,
+                rows.append({"spectrum": case.name, "period_L": case.k, "role": case.role, "regime": case.regime,
                              "peak_p_per_Eprime": f"{peak:.6g}", "peak_over_H": f"{peak * pair.Eprime / pair.hardness:.4f}",
                              "fraction": f"{f:.6g}", "exact_loading_h_per_k": f"{geometric_mean(load):.6g}",
                              "exact_unloading_h_per_k": f"{geometric_mean(unload):.6g}",
@@ -253,11 +283,13 @@ def outputs(ctx):
     below = [r for r in rows if float(r["fraction"]) < 1.0]
     for regime in d.regimes:
         table = []
-        for peak in s.peaks(regime):
+        groups = sorted({(c.role, peak) for c in s.cases if c.regime == regime and c.role in (FITTED, LIGHT)
+                         for peak in c.peaks}, key=lambda g: g[1])
+        for role, peak in groups:
             for f in FRACTIONS[1:]:
-                here = [r for r in below if r["regime"] == regime and r["held_out"] == "no"
+                here = [r for r in below if r["regime"] == regime and r["role"] == role
                         and float(r["peak_p_per_Eprime"]) == peak and abs(float(r["fraction"]) / f - 1) < 1e-5]
-                table.append([f"{peak:.0e}", f"{f:.2g}",
+                table.append([f"{peak:.0e}" + (f" ({d.light_period}L, seed 1)" if role == LIGHT else ""), f"{f:.2g}",
                               pages.span([float(r["ratio_min"]) for r in here] + [float(r["ratio_max"]) for r in here]),
                               pages.span([float(r["unloading_over_loading_area"]) for r in here]),
                               pages.span([float(r["law_min"]) for r in here] + [float(r["law_max"]) for r in here]),
@@ -270,14 +302,16 @@ def outputs(ctx):
                                        "law with its branch / exact unloading h",
                                        "multi-scale: unloading / loading A_r", "multi-scale / exact unloading A_r"],
                   table)
-    # The branch, training and held out: per spectrum, over pairs, peaks and fractions below 1.
+    # The branch, fitted, held out and at the light peaks: per spectrum, over pairs, peaks and
+    # fractions below 1.
     fit_table = []
-    for name in d.spectra + [n for n, _, _ in d.held_out]:
-        here = [r for r in below if r["spectrum"] == name]
-        branch = [float(r["branch_over_exact_ratio"]) for r in here]
-        whole = [float(r["branch_law_over_exact_unloading"]) for r in here]
-        fit_table.append([name, "held out" if here[0]["held_out"] == "yes" else "fitted", pages.span(branch),
-                          within(branch), pages.span(whole), within(whole)])
+    for role in (FITTED, HELD_OUT_ROLE, LIGHT):
+        for name in dict.fromkeys(c.name for c in s.cases if c.role == role):
+            here = [r for r in below if r["spectrum"] == name and r["role"] == role]
+            branch = [float(r["branch_over_exact_ratio"]) for r in here]
+            whole = [float(r["branch_law_over_exact_unloading"]) for r in here]
+            label = f"{role} ({d.light_period}L, x = 1e-4)" if role == LIGHT else role
+            fit_table.append([name, label, pages.span(branch), within(branch), pages.span(whole), within(whole)])
     out.table("branch", ["spectrum", "role", "branch R / exact R", "within 25 %",
                          "law with its branch / exact unloading h", "within 25 %"], fit_table)
     # The branch by how far below the peak and how near H it was (every spectrum).
@@ -285,16 +319,15 @@ def outputs(ctx):
     for f in FRACTIONS[1:]:
         for lo, hi, label in ((0.0, 0.1, "below 0.1"), (0.1, 0.5, "0.1 to 0.5"), (0.5, 1.0, "0.5 to 0.9")):
             here = [r for r in below if abs(float(r["fraction"]) / f - 1) < 1e-5 and lo <= float(r["peak_over_H"]) < hi]
-            for role in ("no", "yes"):
-                part = [float(r["branch_over_exact_ratio"]) for r in here if r["held_out"] == role]
+            for role in (FITTED, HELD_OUT_ROLE, LIGHT):
+                part = [float(r["branch_over_exact_ratio"]) for r in here if r["role"] == role]
                 if part:
-                    depth.append([f"{f:.2g}", label, "held out" if role == "yes" else "fitted", pages.span(part),
-                                  within(part)])
+                    depth.append([f"{f:.2g}", label, role, pages.span(part), within(part)])
     out.table("branch-depth", ["P/P_max", "P_max/H", "spectra", "branch R / exact R", "within 25 %"], depth)
     # In short: per regime, over the peaks, spectra and seeds, from a half to a thirtieth of the peak.
     short = []
     for key, label, pair in materials.REGIMES:
-        here = [r for r in below if r["regime"] == key and r["held_out"] == "no"]
+        here = [r for r in below if r["regime"] == key and r["role"] == FITTED]
         if here:
             short.append([label, pages.span([float(r["ratio_min"]) for r in here] +
                                             [float(r["ratio_max"]) for r in here]),
@@ -320,8 +353,9 @@ def draw_loops(s, path):
     fig, axes = plt.subplots(1, len(d.regimes), figsize=(4.2 * len(d.regimes), 4.2), squeeze=False)
     for ax, regime in zip(axes[0], d.regimes):
         label = next(lab for key, lab, _ in materials.REGIMES if key == regime)
-        for k, peak in enumerate(s.peaks(regime)):
-            per_seed = [s.points(name, regime, seed, peak) for seed in d.seeds]
+        case = next(c for c in s.cases if c.name == name and c.regime == regime and c.role == FITTED)
+        for k, peak in enumerate(case.peaks):
+            per_seed = [s.points(case, seed, peak) for seed in case.seeds]
             loads = [f * peak for f in FRACTIONS]
             mean = [[geometric_mean([float(p[i][j]["h_per_k_per_m"]) for p in per_seed]) for i in range(len(loads))]
                     for j in (1, 2)]
@@ -331,8 +365,10 @@ def draw_loops(s, path):
             pair = materials.regime_pair(s.ctx, regime)
             P = numpy.array(loads) * pair.Eprime
             R = s.ctx.rc().fitted_unloading_factor(P, numpy.full(P.shape, peak * pair.Eprime),
-                                                   numpy.full(P.shape, s.given[name].m),
+                                                   numpy.full(P.shape, s.given[(name, 1)].m),
                                                    numpy.full(P.shape, pair.Eprime), numpy.full(P.shape, pair.hardness))
+            ax.loglog(loads, [per_seed[0][i][3] for i in range(len(loads))], ":", color="0.5",
+                      label="the law, loading" if k == 0 else None)
             ax.loglog(loads, [per_seed[0][i][3] * R[i] for i in range(len(loads))], ":", color=f"C{k}",
                       label="the law's branch" if k == 0 else None)
         ax.set_title(label.replace("capped: ", ""), fontsize=10)

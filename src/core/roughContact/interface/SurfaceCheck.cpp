@@ -897,8 +897,9 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
         }
     }
     if (peakLoad) {
-        // The chosen law's h on unloading: its unloading branch where it has one (ConductanceLaw::
-        // unloadingFactor; 1 for the others: the loading value), each realization's own.
+        // The chosen law's h on unloading: its unloading branch where it has one (each
+        // realization's own law), else its loading value.
+        const CheckedLaw& checked = out.chosen(); // names a checked law
         std::size_t l = 0;
         while (laws[0][l].first != out.chosenLaw) {
             ++l;
@@ -907,7 +908,7 @@ SurfaceCheck checkSurface(const SurfaceCheckInputs& spec, const SurfaceCheckOpti
         for (std::size_t i = 0; i < count; ++i) {
             const double P = out.pressures[i];
             out.exactUnloadingHPerK.push_back(joined(i, [&](std::size_t k) { return std::exp(exact[k].logUnloading[i]); }));
-            const double law = joined(i, [&](std::size_t k) {
+            const double law = !out.chosenUnloads ? checked.hPerK[i] : joined(i, [&](std::size_t k) {
                 const ConductanceLaw& c = *laws[k][l].second;
                 return c.perConductivity(P) * c.unloadingFactor(P, *out.unloadFrom);
             });
