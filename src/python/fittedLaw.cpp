@@ -147,6 +147,40 @@ void bindFittedLaw(py::module_& m)
         "law's loading h_c/k_s at the nominal pressure P [Pa] of a joint that has carried peak [Pa], for the "
         "mean absolute slope m, E' [Pa] and the cap H [Pa] (NaN: elastic, R = 1), with `constants`. Equally "
         "long arrays (or numbers) in, an array out.");
+    m.def(
+        "fitted_elasto_plastic_unloading",
+        [](const py::handle& P, const py::handle& peak, const py::handle& sigma, const py::handle& m,
+           const py::handle& bandwidth, const py::handle& Eprime, const py::handle& hardness,
+           const py::handle& skewness, const py::handle& firstLevelShare, const FittedElastoPlasticConstants& constants) {
+            const Array p = numbers(P, "P");
+            const Array arrays[] = {numbers(peak, "peak"),           numbers(sigma, "sigma"),
+                                    numbers(m, "m"),                 numbers(bandwidth, "bandwidth"),
+                                    numbers(Eprime, "Eprime"),       numbers(hardness, "hardness"),
+                                    numbers(skewness, "skewness"),   numbers(firstLevelShare, "first_level_share")};
+            const std::size_t n = sameLength("fitted_elasto_plastic_unloading", p, arrays);
+            Array out(p.request().shape);
+            double* h = out.mutable_data();
+            {
+                py::gil_scoped_release release;
+                for (std::size_t i = 0; i < n; ++i) {
+                    const double Hi = arrays[5].data()[i];
+                    const double s1 = arrays[7].data()[i];
+                    h[i] = fittedElastoPlasticUnloadingConductancePerConductivity(
+                        p.data()[i], arrays[0].data()[i], SurfaceRoughness{arrays[1].data()[i], arrays[2].data()[i]},
+                        arrays[3].data()[i], arrays[4].data()[i],
+                        std::isnan(Hi) ? std::nullopt : std::optional<double>(Hi), arrays[6].data()[i],
+                        std::isnan(s1) ? std::nullopt : std::optional<double>(s1), constants);
+                }
+            }
+            return out;
+        },
+        py::arg("P"), py::arg("peak"), py::arg("sigma"), py::arg("m"), py::arg("bandwidth"), py::arg("Eprime"),
+        py::arg("hardness"), py::arg("skewness"), py::arg("first_level_share"),
+        py::arg("constants") = FittedElastoPlasticConstants{},
+        "h_c/k_s [1/m] of fittedElastoPlastic's unloading branch (the core's "
+        "fittedElastoPlasticUnloadingConductancePerConductivity) at each point: P [Pa] of a joint that has "
+        "carried peak [Pa], the other arguments as fitted_elasto_plastic's. Equally long arrays (or numbers) "
+        "in, an array out.");
     m.def("gaussian_plastic_spot_conductance", &gaussianPlasticSpotConductance, py::arg("a"),
           "g(a): sigma h_c/(k_s m) of Gaussian plastic spots covering the area fraction a (FittedElastoPlastic.hpp).");
 }

@@ -263,8 +263,8 @@ void bindInterface(py::module_& m)
         "boundary-element table's cache file, as the condition's "
         "constant/boundaryElementTable.NAME.csv: read when it holds this table, else built and written); "
         "load_history (None: " + std::string(defaults.loadHistory ? "True" : "False") + "): with a hardness, the "
-        "table holds unloading curves (the peak keyword of "
-        "area_fraction, conductance_per_conductivity and conductance); "
+        "boundary-element table holds unloading curves and the default law uses its unloading branch (the peak "
+        "keyword of area_fraction, conductance_per_conductivity and conductance); "
         "gap a GapSpec (gas and/or radiation beside the contact) or None; threads the process's threads of the "
         "boundary-element solves (set_threads; None: as they are). Building the table takes a fraction of a second "
         "for the multi-scale models, far longer for boundaryElement.";
@@ -346,8 +346,8 @@ void bindInterface(py::module_& m)
             },
             py::arg("pressures"), py::kw_only(), py::arg("peak") = py::none(),
             "A_r/A_n at the nominal pressures [Pa] (0 for P <= 0, 1 beyond complete contact); peak [Pa]: the "
-            "heaviest load the joint carried (below it, the unloading curves where the model has them: "
-            "remembers_load).")
+            "heaviest load the joint carried (below it, the unloading curves or the law's unloading branch where "
+            "the interface has them: remembers_load; the branch leaves A_r/A_n at its loading value).")
         .def(
             "conductance_per_conductivity",
             [](const ContactInterface& ci, const py::object& P, std::optional<double> peak) {
@@ -368,8 +368,9 @@ void bindInterface(py::module_& m)
             "h_c [W/(m^2 K)] at the pressures [Pa] between solids of conductivities k1, k2 [W/(m K)] "
             "(k_s = 2 k1 k2/(k1 + k2)); peak as area_fraction's.")
         .def_property_readonly("remembers_load", &ContactInterface::remembersLoad,
-                               "True when the model has unloading curves (boundaryElement with a hardness and "
-                               "load_history): below its peak a joint conducts as they say.")
+                               "True with load_history when the interface unloads: boundaryElement with a hardness "
+                               "(its unloading curves, unloading_peaks) or a law with an unloading branch (the "
+                               "default law with a hardness): below its peak a joint conducts as they say.")
         .def_property_readonly(
             "unloading_peaks",
             [](const ContactInterface& ci) {

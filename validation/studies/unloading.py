@@ -165,14 +165,16 @@ def solve(ctx):
 
 class Ratios:
     """The exact unloading over loading h at the same pressure, R = h_u/h_l (geometric mean over
-    the seeds), below the peak, and what the law's unloading branch takes there: arrays P and
-    peak [Pa], m, E' [Pa], H [Pa], the exact R; per point a dict (spectrum, regime, peak p/E',
-    fraction, role)."""
+    the seeds), below the peak, and what the default law takes there (surrogates.LawInputs.point's
+    fields: P [Pa], sigma [m], m, W, E' [Pa], H [Pa], skewness s, s1) with the peak [Pa]: arrays,
+    and the exact R; per point a dict (spectrum, regime, peak p/E', fraction, role)."""
+
+    FIELDS = ["P", "peak", "sigma", "m", "w", "E", "H", "s", "s1", "exact"]
 
     def __init__(self, rows):
         self.rows = list(rows)
-        for f in ("P", "peak", "m", "E", "H", "exact"):
-            setattr(self, f, numpy.array([float(r[f]) for r in self.rows]))
+        for f in self.FIELDS:
+            setattr(self, f, numpy.array([numpy.nan if r[f] is None else float(r[f]) for r in self.rows]))
 
     def where(self, keep):
         return Ratios([r for r in self.rows if keep(r)])
@@ -193,15 +195,17 @@ def ratio_points(s):
                     continue
                 ratio = geometric_mean([float(p[i][2]["h_per_k_per_m"]) / float(p[i][1]["h_per_k_per_m"])
                                         for p in per_seed])
-                rows.append({"spectrum": c.label, "regime": c.regime, "peak_p_per_Eprime": peak, "fraction": f,
-                             "role": c.role, "P": f * peak * pair.Eprime, "peak": peak * pair.Eprime,
-                             "m": s.given[(c.name, 1)].m, "E": pair.Eprime, "H": pair.hardness, "exact": ratio})
+                point = s.given[(c.name, 1)].point(f * peak * pair.Eprime, pair, exact=ratio)
+                rows.append({**point, "spectrum": c.label, "regime": c.regime, "peak_p_per_Eprime": peak,
+                             "fraction": f, "role": c.role, "peak": peak * pair.Eprime})
     return Ratios(rows)
 
 
 def branch(rc, c, pts):
-    """R of the core's unloading branch with constants c at every point."""
-    return rc.fitted_unloading_factor(pts.P, pts.peak, pts.m, pts.E, pts.H, c)
+    """The ratio the core's law applies below the peak with constants c at every point: its
+    unloading branch over its loading value (R, held at the peak's h)."""
+    args = (pts.sigma, pts.m, pts.w, pts.E, pts.H, pts.s, pts.s1)
+    return rc.fitted_elasto_plastic_unloading(pts.P, pts.peak, *args, c) / rc.fitted_elasto_plastic(pts.P, *args, c)
 
 
 def misses(rc, c, pts):
@@ -229,6 +233,15 @@ def fit(ctx, base=None):
     return out
 
 
+def law_ratios(s, case, peak, c=None):
+    """The ratio the default law applies at the FRACTIONS of the peak p/E' (branch)."""
+    rc = s.ctx.rc()
+    pair = materials.regime_pair(s.ctx, case.regime)
+    given = s.given[(case.name, 1)]
+    pts = Ratios([{**given.point(f * peak * pair.Eprime, pair), "peak": peak * pair.Eprime} for f in FRACTIONS])
+    return branch(rc, c if c is not None else rc.FittedElastoPlasticConstants(), pts)
+
+
 def summary(s):
     rc = s.ctx.rc()
     c = rc.FittedElastoPlasticConstants()
@@ -238,11 +251,7 @@ def summary(s):
         for peak in case.peaks:
             per_seed = [s.points(case, seed, peak) for seed in case.seeds]
             ms = s.multiscale(case, peak)
-            P = numpy.array([f * peak * pair.Eprime for f in FRACTIONS])
-            R = rc.fitted_unloading_factor(P, numpy.full(P.shape, peak * pair.Eprime),
-                                           numpy.full(P.shape, s.given[(case.name, 1)].m),
-                                           numpy.full(P.shape, pair.Eprime),
-                                           numpy.full(P.shape, pair.hardness), c)
+            R = law_ratios(s, case, peak, c)
             for i, f in enumerate(FRACTIONS):
                 load = [float(p[i][1]["h_per_k_per_m"]) for p in per_seed]
                 unload = [float(p[i][2]["h_per_k_per_m"]) for p in per_seed]
@@ -361,12 +370,8 @@ def draw_loops(s, path):
                     for j in (1, 2)]
             ax.loglog(loads, mean[0], "o-", color="0.5", label="loading" if k == 0 else None)
             ax.loglog(loads, mean[1], "s--", color=f"C{k}", label=f"unloading from {peak:.0e}")
-            # The default law's unloading branch from the same peak (its loading h times R).
-            pair = materials.regime_pair(s.ctx, regime)
-            P = numpy.array(loads) * pair.Eprime
-            R = s.ctx.rc().fitted_unloading_factor(P, numpy.full(P.shape, peak * pair.Eprime),
-                                                   numpy.full(P.shape, s.given[(name, 1)].m),
-                                                   numpy.full(P.shape, pair.Eprime), numpy.full(P.shape, pair.hardness))
+            # The default law's unloading branch from the same peak (its loading h times its ratio).
+            R = law_ratios(s, case, peak)
             ax.loglog(loads, [per_seed[0][i][3] for i in range(len(loads))], ":", color="0.5",
                       label="the law, loading" if k == 0 else None)
             ax.loglog(loads, [per_seed[0][i][3] * R[i] for i in range(len(loads))], ":", color=f"C{k}",

@@ -426,8 +426,9 @@ UnloadingFactors ContactInterface::unloadingFactors(double P, double peak) const
         return unloading_.factors(P, peak);
     }
     UnloadingFactors f;
-    // As the curves': 1 for faces apart (h_c 0 anyway) and at or above the peak.
-    if (P > 0.0 && P < peak) {
+    // As the curves': 1 for faces apart (h_c 0 anyway), at or above the peak and for a pressure
+    // or peak that is not a number (the callers refuse those first).
+    if (std::isfinite(P) && std::isfinite(peak) && P > 0.0 && P < peak) {
         f.conductancePerConductivity = law_->unloadingFactor(P, peak);
     }
     return f;
@@ -442,7 +443,8 @@ std::string ContactInterface::loadHistoryNote() const
     os.precision(3);
     if (lawUnloads()) {
         os << "load history: each face keeps the largest pressure it carried; below it h_c follows "
-           << conductanceLaw_ << "'s unloading branch (docs/theory.md §5.7c), A_r/A_n the pressure of the moment";
+           << conductanceLaw_ << "'s unloading branch (docs/theory.md §5.7c), A_r/A_n"
+           << (gap_ ? " and the gap's separation" : "") << " the pressure of the moment";
         return os.str();
     }
     if (unloading_.empty()) {

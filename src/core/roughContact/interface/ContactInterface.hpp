@@ -227,6 +227,10 @@ public:
     /// boundaryElementTable (model boundaryElement only): the table's points, built before
     /// (BoundaryElementTable::build) or read from a cache; none: built here.
     explicit ContactInterface(const InterfaceSpec& spec, const BoundaryElementTablePoints* boundaryElementTable = nullptr);
+    // Its law may point into its own members (the model, the surface): built in place, never
+    // copied or moved.
+    ContactInterface(const ContactInterface&) = delete;
+    ContactInterface& operator=(const ContactInterface&) = delete;
 
     /// A_r/A_n at the nominal pressure P [Pa] (0 for P <= 0, 1 beyond complete contact).
     double areaFraction(double P) const { return table_->areaFraction(P); }

@@ -13,6 +13,7 @@
 #include "roughContact/thermal/MultiscaleBarber.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace roughContact {
@@ -124,7 +125,11 @@ public:
     bool unloads() const override { return H_.has_value(); }
     double unloadingFactor(double P, double peak) const override
     {
-        return fittedUnloadingFactor(P, peak, r_.meanAbsoluteSlope, Eprime_, H_);
+        // The branch over the loading value (1 where that is 0 or infinite: nothing to scale).
+        const double unloaded =
+            fittedElastoPlasticUnloadingConductancePerConductivity(P, peak, r_, W_, Eprime_, H_, s_, s1_);
+        const double loading = perConductivity(P);
+        return loading > 0.0 && std::isfinite(loading) ? unloaded / loading : 1.0;
     }
 
 private:
@@ -172,7 +177,10 @@ double ConductanceLaw::meanSeparation(double P) const
 double ConductanceLaw::unloadingFactor(double P, double peak) const
 {
     checkPressure(P);
-    checkPressure(peak);
+    requireFinite("peak pressure P_max", peak);
+    if (peak < 0.0) {
+        throw ParameterError("peak pressure P_max", "must be >= 0, got " + std::to_string(peak));
+    }
     return 1.0;
 }
 

@@ -226,4 +226,20 @@ double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, do
     return std::exp(logRatio * (1.0 - std::pow(P / peak, c.unloadingRise)));
 }
 
+double fittedElastoPlasticUnloadingConductancePerConductivity(double P, double peak, const SurfaceRoughness& r,
+                                                              double bandwidth, double Eprime, std::optional<double> H,
+                                                              double skewness, std::optional<double> firstLevelShare,
+                                                              const FittedElastoPlasticConstants& c)
+{
+    const double R = fittedUnloadingFactor(P, peak, r.meanAbsoluteSlope, Eprime, H, c);
+    const double h = fittedElastoPlasticConductancePerConductivity(P, r, bandwidth, Eprime, H, skewness,
+                                                                   firstLevelShare, c);
+    if (R == 1.0) {
+        return h;
+    }
+    // +inf at a peak at or beyond H: no bound.
+    return std::min(h * R, fittedElastoPlasticConductancePerConductivity(peak, r, bandwidth, Eprime, H, skewness,
+                                                                         firstLevelShare, c));
+}
+
 } // namespace roughContact

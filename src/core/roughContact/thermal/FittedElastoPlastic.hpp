@@ -11,7 +11,7 @@
 //   h_pl^N)), h_el without one
 //
 // and, below the heaviest pressure P_max a joint has carried, its unloading branch (§5.7c):
-// h_c/k_s(P) R(P/P_max) with ln R = (l_0 Phi(gamma) + l_1 c)(1 - (P/P_max)^q),
+// min(h_c/k_s(P) R(P/P_max), h_c/k_s(P_max)) with ln R = (l_0 Phi(gamma) + l_1 c)(1 - (P/P_max)^q),
 // c = -ln(1 - P_max/H), Phi(gamma) = 1/(1 + (gamma/gamma_M)^2) and gamma = H/(E' m sqrt(pi/2))
 // Mikic's plasticity index (R = 1 without a cap: an elastic joint retraces its loading curve)
 //
@@ -71,6 +71,16 @@ double fittedUnloadingPlasticShare(double plasticityIndex, const FittedElastoPla
 /// unloadingPeakHeaviest (0.9) above it. ParameterError naming the entry on bad input.
 double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, double Eprime, std::optional<double> H,
                              const FittedElastoPlasticConstants& c = {});
+
+/// h_c/k_s [1/m] of the unloading branch of the header at the nominal pressure P [Pa] of a joint
+/// that has carried the pressure peak [Pa]: the law's h_c/k_s at P times R, at most the law's at
+/// the peak (an unloaded joint conducts no more than it did there); the law's own at P >= peak
+/// and without a cap. Inputs as the law's and fittedUnloadingFactor's.
+double fittedElastoPlasticUnloadingConductancePerConductivity(double P, double peak, const SurfaceRoughness& r,
+                                                              double bandwidth, double Eprime, std::optional<double> H,
+                                                              double skewness = 0.0,
+                                                              std::optional<double> firstLevelShare = std::nullopt,
+                                                              const FittedElastoPlasticConstants& c = {});
 
 /// h_c/k_s [1/m] of the law at the nominal pressure P [Pa] (finite, >= 0), for the combined
 /// roughness r (sigma [m], m), the bandwidth ratio W of the combined line-scan spectrum (0 < W <= 1,
