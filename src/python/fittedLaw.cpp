@@ -43,9 +43,11 @@ const std::vector<ConstantInfo>& constantInfo()
     return info;
 }
 
-// The number of values of P, each of `arrays` as many (ParameterError naming `function` otherwise).
-template <std::size_t N>
-std::size_t sameLength(const char* function, const Array& p, const Array (&arrays)[N])
+// An array of P's shape holding at(i, a) at each point i, where a(k) is the i-th value of the
+// k-th of `arrays` (each as many values as P: ParameterError naming `function` otherwise);
+// computed without the GIL.
+template <std::size_t N, class At>
+Array vectorized(const char* function, const Array& p, const Array (&arrays)[N], At at)
 {
     const auto n = static_cast<std::size_t>(p.size());
     for (const Array& a : arrays) {
@@ -53,7 +55,21 @@ std::size_t sameLength(const char* function, const Array& p, const Array (&array
             throw ParameterError(function, "every argument needs as many values as P (" + std::to_string(n) + ")");
         }
     }
-    return n;
+    Array out(p.request().shape);
+    double* o = out.mutable_data();
+    {
+        py::gil_scoped_release release;
+        for (std::size_t i = 0; i < n; ++i) {
+            o[i] = at(p.data()[i], [&](std::size_t k) { return arrays[k].data()[i]; });
+        }
+    }
+    return out;
+}
+
+// NaN: none.
+std::optional<double> given(double v)
+{
+    return std::isnan(v) ? std::nullopt : std::optional<double>(v);
 }
 } // namespace
 
@@ -98,21 +114,10 @@ void bindFittedLaw(py::module_& m)
                                     numbers(bandwidth, "bandwidth"), numbers(Eprime, "Eprime"),
                                     numbers(hardness, "hardness"),   numbers(skewness, "skewness"),
                                     numbers(firstLevelShare, "first_level_share")};
-            const std::size_t n = sameLength("fitted_elasto_plastic", p, arrays);
-            Array out(p.request().shape);
-            double* h = out.mutable_data();
-            {
-                py::gil_scoped_release release;
-                for (std::size_t i = 0; i < n; ++i) {
-                    const double Hi = arrays[4].data()[i];
-                    const double s1 = arrays[6].data()[i];
-                    h[i] = fittedElastoPlasticConductancePerConductivity(
-                        p.data()[i], SurfaceRoughness{arrays[0].data()[i], arrays[1].data()[i]}, arrays[2].data()[i],
-                        arrays[3].data()[i], std::isnan(Hi) ? std::nullopt : std::optional<double>(Hi),
-                        arrays[5].data()[i], std::isnan(s1) ? std::nullopt : std::optional<double>(s1), constants);
-                }
-            }
-            return out;
+            return vectorized("fitted_elasto_plastic", p, arrays, [&](double Pi, const auto& a) {
+                return fittedElastoPlasticConductancePerConductivity(Pi, SurfaceRoughness{a(0), a(1)}, a(2), a(3),
+                                                                     given(a(4)), a(5), given(a(6)), constants);
+            });
         },
         py::arg("P"), py::arg("sigma"), py::arg("m"), py::arg("bandwidth"), py::arg("Eprime"), py::arg("hardness"),
         py::arg("skewness"), py::arg("first_level_share"), py::arg("constants") = FittedElastoPlasticConstants{},
@@ -127,19 +132,9 @@ void bindFittedLaw(py::module_& m)
             const Array p = numbers(P, "P");
             const Array arrays[] = {numbers(peak, "peak"), numbers(m, "m"), numbers(Eprime, "Eprime"),
                                     numbers(hardness, "hardness")};
-            const std::size_t n = sameLength("fitted_unloading_factor", p, arrays);
-            Array out(p.request().shape);
-            double* r = out.mutable_data();
-            {
-                py::gil_scoped_release release;
-                for (std::size_t i = 0; i < n; ++i) {
-                    const double Hi = arrays[3].data()[i];
-                    r[i] = fittedUnloadingFactor(p.data()[i], arrays[0].data()[i], arrays[1].data()[i],
-                                                 arrays[2].data()[i],
-                                                 std::isnan(Hi) ? std::nullopt : std::optional<double>(Hi), constants);
-                }
-            }
-            return out;
+            return vectorized("fitted_unloading_factor", p, arrays, [&](double Pi, const auto& a) {
+                return fittedUnloadingFactor(Pi, a(0), a(1), a(2), given(a(3)), constants);
+            });
         },
         py::arg("P"), py::arg("peak"), py::arg("m"), py::arg("Eprime"), py::arg("hardness"),
         py::arg("constants") = FittedElastoPlasticConstants{},
@@ -157,22 +152,10 @@ void bindFittedLaw(py::module_& m)
                                     numbers(m, "m"),                 numbers(bandwidth, "bandwidth"),
                                     numbers(Eprime, "Eprime"),       numbers(hardness, "hardness"),
                                     numbers(skewness, "skewness"),   numbers(firstLevelShare, "first_level_share")};
-            const std::size_t n = sameLength("fitted_elasto_plastic_unloading", p, arrays);
-            Array out(p.request().shape);
-            double* h = out.mutable_data();
-            {
-                py::gil_scoped_release release;
-                for (std::size_t i = 0; i < n; ++i) {
-                    const double Hi = arrays[5].data()[i];
-                    const double s1 = arrays[7].data()[i];
-                    h[i] = fittedElastoPlasticUnloadingConductancePerConductivity(
-                        p.data()[i], arrays[0].data()[i], SurfaceRoughness{arrays[1].data()[i], arrays[2].data()[i]},
-                        arrays[3].data()[i], arrays[4].data()[i],
-                        std::isnan(Hi) ? std::nullopt : std::optional<double>(Hi), arrays[6].data()[i],
-                        std::isnan(s1) ? std::nullopt : std::optional<double>(s1), constants);
-                }
-            }
-            return out;
+            return vectorized("fitted_elasto_plastic_unloading", p, arrays, [&](double Pi, const auto& a) {
+                return fittedElastoPlasticUnloadingConductancePerConductivity(
+                    Pi, a(0), SurfaceRoughness{a(1), a(2)}, a(3), a(4), given(a(5)), a(6), given(a(7)), constants);
+            });
         },
         py::arg("P"), py::arg("peak"), py::arg("sigma"), py::arg("m"), py::arg("bandwidth"), py::arg("Eprime"),
         py::arg("hardness"), py::arg("skewness"), py::arg("first_level_share"),

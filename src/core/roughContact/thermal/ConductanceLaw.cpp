@@ -125,11 +125,10 @@ public:
     bool unloads() const override { return H_.has_value(); }
     double unloadingFactor(double P, double peak) const override
     {
-        // The branch over the loading value (1 where that is 0 or infinite: nothing to scale).
-        const double unloaded =
-            fittedElastoPlasticUnloadingConductancePerConductivity(P, peak, r_, W_, Eprime_, H_, s_, s1_);
-        const double loading = perConductivity(P);
-        return loading > 0.0 && std::isfinite(loading) ? unloaded / loading : 1.0;
+        // The branch over the loading value (1 where that is 0 or infinite: nothing to scale),
+        // the law evaluated once at P.
+        const FittedUnloading h = fittedElastoPlasticUnloading(P, peak, r_, W_, Eprime_, H_, s_, s1_);
+        return h.loading > 0.0 && std::isfinite(h.loading) ? h.unloading / h.loading : 1.0;
     }
 
 private:

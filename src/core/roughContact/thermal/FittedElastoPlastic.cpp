@@ -194,7 +194,11 @@ double fittedUnloadingPlasticShare(double plasticityIndex, const FittedElastoPla
         throw ParameterError("plasticity index gamma", "must be >= 0, got " + std::to_string(plasticityIndex));
     }
     const double g = plasticityIndex / c.unloadingPlasticityMidpoint;
-    return 1.0 / (1.0 + g * g);
+    if (g <= 1.0) {
+        return 1.0 / (1.0 + g * g);
+    }
+    const double inverse = 1.0 / g; // no g^2 to overflow for a huge index
+    return inverse * inverse / (1.0 + inverse * inverse);
 }
 
 double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, double Eprime, std::optional<double> H,
@@ -206,10 +210,8 @@ double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, do
         throw ParameterError(P < 0.0 ? "contact pressure P" : "peak pressure P_max",
                              "must be >= 0, got " + std::to_string(P < 0.0 ? P : peak));
     }
-    requireFinite("mean absolute slope m", meanAbsoluteSlope);
-    if (!(meanAbsoluteSlope > 0.0)) {
-        throw ParameterError("mean absolute slope m", "must be > 0, got " + std::to_string(meanAbsoluteSlope));
-    }
+    // The law's range for m (checkRoughness): gamma below it stays far from overflowing.
+    limits::requireInRange("mean absolute slope m", meanAbsoluteSlope, limits::minimumSlope, limits::maximumSlope, "");
     limits::requireInRange("reduced modulus E'", Eprime, limits::minimumReducedModulus, limits::maximumReducedModulus,
                            "Pa");
     if (!H) {
@@ -226,20 +228,27 @@ double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, do
     return std::exp(logRatio * (1.0 - std::pow(P / peak, c.unloadingRise)));
 }
 
-double fittedElastoPlasticUnloadingConductancePerConductivity(double P, double peak, const SurfaceRoughness& r,
-                                                              double bandwidth, double Eprime, std::optional<double> H,
-                                                              double skewness, std::optional<double> firstLevelShare,
-                                                              const FittedElastoPlasticConstants& c)
+FittedUnloading fittedElastoPlasticUnloading(double P, double peak, const SurfaceRoughness& r, double bandwidth,
+                                             double Eprime, std::optional<double> H, double skewness,
+                                             std::optional<double> firstLevelShare, const FittedElastoPlasticConstants& c)
 {
     const double R = fittedUnloadingFactor(P, peak, r.meanAbsoluteSlope, Eprime, H, c);
     const double h = fittedElastoPlasticConductancePerConductivity(P, r, bandwidth, Eprime, H, skewness,
                                                                    firstLevelShare, c);
     if (R == 1.0) {
-        return h;
+        return {h, h};
     }
     // +inf at a peak at or beyond H: no bound.
-    return std::min(h * R, fittedElastoPlasticConductancePerConductivity(peak, r, bandwidth, Eprime, H, skewness,
-                                                                         firstLevelShare, c));
+    return {h, std::min(h * R, fittedElastoPlasticConductancePerConductivity(peak, r, bandwidth, Eprime, H, skewness,
+                                                                             firstLevelShare, c))};
+}
+
+double fittedElastoPlasticUnloadingConductancePerConductivity(double P, double peak, const SurfaceRoughness& r,
+                                                              double bandwidth, double Eprime, std::optional<double> H,
+                                                              double skewness, std::optional<double> firstLevelShare,
+                                                              const FittedElastoPlasticConstants& c)
+{
+    return fittedElastoPlasticUnloading(P, peak, r, bandwidth, Eprime, H, skewness, firstLevelShare, c).unloading;
 }
 
 } // namespace roughContact

@@ -66,16 +66,27 @@ double fittedUnloadingPlasticShare(double plasticityIndex, const FittedElastoPla
 
 /// R of the header: the unloading branch's factor on the law's loading h_c/k_s at the nominal
 /// pressure P [Pa] (finite, >= 0) of a joint that has carried the pressure peak [Pa] (finite,
-/// >= 0), for the combined surfaces' mean absolute slope m (> 0), the reduced modulus E' [Pa] and
+/// >= 0), for the combined surfaces' mean absolute slope m (within the project's slope range, as
+/// the law's roughness), the reduced modulus E' [Pa] and
 /// the cap H [Pa]. 1 at P >= peak (loading) and without a cap; P_max/H held at
 /// unloadingPeakHeaviest (0.9) above it. ParameterError naming the entry on bad input.
 double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, double Eprime, std::optional<double> H,
                              const FittedElastoPlasticConstants& c = {});
 
-/// h_c/k_s [1/m] of the unloading branch of the header at the nominal pressure P [Pa] of a joint
-/// that has carried the pressure peak [Pa]: the law's h_c/k_s at P times R, at most the law's at
-/// the peak (an unloaded joint conducts no more than it did there); the law's own at P >= peak
-/// and without a cap. Inputs as the law's and fittedUnloadingFactor's.
+/// The law's h_c/k_s [1/m] at the nominal pressure P [Pa], loading and on the unloading branch
+/// of the header of a joint that has carried the pressure peak [Pa]: the loading value times R,
+/// at most the law's at the peak (an unloaded joint conducts no more than it did there); the
+/// loading value at P >= peak and without a cap. Inputs as the law's and fittedUnloadingFactor's.
+struct FittedUnloading {
+    double loading;
+    double unloading;
+};
+FittedUnloading fittedElastoPlasticUnloading(double P, double peak, const SurfaceRoughness& r, double bandwidth,
+                                             double Eprime, std::optional<double> H, double skewness = 0.0,
+                                             std::optional<double> firstLevelShare = std::nullopt,
+                                             const FittedElastoPlasticConstants& c = {});
+
+/// fittedElastoPlasticUnloading(...).unloading.
 double fittedElastoPlasticUnloadingConductancePerConductivity(double P, double peak, const SurfaceRoughness& r,
                                                               double bandwidth, double Eprime, std::optional<double> H,
                                                               double skewness = 0.0,
