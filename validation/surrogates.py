@@ -68,7 +68,9 @@ class LawInputs:
     profiles across and along a lay), as the core reads it: sigma [m], m (the mean absolute slope),
     the line scans' bandwidth ratio W and first level's share s1, h' (the core's areal rms gradient
     of that spectrum), the heights' skewness, its spread by chance and the shrunk skewness the
-    default law takes."""
+    default law takes; and the Hurst exponent of the spectrum's finest octave H_f its unloading
+    branch takes (fine_hurst; NaN: none), which values() leaves out (no study's table of
+    surfaces unloads them)."""
 
     FIELDS = ["sigma", "m", "bandwidth", "s1", "gradient", "skewness", "spread", "shrunk"]
 
@@ -77,6 +79,8 @@ class LawInputs:
         self.sigma, self.m = r.sigma, r.mean_absolute_slope
         self.bandwidth, self.s1 = rc.spectral_bandwidth_ratio(levels), rc.first_level_share(levels)
         self.gradient = rc.areal_rms_gradient(levels)
+        hf = rc.fine_hurst_exponent(levels)
+        self.fine_hurst = float("nan") if hf is None else hf
         if k is None:  # a spectrum: Gaussian heights, skewness 0 as the core's equivalentSkewness takes it
             self.skewness, self.spread, self.shrunk = 0.0, 0.0, 0.0
         else:
@@ -90,7 +94,7 @@ class LawInputs:
     def point(self, P, pair, exact=1.0, **more):
         """A row of fitting.Points: the default law's inputs at the pressure P [Pa] for the Pair."""
         return {"P": P, "sigma": self.sigma, "m": self.m, "w": self.bandwidth, "E": pair.Eprime, "H": pair.hardness,
-                "s": self.shrunk, "s1": self.s1, "exact": exact, **more}
+                "s": self.shrunk, "s1": self.s1, "hf": self.fine_hurst, "exact": exact, **more}
 
 
 class Areal(LawInputs):
@@ -110,6 +114,7 @@ class Areal(LawInputs):
         a.path, a.dx, a.dy = None, dx, dy if dy is not None else dx
         for f in cls.FIELDS:
             setattr(a, f, float(row[f]))
+        a.fine_hurst = float("nan")  # not in the tables (values())
         return a
 
     def arguments(self):

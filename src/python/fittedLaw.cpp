@@ -128,42 +128,46 @@ void bindFittedLaw(py::module_& m)
     m.def(
         "fitted_unloading_factor",
         [](const py::handle& P, const py::handle& peak, const py::handle& m, const py::handle& Eprime,
-           const py::handle& hardness, const FittedElastoPlasticConstants& constants) {
+           const py::handle& hardness, const py::handle& fineHurst, const FittedElastoPlasticConstants& constants) {
             const Array p = numbers(P, "P");
             const Array arrays[] = {numbers(peak, "peak"), numbers(m, "m"), numbers(Eprime, "Eprime"),
-                                    numbers(hardness, "hardness")};
+                                    numbers(hardness, "hardness"), numbers(fineHurst, "fine_hurst")};
             return vectorized("fitted_unloading_factor", p, arrays, [&](double Pi, const auto& a) {
-                return fittedUnloadingFactor(Pi, a(0), a(1), a(2), given(a(3)), constants);
+                return fittedUnloadingFactor(Pi, a(0), a(1), a(2), given(a(3)), given(a(4)), constants);
             });
         },
-        py::arg("P"), py::arg("peak"), py::arg("m"), py::arg("Eprime"), py::arg("hardness"),
+        py::arg("P"), py::arg("peak"), py::arg("m"), py::arg("Eprime"), py::arg("hardness"), py::arg("fine_hurst"),
         py::arg("constants") = FittedElastoPlasticConstants{},
         "R of fittedElastoPlastic's unloading branch (the core's fittedUnloadingFactor): the factor on the "
         "law's loading h_c/k_s at the nominal pressure P [Pa] of a joint that has carried peak [Pa], for the "
-        "mean absolute slope m, E' [Pa] and the cap H [Pa] (NaN: elastic, R = 1), with `constants`. Equally "
-        "long arrays (or numbers) in, an array out.");
+        "mean absolute slope m, E' [Pa], the cap H [Pa] (NaN: elastic, R = 1) and the Hurst exponent of the "
+        "spectrum's finest octave H_f (fine_hurst_exponent; NaN: none), with `constants`. Equally long arrays "
+        "(or numbers) in, an array out.");
     m.def(
         "fitted_elasto_plastic_unloading",
         [](const py::handle& P, const py::handle& peak, const py::handle& sigma, const py::handle& m,
            const py::handle& bandwidth, const py::handle& Eprime, const py::handle& hardness,
-           const py::handle& skewness, const py::handle& firstLevelShare, const FittedElastoPlasticConstants& constants) {
+           const py::handle& skewness, const py::handle& firstLevelShare, const py::handle& fineHurst,
+           const FittedElastoPlasticConstants& constants) {
             const Array p = numbers(P, "P");
             const Array arrays[] = {numbers(peak, "peak"),           numbers(sigma, "sigma"),
                                     numbers(m, "m"),                 numbers(bandwidth, "bandwidth"),
                                     numbers(Eprime, "Eprime"),       numbers(hardness, "hardness"),
-                                    numbers(skewness, "skewness"),   numbers(firstLevelShare, "first_level_share")};
+                                    numbers(skewness, "skewness"),   numbers(firstLevelShare, "first_level_share"),
+                                    numbers(fineHurst, "fine_hurst")};
             return vectorized("fitted_elasto_plastic_unloading", p, arrays, [&](double Pi, const auto& a) {
-                return fittedElastoPlasticUnloadingConductancePerConductivity(
-                    Pi, a(0), SurfaceRoughness{a(1), a(2)}, a(3), a(4), given(a(5)), a(6), given(a(7)), constants);
+                return fittedElastoPlasticUnloadingConductancePerConductivity(Pi, a(0), SurfaceRoughness{a(1), a(2)},
+                                                                              a(3), a(4), given(a(5)), a(6),
+                                                                              given(a(7)), given(a(8)), constants);
             });
         },
         py::arg("P"), py::arg("peak"), py::arg("sigma"), py::arg("m"), py::arg("bandwidth"), py::arg("Eprime"),
-        py::arg("hardness"), py::arg("skewness"), py::arg("first_level_share"),
+        py::arg("hardness"), py::arg("skewness"), py::arg("first_level_share"), py::arg("fine_hurst"),
         py::arg("constants") = FittedElastoPlasticConstants{},
         "h_c/k_s [1/m] of fittedElastoPlastic's unloading branch (the core's "
         "fittedElastoPlasticUnloadingConductancePerConductivity) at each point: P [Pa] of a joint that has "
-        "carried peak [Pa], the other arguments as fitted_elasto_plastic's. Equally long arrays (or numbers) "
-        "in, an array out.");
+        "carried peak [Pa], the other arguments as fitted_elasto_plastic's and fitted_unloading_factor's. "
+        "Equally long arrays (or numbers) in, an array out.");
     m.def("gaussian_plastic_spot_conductance", &gaussianPlasticSpotConductance, py::arg("a"),
           "g(a): sigma h_c/(k_s m) of Gaussian plastic spots covering the area fraction a (FittedElastoPlastic.hpp).");
 }

@@ -17,6 +17,7 @@
 #include "roughContact/io/Units.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
+#include "roughContact/surface/FractalFit.hpp"
 #include "roughContact/surface/SpectralMoments.hpp"
 #include "roughContact/surface/SpectralResampling.hpp"
 #include "roughContact/surface/Profile.hpp"
@@ -277,6 +278,10 @@ void bindSurfaces(py::module_& m)
           "s1 = beta_1^2 / sum beta_k^2: the first (longest-wave) level's share of a line-scan spectrum's "
           "height variance (0 <= s1 <= 1: 0 where the first amplitude is 0, 1 for a single level): the conductance law fittedElastoPlastic's "
           "light-load exponent follows it.");
+    m.def("fine_hurst_exponent", &fineHurstExponent, py::arg("spectrum"),
+          "H_f: the Hurst exponent of a line-scan spectrum's finest octave, -(1 + s)/2 with s the slope of "
+          "ln PSD against ln f over the levels from f_max/2 to f_max (None with fewer than 3 levels there): "
+          "the conductance law fittedElastoPlastic's unloading branch follows it.");
 }
 
 } // namespace roughcontact_py

@@ -9,6 +9,7 @@
 #include "roughContact/io/X3pReader.hpp"
 #include "roughContact/models/ModelFactory.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
+#include "roughContact/surface/FractalFit.hpp"
 #include "roughContact/surface/SpectralMoments.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
@@ -115,7 +116,7 @@ TEST(ContactInterface, TheDefaultLawUnloadsByItsBranch)
             SCOPED_TRACE(std::to_string(P) + " from " + std::to_string(peak));
             const FaceContact loading = ci.face(P, 50.0, 20.0);
             const FaceContact unloading = ci.face(P, 50.0, 20.0, peak);
-            const double R = fittedUnloadingFactor(P, peak, m, mat.reducedModulus(), H);
+            const double R = fittedUnloadingFactor(P, peak, m, mat.reducedModulus(), H, fineHurstExponent(ci.surface()));
             EXPECT_GT(R, 1.0);
             EXPECT_NEAR(unloading.conductance, loading.conductance * R, 1e-14 * unloading.conductance);
             EXPECT_EQ(unloading.areaFraction, loading.areaFraction);

@@ -153,6 +153,21 @@ TEST(InterfaceRegime, FromTheDefinitions)
     const InterfaceRegime held = interfaceRegime(flat, Ep, std::nullopt, "fittedElastoPlastic", "hertz", false, 1e5, 1e8);
     EXPECT_NE(held.describe().find("s1 0.05 (held at 0.11, the training spectra's range; the law's light-load factor"), std::string::npos)
         << held.describe();
+    // The finest octave's Hurst exponent (0.8 for this power law, beta ~ f^-1.3) is said for the
+    // default law with a cap, whose unloading branch takes it; not without a cap (no branch) nor
+    // for another law; above 1 (the training spectra's range) the line says the law holds it.
+    ASSERT_TRUE(fitted.fineHurst.has_value());
+    EXPECT_NEAR(*fitted.fineHurst, 0.8, 1e-12);
+    EXPECT_NE(fitted.describe().find("finest octave's Hurst exponent H_f 0.8 (the law's unloading branch"),
+              std::string::npos)
+        << fitted.describe();
+    EXPECT_EQ(text.find("H_f"), std::string::npos) << text;
+    const InterfaceRegime elastic = interfaceRegime(s, Ep, std::nullopt, "fittedElastoPlastic", "hertz", false, 1e5, 1e8);
+    EXPECT_EQ(elastic.describe().find("H_f"), std::string::npos) << elastic.describe();
+    const Spectrum steep = Spectrum::powerLaw(1e-7 * std::pow(1e3, 2.0), 2.0, 1e3, 2e5, 1e-3);
+    const InterfaceRegime steepest = interfaceRegime(steep, Ep, H, "fittedElastoPlastic", "jacksonGreen", true, 1e5, 1e8);
+    EXPECT_NE(steepest.describe().find("H_f 1.5 (held at 1, the training spectra's range;"), std::string::npos)
+        << steepest.describe();
 }
 
 TEST(InterfaceRegime, TheInterfaceSaysItsRegimeAtTheTablesEnds)

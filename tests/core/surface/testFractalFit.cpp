@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -148,4 +149,32 @@ TEST(FractalFit, errorsWhenTheSlopeIsNotFractal)
     }
     EXPECT_THROW(fitFractal(Spectrum(f, flat, L)), ParameterError);
     EXPECT_THROW(fitFractal(Spectrum(f, steep, L)), ParameterError);
+}
+
+TEST(FractalFit, theFinestOctavesHurstExponentIsTheSpectrumsSlope)
+{
+    // beta = b f^-(H + 1/2) (PSD ~ f^-(1 + 2H)): H_f = H to round-off, whatever the spectrum does
+    // below its finest octave (a roll-off); on a period four times as long within 0.03 (onPeriod
+    // interpolates the density linearly between the levels and ends the band half a bin beyond
+    // the last: its finest octave is not quite a power law); a spectrum steeper than any
+    // self-affine one gives its H_f all the same (1.5); too few levels: none.
+    const double L = 1e-3;
+    for (double H : {0.3, 0.8, 1.0}) {
+        SCOPED_TRACE(H);
+        const Spectrum plain = Spectrum::powerLaw(1e-9, H + 0.5, 1.0 / L, 64.0 / L);
+        ASSERT_TRUE(fineHurstExponent(plain).has_value());
+        EXPECT_NEAR(*fineHurstExponent(plain), H, 1e-12);
+        std::vector<double> f;
+        std::vector<double> beta;
+        for (int i = 1; i <= 64; ++i) {
+            f.push_back(i / L);
+            beta.push_back(1e-9 * std::pow(std::max(i, 8) / L, -(H + 0.5))); // flat below the 8th level
+        }
+        const Spectrum rolled(f, beta, L);
+        EXPECT_NEAR(*fineHurstExponent(rolled), H, 1e-12);
+        EXPECT_NEAR(*fineHurstExponent(rolled.onPeriod(4)), H, 0.03);
+    }
+    EXPECT_NEAR(*fineHurstExponent(Spectrum::powerLaw(1e-9, 2.0, 1.0 / L, 64.0 / L)), 1.5, 1e-12);
+    EXPECT_FALSE(fineHurstExponent(Spectrum({1e3, 2e3, 3e3}, {1e-6, 1e-7, 1e-8}, L)).has_value()); // 2 in [1.5e3, 3e3]
+    EXPECT_TRUE(fineHurstExponent(Spectrum({1e3, 2e3, 3e3, 4e3}, {1e-6, 1e-7, 1e-8, 1e-9}, L)).has_value());
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/interface/InterfaceRegime.hpp"
 
+#include "roughContact/surface/FractalFit.hpp"
 #include "roughContact/surface/SpectralMoments.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/thermal/FittedElastoPlastic.hpp"
@@ -57,6 +58,7 @@ InterfaceRegime interfaceRegime(const Spectrum& surface, double Eprime, std::opt
     } catch (const std::exception&) {
         // An all-zero spectrum: nothing to say (the law refuses it anyway).
     }
+    out.fineHurst = fineHurstExponent(surface);
     if (hardness) {
         try {
             const SummitParameters s = mcCoolParameters(m);
@@ -126,6 +128,15 @@ std::string InterfaceRegime::describeSurface() const
         os << "the law's light-load factor below p/(E' h') = " << c.lightLoadEnd << " takes it: "
            << fittedLightLoadFactor(s1, 1e-4, c)
            << " at 1e-4; from one profile a noisy number: docs/validation/fittedElastoPlastic.md)";
+    }
+    if (fineHurst && hardness && law == "fittedElastoPlastic") {
+        const FittedElastoPlasticConstants c;
+        os << ", finest octave's Hurst exponent H_f " << *fineHurst << " (";
+        const double held = std::min(std::max(*fineHurst, c.unloadingHurstLeast), c.unloadingHurstMost);
+        if (held != *fineHurst) {
+            os << "held at " << held << ", the training spectra's range; ";
+        }
+        os << "the law's unloading branch below a face's peak takes it: docs/theory.md §5.7c)";
     }
     return os.str();
 }

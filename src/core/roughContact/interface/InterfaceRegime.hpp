@@ -48,6 +48,9 @@ struct InterfaceRegime {
     /// fittedElastoPlastic's light-load factor below p/(E' h') = 0.01 takes it; the log says it,
     /// with the factor it gives at p/(E' h') = 1e-4, for that law.
     std::optional<double> firstLevelShare;
+    /// The Hurst exponent H_f of the spectrum's finest octave (fineHurstExponent): the law
+    /// fittedElastoPlastic's unloading branch takes it; the log says it for that law with a cap.
+    std::optional<double> fineHurst;
     std::string law;                           ///< the chosen law ("boundaryElement (exact)" for the exact model)
     std::string areaModel;                     ///< the area model
     bool capped = false;                       ///< compared with the capped reference
@@ -58,8 +61,8 @@ struct InterfaceRegime {
     /// ends and the band of the law there.
     std::string describe() const;
 
-    /// One line: h', H, H/(E' h'), the plasticity index, the heights' skewness and s1 as the law
-    /// takes them.
+    /// One line: h', H, H/(E' h'), the plasticity index, the heights' skewness, s1 and H_f as the
+    /// law takes them.
     std::string describeSurface() const;
 
     /// The regime at the pressure P [Pa] (> 0), and the chosen law's band there.

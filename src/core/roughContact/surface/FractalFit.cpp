@@ -12,6 +12,60 @@
 
 namespace roughContact {
 
+namespace {
+
+struct PsdLine {
+    std::size_t levels; ///< the levels fitted
+    double slope;       ///< NaN with fewer than 3
+    double intercept;   ///< NaN with fewer than 3
+};
+
+/// ln S = c + s ln f by least squares over the levels in [fmin, fmax] with beta > 0, S the one-
+/// sided PSD beta^2/(2 df), df = 1/L (docs/theory.md §4.3; Spectrum::fractal).
+PsdLine fitPsdLine(const Spectrum& spectrum, double fmin, double fmax)
+{
+    const double L = spectrum.length();
+    std::vector<double> x;
+    std::vector<double> y;
+    for (std::size_t i = 0; i < spectrum.size(); ++i) {
+        const double f = spectrum.frequency(i);
+        const double beta = spectrum.amplitude(i);
+        if (f < fmin || f > fmax || !(beta > 0.0)) {
+            continue; // outside the band, or a level that carries nothing (docs/theory.md §1.2)
+        }
+        x.push_back(std::log(f));
+        y.push_back(std::log(0.5 * beta * beta * L));
+    }
+    if (x.size() < 3) {
+        return {x.size(), std::nan(""), std::nan("")};
+    }
+    // ln f centred on its mean for conditioning.
+    const auto n = static_cast<Eigen::Index>(x.size());
+    const Eigen::Map<const Eigen::VectorXd> lnF(x.data(), n);
+    const Eigen::Map<const Eigen::VectorXd> lnS(y.data(), n);
+    const double xMean = lnF.mean();
+    Eigen::MatrixXd A(n, 2);
+    A.col(0).setOnes();
+    A.col(1) = lnF.array() - xMean;
+    const Eigen::Vector2d coef = A.colPivHouseholderQr().solve(lnS);
+    return {x.size(), coef[1], coef[0] - coef[1] * xMean};
+}
+
+} // namespace
+
+std::optional<double> fineHurstExponent(const Spectrum& spectrum)
+{
+    if (spectrum.size() == 0) {
+        return std::nullopt;
+    }
+    const double fmax = spectrum.frequency(spectrum.size() - 1);
+    const PsdLine line = fitPsdLine(spectrum, 0.5 * fmax, fmax);
+    if (!std::isfinite(line.slope)) {
+        return std::nullopt;
+    }
+    return -0.5 * (1.0 + line.slope);
+}
+
 FractalParameters fitFractal(const Spectrum& spectrum, double fmin, double fmax)
 {
     if (std::isnan(fmin) || fmin < 0.0 || fmin == std::numeric_limits<double>::infinity()) {
@@ -24,37 +78,15 @@ FractalParameters fitFractal(const Spectrum& spectrum, double fmin, double fmax)
         os << "must exceed fmin = " << fmin << ", got " << fmax;
         throw ParameterError("fractal fit fmax", os.str());
     }
-    const double L = spectrum.length();
-    std::vector<double> x;
-    std::vector<double> y;
-    for (std::size_t i = 0; i < spectrum.size(); ++i) {
-        const double f = spectrum.frequency(i);
-        const double beta = spectrum.amplitude(i);
-        if (f < fmin || f > fmax || !(beta > 0.0)) {
-            continue; // outside the band, or a level that carries nothing (docs/theory.md §1.2)
-        }
-        // One-sided PSD S = beta^2 / (2 df), df = 1/L (docs/theory.md §4.3; Spectrum::fractal).
-        x.push_back(std::log(f));
-        y.push_back(std::log(0.5 * beta * beta * L));
-    }
-    if (x.size() < 3) {
+    const PsdLine line = fitPsdLine(spectrum, fmin, fmax);
+    if (line.levels < 3) {
         std::ostringstream os;
-        os << "needs at least 3 levels with beta > 0 in [" << fmin << ", " << fmax
-           << "] 1/m, found " << x.size();
+        os << "needs at least 3 levels with beta > 0 in [" << fmin << ", " << fmax << "] 1/m, found "
+           << line.levels;
         throw ParameterError("fractal fit frequency range", os.str());
     }
-
-    // ln S = c + s ln f by least squares; ln f centred on its mean for conditioning.
-    const auto n = static_cast<Eigen::Index>(x.size());
-    const Eigen::Map<const Eigen::VectorXd> lnF(x.data(), n);
-    const Eigen::Map<const Eigen::VectorXd> lnS(y.data(), n);
-    const double xMean = lnF.mean();
-    Eigen::MatrixXd A(n, 2);
-    A.col(0).setOnes();
-    A.col(1) = lnF.array() - xMean;
-    const Eigen::Vector2d coef = A.colPivHouseholderQr().solve(lnS);
-    const double s = coef[1];
-    const double c = coef[0] - s * xMean;
+    const double s = line.slope;
+    const double c = line.intercept;
 
     FractalParameters p{};
     p.D = 0.5 * (5.0 + s); // slope -(5 - 2D) of the W-M PSD (docs/theory.md §4.3)

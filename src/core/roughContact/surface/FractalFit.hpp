@@ -4,6 +4,7 @@
 #pragma once
 
 #include <limits>
+#include <optional>
 
 namespace roughContact {
 
@@ -23,5 +24,14 @@ struct FractalParameters {
 /// ParameterError with fewer than 3 levels in range or a fitted D outside (1, 2).
 FractalParameters fitFractal(const Spectrum& spectrum, double fmin = 0.0,
                              double fmax = std::numeric_limits<double>::infinity());
+
+/// The Hurst exponent H_f of the spectrum's finest octave: ln S = c + s ln f by least squares over
+/// the levels with f_max/2 <= f <= f_max and beta > 0 (S as fitFractal's), H_f = -(1 + s)/2 (a
+/// self-affine profile's PSD falls as f^-(1 + 2H)); 0.8 for a self-affine spectrum of Hurst
+/// exponent 0.8 whatever its roll-off and its period. Any finite value (no range check: 1.2 for
+/// a spectrum that falls faster than any self-affine one). None when the octave holds fewer than
+/// 3 such levels. The conductance law fittedElastoPlastic's unloading branch takes it
+/// (FittedElastoPlastic.hpp; docs/theory.md §5.7c).
+std::optional<double> fineHurstExponent(const Spectrum& spectrum);
 
 } // namespace roughContact

@@ -5,6 +5,7 @@
 #include "roughContact/Limits.hpp"
 #include "roughContact/models/MultiscaleModel.hpp"
 #include "roughContact/models/Persson.hpp"
+#include "roughContact/surface/FractalFit.hpp"
 #include "roughContact/surface/SpectralMoments.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 #include "roughContact/thermal/CooperMikicYovanovich.hpp"
@@ -113,7 +114,8 @@ public:
           W_(spectrum != nullptr ? spectralBandwidthRatio(*spectrum) : FittedElastoPlasticConstants{}.heavyLoadBandwidthPivot),
           Eprime_(Eprime), H_(H),
           s_(skewness ? shrunkSkewness(*skewness) : 0.0),
-          s1_(spectrum != nullptr ? std::optional<double>(firstLevelShare(*spectrum)) : std::nullopt)
+          s1_(spectrum != nullptr ? std::optional<double>(firstLevelShare(*spectrum)) : std::nullopt),
+          Hf_(spectrum != nullptr ? fineHurstExponent(*spectrum) : std::nullopt)
     {
         fittedElastoPlasticConductancePerConductivity(0.0, r_, W_, Eprime_, H_, s_, s1_); // checks the inputs once
     }
@@ -127,7 +129,7 @@ public:
     {
         // The branch over the loading value (1 where that is 0 or infinite: nothing to scale),
         // the law evaluated once at P.
-        const FittedUnloading h = fittedElastoPlasticUnloading(P, peak, r_, W_, Eprime_, H_, s_, s1_);
+        const FittedUnloading h = fittedElastoPlasticUnloading(P, peak, r_, W_, Eprime_, H_, s_, s1_, Hf_);
         return h.loading > 0.0 && std::isfinite(h.loading) ? h.unloading / h.loading : 1.0;
     }
 
@@ -138,6 +140,9 @@ private:
     std::optional<double> H_;
     double s_;
     std::optional<double> s1_; // the spectrum's first level's share; none without a spectrum: no light-load factor
+    // The Hurst exponent of the spectrum's finest octave; none without a spectrum (or fewer than
+    // three levels there): no deep-unloading term.
+    std::optional<double> Hf_;
 };
 
 class PerssonLaw final : public ConductanceLaw {

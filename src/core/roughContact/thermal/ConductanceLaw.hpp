@@ -20,7 +20,8 @@
 //   fittedElastoPlastic      Mikic's elastic form and the CMY plastic-spot geometry, refitted to
 //                            the exact conductance and blended (FittedElastoPlastic.hpp). Needs
 //                            sigma, m, E' and, for the plastic branch, the cap H and the
-//                            line-scan spectrum (its bandwidth ratio W); takes a measured
+//                            line-scan spectrum (its bandwidth ratio W; its finest octave's
+//                            Hurst exponent for the unloading branch); takes a measured
 //                            surface's heights' skewness where it is more than chance.
 #pragma once
 

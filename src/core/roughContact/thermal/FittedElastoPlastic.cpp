@@ -202,7 +202,7 @@ double fittedUnloadingPlasticShare(double plasticityIndex, const FittedElastoPla
 }
 
 double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, double Eprime, std::optional<double> H,
-                             const FittedElastoPlasticConstants& c)
+                             std::optional<double> fineHurst, const FittedElastoPlasticConstants& c)
 {
     requireFinite("contact pressure P", P);
     requireFinite("peak pressure P_max", peak);
@@ -214,6 +214,9 @@ double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, do
     limits::requireInRange("mean absolute slope m", meanAbsoluteSlope, limits::minimumSlope, limits::maximumSlope, "");
     limits::requireInRange("reduced modulus E'", Eprime, limits::minimumReducedModulus, limits::maximumReducedModulus,
                            "Pa");
+    if (fineHurst) {
+        requireFinite("fine-scale Hurst exponent H_f", *fineHurst);
+    }
     if (!H) {
         return 1.0;
     }
@@ -224,15 +227,24 @@ double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, do
     // gamma with Mikic's rms profile slope, m sqrt(pi/2) for Gaussian heights.
     const double gamma = *H / (Eprime * meanAbsoluteSlope * std::sqrt(0.5 * pi));
     const double flow = -std::log1p(-std::min(peak / *H, c.unloadingPeakHeaviest));
-    const double logRatio = c.unloadingBase * fittedUnloadingPlasticShare(gamma, c) + c.unloadingFlow * flow;
-    return std::exp(logRatio * (1.0 - std::pow(P / peak, c.unloadingRise)));
+    // H_f held within the training spectra's; none: H_0, where neither of its terms acts.
+    const double above = fineHurst ? std::min(std::max(*fineHurst, c.unloadingHurstLeast), c.unloadingHurstMost) -
+                                         c.unloadingHurstPivot
+                                   : 0.0;
+    const double plateau = c.unloadingBase * fittedUnloadingPlasticShare(gamma, c) +
+                           c.unloadingFlow * flow * (1.0 + c.unloadingFlowHurst * above);
+    const double s = P / peak;
+    // The deep unloading's power of 1/s, s held at the deepest fitted.
+    const double tail = c.unloadingTail * std::max(0.0, above);
+    return std::exp(plateau * (1.0 - std::pow(s, c.unloadingRise)) - tail * std::log(std::max(s, c.unloadingDeepest)));
 }
 
 FittedUnloading fittedElastoPlasticUnloading(double P, double peak, const SurfaceRoughness& r, double bandwidth,
                                              double Eprime, std::optional<double> H, double skewness,
-                                             std::optional<double> firstLevelShare, const FittedElastoPlasticConstants& c)
+                                             std::optional<double> firstLevelShare, std::optional<double> fineHurst,
+                                             const FittedElastoPlasticConstants& c)
 {
-    const double R = fittedUnloadingFactor(P, peak, r.meanAbsoluteSlope, Eprime, H, c);
+    const double R = fittedUnloadingFactor(P, peak, r.meanAbsoluteSlope, Eprime, H, fineHurst, c);
     const double h = fittedElastoPlasticConductancePerConductivity(P, r, bandwidth, Eprime, H, skewness,
                                                                    firstLevelShare, c);
     if (R == 1.0) {
@@ -246,9 +258,11 @@ FittedUnloading fittedElastoPlasticUnloading(double P, double peak, const Surfac
 double fittedElastoPlasticUnloadingConductancePerConductivity(double P, double peak, const SurfaceRoughness& r,
                                                               double bandwidth, double Eprime, std::optional<double> H,
                                                               double skewness, std::optional<double> firstLevelShare,
+                                                              std::optional<double> fineHurst,
                                                               const FittedElastoPlasticConstants& c)
 {
-    return fittedElastoPlasticUnloading(P, peak, r, bandwidth, Eprime, H, skewness, firstLevelShare, c).unloading;
+    return fittedElastoPlasticUnloading(P, peak, r, bandwidth, Eprime, H, skewness, firstLevelShare, fineHurst, c)
+        .unloading;
 }
 
 } // namespace roughContact

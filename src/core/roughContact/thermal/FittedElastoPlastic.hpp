@@ -11,9 +11,11 @@
 //   h_pl^N)), h_el without one
 //
 // and, below the heaviest pressure P_max a joint has carried, its unloading branch (§5.7c):
-// min(h_c/k_s(P) R(P/P_max), h_c/k_s(P_max)) with ln R = (l_0 Phi(gamma) + l_1 c)(1 - (P/P_max)^q),
-// c = -ln(1 - P_max/H), Phi(gamma) = 1/(1 + (gamma/gamma_M)^2) and gamma = H/(E' m sqrt(pi/2))
-// Mikic's plasticity index (R = 1 without a cap: an elastic joint retraces its loading curve)
+// min(h_c/k_s(P) R(P/P_max), h_c/k_s(P_max)) with
+//   ln R = (l_0 Phi(gamma) + l_1 c (1 + u (H_f - H_0)))(1 - s^q) + t max(0, H_f - H_0) ln(1/s),
+// s = P/P_max, c = -ln(1 - P_max/H), Phi(gamma) = 1/(1 + (gamma/gamma_M)^2), gamma = H/(E' m
+// sqrt(pi/2)) Mikic's plasticity index and H_f the Hurst exponent of the spectrum's finest octave
+// (fineHurstExponent) (R = 1 without a cap: an elastic joint retraces its loading curve)
 //
 // with x = P/(sqrt(pi) E' m) (= P/(E' h') for Gaussian slopes), sigma and m the rms height and
 // mean absolute slope, W the bandwidth ratio and s1 the first level's share of the line-scan
@@ -67,10 +69,14 @@ double fittedUnloadingPlasticShare(double plasticityIndex, const FittedElastoPla
 /// R of the header: the unloading branch's factor on the law's loading h_c/k_s at the nominal
 /// pressure P [Pa] (finite, >= 0) of a joint that has carried the pressure peak [Pa] (finite,
 /// >= 0), for the combined surfaces' mean absolute slope m (within the project's slope range, as
-/// the law's roughness), the reduced modulus E' [Pa] and
-/// the cap H [Pa]. 1 at P >= peak (loading) and without a cap; P_max/H held at
-/// unloadingPeakHeaviest (0.9) above it. ParameterError naming the entry on bad input.
+/// the law's roughness), the reduced modulus E' [Pa], the cap H [Pa] and the Hurst exponent H_f of
+/// the combined spectrum's finest octave (finite; fineHurstExponent; none: H_0, where neither of
+/// its terms acts). 1 at P >= peak (loading) and without a cap; P_max/H held at
+/// unloadingPeakHeaviest (0.9) above it, H_f within [unloadingHurstLeast, unloadingHurstMost]
+/// (0.3 and 1, the training spectra's) and s at unloadingDeepest (1/30) in the deep-unloading
+/// term. ParameterError naming the entry on bad input.
 double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, double Eprime, std::optional<double> H,
+                             std::optional<double> fineHurst = std::nullopt,
                              const FittedElastoPlasticConstants& c = {});
 
 /// The law's h_c/k_s [1/m] at the nominal pressure P [Pa], loading and on the unloading branch
@@ -84,6 +90,7 @@ struct FittedUnloading {
 FittedUnloading fittedElastoPlasticUnloading(double P, double peak, const SurfaceRoughness& r, double bandwidth,
                                              double Eprime, std::optional<double> H, double skewness = 0.0,
                                              std::optional<double> firstLevelShare = std::nullopt,
+                                             std::optional<double> fineHurst = std::nullopt,
                                              const FittedElastoPlasticConstants& c = {});
 
 /// fittedElastoPlasticUnloading(...).unloading.
@@ -91,6 +98,7 @@ double fittedElastoPlasticUnloadingConductancePerConductivity(double P, double p
                                                               double bandwidth, double Eprime, std::optional<double> H,
                                                               double skewness = 0.0,
                                                               std::optional<double> firstLevelShare = std::nullopt,
+                                                              std::optional<double> fineHurst = std::nullopt,
                                                               const FittedElastoPlasticConstants& c = {});
 
 /// h_c/k_s [1/m] of the law at the nominal pressure P [Pa] (finite, >= 0), for the combined
