@@ -9,8 +9,8 @@ up to 0.9 H), then unloaded to a half, a fifth, a tenth and a thirtieth of it (t
 --unload-from: the cap's overlap at the peak kept as permanent set, the deformed surface
 unloaded elastically; docs/theory.md §7.3). The loading curve is solved at the same pressures.
 blindSpectra's four shapes are solved the same way on three pairs and seeds 1-6: held out; and
-the light end, peaks p/E' = 1e-5 (x = 1e-4), on true periods of 4L (grid 4N, seeds 1-3) for
-steel and copper on the engineering range's spectra: not fitted either. The default law's
+the light end, peaks p/E' = 1e-5 and 1e-4 (x = 1e-4 and 1e-3), on true periods of 4L (grid 4N,
+seeds 1-3) for steel and copper on the engineering range's spectra: not fitted either. The default law's
 unloading branch (docs/theory.md §5.7c) multiplies its loading h by a ratio R; `fit` fits R's
 constants to the exact unloading over loading h of the six training spectra (the core's
 fittedUnloadingFactor evaluated, never a copy), and the fittedElastoPlastic study writes them
@@ -62,7 +62,7 @@ SUMMARY = ("# The exact unloading of a capped joint (written by validation/studi
 
 
 class Case:
-    """A spectrum on a regime: its seeds, its role (FITTED, HELD_OUT or LIGHT), the period kL it is
+    """A spectrum on a regime: its seeds, its role (FITTED, HELD_OUT_ROLE or LARGE), the period kL it is
     solved on (grid kN) and its peaks p/E'."""
 
     def __init__(self, name, regime, seeds, role, k, peaks):
@@ -73,7 +73,7 @@ class Case:
         return self.name if self.k == 1 else f"{self.name} ({self.k}L)"
 
 
-FITTED, HELD_OUT_ROLE, LIGHT = "fitted", "held out", "light peak"
+FITTED, HELD_OUT_ROLE, LARGE = "fitted", "held out", "period 4L"
 
 
 class Design:
@@ -88,20 +88,22 @@ class Design:
             self.regimes = [key for key, _, pair in materials.REGIMES if pair is not None]
             self.held_out, self.held_out_regimes = HELD_OUT, ["steelSteel", "copperCopper", "hardSteel"]
             # The light end of the engineering range, x = 1e-4 (p/E' = 1e-5): on periods of 4L
-            # (grid 4N), where its contact spots are many enough.
+            # (grid 4N), where its contact spots are many enough; and x = 1e-3 there too, beside
+            # the period of L.
             self.light_regimes, self.light_period = ["steelSteel", "copperCopper"], 4
         self.light_spectra = [name for name, _, _, _ in SELF_AFFINE]
         self.more = [] if quick else MORE_TRAINING
         self.spectra = self.light_spectra + [name for name, _, _ in self.more]  # the branch is fitted on these
         self.held_out_seeds = self.seeds
-        # The light peaks' seeds: one period of 4L holds about as many contact spots as four of L.
+        # The periods of 4L's seeds: one holds about as many contact spots as four of L.
         self.light_seeds = self.seeds[:3]
-        self.light_peaks = [1e-5]
+        self.light_peaks = [1e-5, 1e-4]
 
     def cases(self, ctx):
         """[Case]: the training spectra on every capped pair and seed (fitted); the held-out ones
         (blindSpectra's four shapes) on three pairs and every seed; the engineering range's
-        spectra's light peaks on periods of 4L (three seeds), not fitted. Peaks up to 0.9 H only."""
+        spectra's two lightest peaks on periods of 4L (three seeds), not fitted. Peaks up to 0.9 H
+        only."""
         def peaks(regime, of):
             pair = materials.regime_pair(ctx, regime)
             return [pe for pe in of if pe * pair.Eprime <= 0.9 * pair.hardness]
@@ -109,7 +111,7 @@ class Design:
                  for name in self.spectra for regime in self.regimes] +
                 [Case(name, regime, self.held_out_seeds, HELD_OUT_ROLE, 1, peaks(regime, self.peaks))
                  for name, _, _ in self.held_out for regime in self.held_out_regimes] +
-                [Case(name, regime, self.light_seeds, LIGHT, self.light_period, peaks(regime, self.light_peaks))
+                [Case(name, regime, self.light_seeds, LARGE, self.light_period, peaks(regime, self.light_peaks))
                  for name in self.light_spectra for regime in self.light_regimes])
 
 
@@ -203,7 +205,7 @@ class Ratios:
 
 
 def ratio_points(s):
-    """Ratios of every case below its peak (fitted, held out and the light peaks)."""
+    """Ratios of every case below its peak (fitted, held out and on periods of 4L)."""
     rows = []
     for c in s.cases:
         pair = materials.regime_pair(s.ctx, c.regime)
@@ -316,14 +318,14 @@ def outputs(ctx):
     below = [r for r in rows if float(r["fraction"]) < 1.0]
     for regime in d.regimes:
         table = []
-        groups = sorted({(c.role, peak) for c in s.cases if c.regime == regime and c.role in (FITTED, LIGHT)
+        groups = sorted({(c.role, peak) for c in s.cases if c.regime == regime and c.role in (FITTED, LARGE)
                          for peak in c.peaks}, key=lambda g: g[1])
         for role, peak in groups:
             for f in FRACTIONS[1:]:
                 here = [r for r in below if r["regime"] == regime and r["role"] == role
                         and float(r["peak_p_per_Eprime"]) == peak and abs(float(r["fraction"]) / f - 1) < 1e-5]
                 table.append([f"{peak:.0e}" + (f" ({d.light_period}L, seeds {d.light_seeds[0]}-{d.light_seeds[-1]})"
-                                               if role == LIGHT else ""), f"{f:.2g}",
+                                               if role == LARGE else ""), f"{f:.2g}",
                               pages.span([float(r["ratio_min"]) for r in here] + [float(r["ratio_max"]) for r in here]),
                               pages.span([float(r["unloading_over_loading_area"]) for r in here]),
                               pages.span([float(r["law_min"]) for r in here] + [float(r["law_max"]) for r in here]),
@@ -336,25 +338,27 @@ def outputs(ctx):
                                        "law with its branch / exact unloading h",
                                        "multi-scale: unloading / loading A_r", "multi-scale / exact unloading A_r"],
                   table)
-    # The branch, fitted, held out and at the light peaks: per spectrum, over pairs, peaks and
-    # fractions below 1.
+    # The branch, fitted, held out and on periods of 4L: per spectrum (and on 4L per peak), over
+    # pairs, peaks and fractions below 1.
     fit_table = []
-    for role in (FITTED, HELD_OUT_ROLE, LIGHT):
+    for role in (FITTED, HELD_OUT_ROLE, LARGE):
         for name in dict.fromkeys(c.name for c in s.cases if c.role == role):
-            here = [r for r in below if r["spectrum"] == name and r["role"] == role]
-            branch = [float(r["branch_over_exact_ratio"]) for r in here]
-            whole = [float(r["branch_law_over_exact_unloading"]) for r in here]
-            label = f"{role} ({d.light_period}L, x = 1e-4)" if role == LIGHT else role
-            fit_table.append([name, f"{s.given[(name, 1)].fine_hurst:.2f}", label, pages.span(branch), within(branch),
-                              pages.span(whole), within(whole)])
+            for peak in (d.light_peaks if role == LARGE else [None]):
+                here = [r for r in below if r["spectrum"] == name and r["role"] == role
+                        and (peak is None or float(r["peak_p_per_Eprime"]) == peak)]
+                branch = [float(r["branch_over_exact_ratio"]) for r in here]
+                whole = [float(r["branch_law_over_exact_unloading"]) for r in here]
+                label = role if peak is None else f"{role}, x = {peak / GRADIENT:.0e}"
+                fit_table.append([name, f"{s.given[(name, 1)].fine_hurst:.2f}", label, pages.span(branch),
+                                  within(branch), pages.span(whole), within(whole)])
     out.table("branch", ["spectrum", "H_f", "role", "branch R / exact R", "within 25 %",
                          "law with its branch / exact unloading h", "within 25 %"], fit_table)
     # What orders the spectra's hysteresis: per spectrum (sorted by H_f) what the law takes of it,
     # and the exact and the branch's ratio at the light peaks of L (P_max/H < 0.1) unloaded to a
     # tenth and a thirtieth (geometric means over the pairs and peaks).
-    light = [r for r in below if r["role"] != LIGHT and float(r["peak_over_H"]) < 0.1 and float(r["fraction"]) < 0.15]
+    light = [r for r in below if r["role"] != LARGE and float(r["peak_over_H"]) < 0.1 and float(r["fraction"]) < 0.15]
     order = []
-    for name in sorted(dict.fromkeys(c.name for c in s.cases if c.role != LIGHT),
+    for name in sorted(dict.fromkeys(c.name for c in s.cases if c.role != LARGE),
                        key=lambda n: s.given[(n, 1)].fine_hurst):
         here = [r for r in light if r["spectrum"] == name]
         given = s.given[(name, 1)]
@@ -367,7 +371,7 @@ def outputs(ctx):
     for f in FRACTIONS[1:]:
         for lo, hi, label in ((0.0, 0.1, "below 0.1"), (0.1, 0.5, "0.1 to 0.5"), (0.5, 1.0, "0.5 to 0.9")):
             here = [r for r in below if abs(float(r["fraction"]) / f - 1) < 1e-5 and lo <= float(r["peak_over_H"]) < hi]
-            for role in (FITTED, HELD_OUT_ROLE, LIGHT):
+            for role in (FITTED, HELD_OUT_ROLE, LARGE):
                 part = [float(r["branch_over_exact_ratio"]) for r in here if r["role"] == role]
                 if part:
                     depth.append([f"{f:.2g}", label, role, pages.span(part), within(part)])
