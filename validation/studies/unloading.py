@@ -259,6 +259,19 @@ def fit(ctx, base=None):
     return out
 
 
+# The branch's H_f terms (docs/theory.md §5.7c): left out, the same fit of the rest.
+WITHOUT_HURST = {"unloadingTail": 0.0, "unloadingFlowHurst": 0.0}
+
+
+def fit_without_hurst(ctx, pts):
+    """The constants `fit` gives with the H_f terms left out (WITHOUT_HURST), on the fitted points of
+    pts (Ratios): what H_f buys."""
+    rc = ctx.rc()
+    c = fitting.constants(rc, {**{n: v for n, (v, _) in FIXED.items()}, **START, **WITHOUT_HURST})
+    free = [n for n in FREE if n not in WITHOUT_HURST and n != "unloadingHurstPivot"]
+    return fitting.minimax(rc, c, free, pts.where(lambda r: r["role"] == FITTED), valid, top=4, miss=misses)
+
+
 def law_ratios(s, case, peak, c=None):
     """The ratio the default law applies at the FRACTIONS of the peak p/E' (branch)."""
     rc = s.ctx.rc()
@@ -319,7 +332,7 @@ def outputs(ctx):
     for regime in d.regimes:
         table = []
         groups = sorted({(c.role, peak) for c in s.cases if c.regime == regime and c.role in (FITTED, LARGE)
-                         for peak in c.peaks}, key=lambda g: g[1])
+                         for peak in c.peaks}, key=lambda g: (g[1], g[0] != FITTED))
         for role, peak in groups:
             for f in FRACTIONS[1:]:
                 here = [r for r in below if r["regime"] == regime and r["role"] == role
@@ -346,11 +359,11 @@ def outputs(ctx):
             for peak in (d.light_peaks if role == LARGE else [None]):
                 here = [r for r in below if r["spectrum"] == name and r["role"] == role
                         and (peak is None or float(r["peak_p_per_Eprime"]) == peak)]
-                branch = [float(r["branch_over_exact_ratio"]) for r in here]
+                ours = [float(r["branch_over_exact_ratio"]) for r in here]
                 whole = [float(r["branch_law_over_exact_unloading"]) for r in here]
                 label = role if peak is None else f"{role}, x = {peak / GRADIENT:.0e}"
-                fit_table.append([name, f"{s.given[(name, 1)].fine_hurst:.2f}", label, pages.span(branch),
-                                  within(branch), pages.span(whole), within(whole)])
+                fit_table.append([name, f"{s.given[(name, 1)].fine_hurst:.2f}", label, pages.span(ours),
+                                  within(ours), pages.span(whole), within(whole)])
     out.table("branch", ["spectrum", "H_f", "role", "branch R / exact R", "within 25 %",
                          "law with its branch / exact unloading h", "within 25 %"], fit_table)
     # What orders the spectra's hysteresis: per spectrum (sorted by H_f) what the law takes of it,
@@ -366,6 +379,18 @@ def outputs(ctx):
                       f"{geometric_mean([float(r['unloading_over_loading_h']) for r in here]):.2f}",
                       f"{geometric_mean([float(r['branch_ratio']) for r in here]):.2f}", len(here)])
     out.table("hurst", ["spectrum", "role", "H_f", "W", "s1", "exact R", "branch R", "points"], order)
+    # What H_f buys: the branch over the exact ratio per role, with the law's constants and with
+    # the H_f terms left out and the rest refitted.
+    pts = ratio_points(s)
+    rc = ctx.rc()
+    law, without = branch(rc, rc.FittedElastoPlasticConstants(), pts), branch(rc, fit_without_hurst(ctx, pts), pts)
+    terms = []
+    for role in (FITTED, HELD_OUT_ROLE, LARGE):
+        keep = numpy.array([r["role"] == role for r in pts.rows])
+        q, q0 = law[keep] / pts.exact[keep], without[keep] / pts.exact[keep]
+        terms.append([role, pages.span(q), within(q), pages.span(q0), within(q0)])
+    out.table("hurst-terms", ["spectra", "branch R / exact R", "within 25 %", "without H_f (refitted)",
+                              "within 25 %"], terms)
     # The branch by how far below the peak and how near H it was (every spectrum).
     depth = []
     for f in FRACTIONS[1:]:

@@ -141,7 +141,7 @@ private:
     double s_;
     std::optional<double> s1_; // the spectrum's first level's share; none without a spectrum: no light-load factor
     // The Hurst exponent of the spectrum's finest octave; none without a spectrum (or fewer than
-    // three levels there): no deep-unloading term.
+    // three levels there): the unloading branch takes H_0, where neither of its terms acts.
     std::optional<double> Hf_;
 };
 

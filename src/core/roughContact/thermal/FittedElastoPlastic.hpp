@@ -72,7 +72,7 @@ double fittedUnloadingPlasticShare(double plasticityIndex, const FittedElastoPla
 /// the law's roughness), the reduced modulus E' [Pa], the cap H [Pa] and the Hurst exponent H_f of
 /// the combined spectrum's finest octave (finite; fineHurstExponent; none: H_0, where neither of
 /// its terms acts). 1 at P >= peak (loading) and without a cap; P_max/H held at
-/// unloadingPeakHeaviest (0.9) above it, H_f within [unloadingHurstLeast, unloadingHurstMost]
+/// unloadingPeakHeaviest (0.77) above it, H_f within [unloadingHurstLeast, unloadingHurstMost]
 /// (0.3 and 1, the training spectra's) and s at unloadingDeepest (1/30) in the deep-unloading
 /// term. ParameterError naming the entry on bad input.
 double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, double Eprime, std::optional<double> H,
