@@ -10,7 +10,8 @@ up to 0.9 H), then unloaded to a half, a fifth, a tenth and a thirtieth of it (t
 unloaded elastically; docs/theory.md §7.3). The loading curve is solved at the same pressures.
 blindSpectra's four shapes are solved the same way on three pairs and seeds 1-6: held out; and
 the light end, peaks p/E' = 1e-5 and 1e-4 (x = 1e-4 and 1e-3), on true periods of 4L (grid 4N,
-seeds 1-3) for steel and copper on the engineering range's spectra: not fitted either. The default law's
+seeds 1-3) for steel and copper on the engineering range's spectra, and at x = 1e-4 (seeds 1-2)
+on blindSpectra's shapes: not fitted either. The default law's
 unloading branch (docs/theory.md §5.7c) multiplies its loading h by a ratio R; `fit` fits R's
 constants to the exact unloading over loading h of the six training spectra (the core's
 fittedUnloadingFactor evaluated, never a copy), and the fittedElastoPlastic study writes them
@@ -62,7 +63,7 @@ SUMMARY = ("# The exact unloading of a capped joint (written by validation/studi
 
 
 class Case:
-    """A spectrum on a regime: its seeds, its role (FITTED, HELD_OUT_ROLE or LARGE), the period kL it is
+    """A spectrum on a regime: its seeds, its role (one of ROLES), the period kL it is
     solved on (grid kN) and its peaks p/E'."""
 
     def __init__(self, name, regime, seeds, role, k, peaks):
@@ -73,7 +74,8 @@ class Case:
         return self.name if self.k == 1 else f"{self.name} ({self.k}L)"
 
 
-FITTED, HELD_OUT_ROLE, LARGE = "fitted", "held out", "period 4L"
+FITTED, HELD_OUT_ROLE, LARGE, LARGE_HELD_OUT = "fitted", "held out", "period 4L", "held out, period 4L"
+ROLES = (FITTED, HELD_OUT_ROLE, LARGE, LARGE_HELD_OUT)
 
 
 class Design:
@@ -102,8 +104,8 @@ class Design:
     def cases(self, ctx):
         """[Case]: the training spectra on every capped pair and seed (fitted); the held-out ones
         (blindSpectra's four shapes) on three pairs and every seed; the engineering range's
-        spectra's two lightest peaks on periods of 4L (three seeds), not fitted. Peaks up to 0.9 H
-        only."""
+        spectra's two lightest peaks on periods of 4L (three seeds), not fitted, and the held-out
+        spectra's lightest (two seeds). Peaks up to 0.9 H only."""
         def peaks(regime, of):
             pair = materials.regime_pair(ctx, regime)
             return [pe for pe in of if pe * pair.Eprime <= 0.9 * pair.hardness]
@@ -112,7 +114,10 @@ class Design:
                 [Case(name, regime, self.held_out_seeds, HELD_OUT_ROLE, 1, peaks(regime, self.peaks))
                  for name, _, _ in self.held_out for regime in self.held_out_regimes] +
                 [Case(name, regime, self.light_seeds, LARGE, self.light_period, peaks(regime, self.light_peaks))
-                 for name in self.light_spectra for regime in self.light_regimes])
+                 for name in self.light_spectra for regime in self.light_regimes] +
+                [Case(name, regime, self.light_seeds[:2], LARGE_HELD_OUT, self.light_period,
+                      peaks(regime, self.light_peaks[:1]))
+                 for name, _, _ in self.held_out for regime in self.light_regimes])
 
 
 class Study:
@@ -354,9 +359,10 @@ def outputs(ctx):
     # The branch, fitted, held out and on periods of 4L: per spectrum (and on 4L per peak), over
     # pairs, peaks and fractions below 1.
     fit_table = []
-    for role in (FITTED, HELD_OUT_ROLE, LARGE):
+    for role in ROLES:
         for name in dict.fromkeys(c.name for c in s.cases if c.role == role):
-            for peak in (d.light_peaks if role == LARGE else [None]):
+            for peak in (sorted({p for c in s.cases if c.role == role for p in c.peaks}) if role in (LARGE, LARGE_HELD_OUT)
+                         else [None]):
                 here = [r for r in below if r["spectrum"] == name and r["role"] == role
                         and (peak is None or float(r["peak_p_per_Eprime"]) == peak)]
                 ours = [float(r["branch_over_exact_ratio"]) for r in here]
@@ -369,9 +375,10 @@ def outputs(ctx):
     # What orders the spectra's hysteresis: per spectrum (sorted by H_f) what the law takes of it,
     # and the exact and the branch's ratio at the light peaks of L (P_max/H < 0.1) unloaded to a
     # tenth and a thirtieth (geometric means over the pairs and peaks).
-    light = [r for r in below if r["role"] != LARGE and float(r["peak_over_H"]) < 0.1 and float(r["fraction"]) < 0.15]
+    light = [r for r in below if r["role"] in (FITTED, HELD_OUT_ROLE) and float(r["peak_over_H"]) < 0.1
+             and float(r["fraction"]) < 0.15]
     order = []
-    for name in sorted(dict.fromkeys(c.name for c in s.cases if c.role != LARGE),
+    for name in sorted(dict.fromkeys(c.name for c in s.cases if c.role in (FITTED, HELD_OUT_ROLE)),
                        key=lambda n: s.given[(n, 1)].fine_hurst):
         here = [r for r in light if r["spectrum"] == name]
         given = s.given[(name, 1)]
@@ -385,7 +392,7 @@ def outputs(ctx):
     rc = ctx.rc()
     law, without = branch(rc, rc.FittedElastoPlasticConstants(), pts), branch(rc, fit_without_hurst(ctx, pts), pts)
     terms = []
-    for role in (FITTED, HELD_OUT_ROLE, LARGE):
+    for role in ROLES:
         keep = numpy.array([r["role"] == role for r in pts.rows])
         q, q0 = law[keep] / pts.exact[keep], without[keep] / pts.exact[keep]
         terms.append([role, pages.span(q), within(q), pages.span(q0), within(q0)])
@@ -396,7 +403,7 @@ def outputs(ctx):
     for f in FRACTIONS[1:]:
         for lo, hi, label in ((0.0, 0.1, "below 0.1"), (0.1, 0.5, "0.1 to 0.5"), (0.5, 1.0, "0.5 to 0.9")):
             here = [r for r in below if abs(float(r["fraction"]) / f - 1) < 1e-5 and lo <= float(r["peak_over_H"]) < hi]
-            for role in (FITTED, HELD_OUT_ROLE, LARGE):
+            for role in ROLES:
                 part = [float(r["branch_over_exact_ratio"]) for r in here if r["role"] == role]
                 if part:
                     depth.append([f"{f:.2g}", label, role, pages.span(part), within(part)])
