@@ -486,7 +486,8 @@ TEST(FittedElastoPlastic, TheUnloadingBranchIsItsClosedForm)
     // s = P/P_max, c = -ln(1 - P_max/H), Phi = 1/(1 + (gamma/gamma_M)^2), gamma = H/(E' m
     // sqrt(pi/2)) (FittedElastoPlastic.hpp), computed here from the constants, with H_f held
     // within [0.3, 1] (none: H_0) and s at 1/30 below it in the last term (to the constants
-    // file's four decimals); 1 on loading and without a cap, bit for bit.
+    // file's four decimals); 1 on loading and without a cap, bit for bit. 1e-13 relative: the
+    // same numbers through exp/pow here and log1p/exp/log there, ln R up to about 3.
     const FittedElastoPlasticConstants c;
     const double H = 1.42e9;
     const double m = rough.meanAbsoluteSlope;
@@ -662,7 +663,8 @@ TEST(FittedElastoPlastic, TheUnloadingBranchRefusesBadInputAndIsTheLaws)
     const auto law = makeConductanceLaw("fittedElastoPlastic", in);
     EXPECT_TRUE(law->unloads());
     EXPECT_NEAR(law->unloadingFactor(1e6, 1e7), fittedUnloadingFactor(1e6, 1e7, m, Ep, 1.42e9), 1e-14);
-    // A spectrum with a finest octave: the law takes its H_f (0.9 for this power law).
+    // A spectrum with a finest octave: the law takes its H_f (0.9 for this power law; its
+    // least-squares slope is 0.9 to round-off, hence 1e-12 on R).
     const Spectrum selfAffine = Spectrum::powerLaw(1e-9, 1.4, 1e3, 64e3);
     in.spectrum = &selfAffine;
     const auto fine = makeConductanceLaw("fittedElastoPlastic", in);

@@ -130,9 +130,8 @@ std::string InterfaceRegime::describeSurface() const
            << " at 1e-4; from one profile a noisy number: docs/validation/fittedElastoPlastic.md)";
     }
     if (fineHurst && hardness && law == "fittedElastoPlastic") {
-        const FittedElastoPlasticConstants c;
         os << ", finest octave's Hurst exponent H_f " << *fineHurst << " (";
-        const double held = std::min(std::max(*fineHurst, c.unloadingHurstLeast), c.unloadingHurstMost);
+        const double held = fittedUnloadingHurst(*fineHurst);
         if (held != *fineHurst) {
             os << "held at " << held << ", the training spectra's range; ";
         }

@@ -201,6 +201,11 @@ double fittedUnloadingPlasticShare(double plasticityIndex, const FittedElastoPla
     return inverse * inverse / (1.0 + inverse * inverse);
 }
 
+double fittedUnloadingHurst(double fineHurst, const FittedElastoPlasticConstants& c)
+{
+    return std::min(std::max(fineHurst, c.unloadingHurstLeast), c.unloadingHurstMost);
+}
+
 double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, double Eprime, std::optional<double> H,
                              std::optional<double> fineHurst, const FittedElastoPlasticConstants& c)
 {
@@ -228,9 +233,7 @@ double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, do
     const double gamma = *H / (Eprime * meanAbsoluteSlope * std::sqrt(0.5 * pi));
     const double flow = -std::log1p(-std::min(peak / *H, c.unloadingPeakHeaviest));
     // H_f held within the training spectra's; none: H_0, where neither of its terms acts.
-    const double above = fineHurst ? std::min(std::max(*fineHurst, c.unloadingHurstLeast), c.unloadingHurstMost) -
-                                         c.unloadingHurstPivot
-                                   : 0.0;
+    const double above = fineHurst ? fittedUnloadingHurst(*fineHurst, c) - c.unloadingHurstPivot : 0.0;
     const double plateau = c.unloadingBase * fittedUnloadingPlasticShare(gamma, c) +
                            c.unloadingFlow * flow * (1.0 + c.unloadingFlowHurst * above);
     const double s = P / peak;

@@ -66,6 +66,10 @@ double gaussianPlasticSpotConductance(double a);
 /// plasticity index gamma = H/(E' m sqrt(pi/2)) (finite, >= 0) keeps; 1 at 0, 1/2 at gamma_M.
 double fittedUnloadingPlasticShare(double plasticityIndex, const FittedElastoPlasticConstants& c = {});
 
+/// H_f as the unloading branch takes it: held within [unloadingHurstLeast, unloadingHurstMost]
+/// (0.3 and 1, the training spectra's; no check).
+double fittedUnloadingHurst(double fineHurst, const FittedElastoPlasticConstants& c = {});
+
 /// R of the header: the unloading branch's factor on the law's loading h_c/k_s at the nominal
 /// pressure P [Pa] (finite, >= 0) of a joint that has carried the pressure peak [Pa] (finite,
 /// >= 0), for the combined surfaces' mean absolute slope m (within the project's slope range, as
