@@ -234,11 +234,16 @@ double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, do
     const double flow = -std::log1p(-std::min(peak / *H, c.unloadingPeakHeaviest));
     // H_f held within the training spectra's; none: H_0, where neither of its terms acts.
     const double above = fineHurst ? fittedUnloadingHurst(*fineHurst, c) - c.unloadingHurstPivot : 0.0;
-    const double plateau = c.unloadingBase * fittedUnloadingPlasticShare(gamma, c) +
+    const double plastic = fittedUnloadingPlasticShare(gamma, c);
+    const double plateau = c.unloadingBase * plastic +
                            c.unloadingFlow * flow * (1.0 + c.unloadingFlowHurst * above);
     const double s = P / peak;
-    // The deep unloading's power of 1/s, s held at the deepest fitted.
-    const double tail = c.unloadingTail * std::max(0.0, above);
+    // The deep unloading's power of 1/s, s held at the deepest fitted: the steep fine scales' or,
+    // at a light peak, that of its isolated plastic spots (at most e_1, the Hertzian summit's).
+    // (A_c H/P_max overflows to +inf for a denormal peak: e_1.)
+    const double crowding = std::max(0.0, std::log(c.unloadingCrowded * *H / peak));
+    const double isolated = c.unloadingSpread > 0.0 ? std::min(c.unloadingIsolated, c.unloadingSpread * crowding) : 0.0;
+    const double tail = std::max(c.unloadingTail * std::max(0.0, above), isolated * plastic);
     return std::exp(plateau * (1.0 - std::pow(s, c.unloadingRise)) - tail * std::log(std::max(s, c.unloadingDeepest)));
 }
 

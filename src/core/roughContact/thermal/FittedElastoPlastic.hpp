@@ -12,10 +12,12 @@
 //
 // and, below the heaviest pressure P_max a joint has carried, its unloading branch (§5.7c):
 // min(h_c/k_s(P) R(P/P_max), h_c/k_s(P_max)) with
-//   ln R = (l_0 Phi(gamma) + l_1 c (1 + u (H_f - H_0)))(1 - s^q) + t max(0, H_f - H_0) ln(1/s),
+//   ln R = (l_0 Phi(gamma) + l_1 c (1 + u (H_f - H_0)))(1 - s^q) + e ln(1/s),
+//   e = max(t max(0, H_f - H_0), Phi(gamma) min(e_1, v max(0, ln(A_c H/P_max)))),
 // s = P/P_max, c = -ln(1 - P_max/H), Phi(gamma) = 1/(1 + (gamma/gamma_M)^2), gamma = H/(E' m
-// sqrt(pi/2)) Mikic's plasticity index and H_f the Hurst exponent of the spectrum's finest octave
-// (fineHurstExponent) (R = 1 without a cap: an elastic joint retraces its loading curve)
+// sqrt(pi/2)) Mikic's plasticity index, H_f the Hurst exponent of the spectrum's finest octave
+// (fineHurstExponent) and e_1 = 1/6 an isolated plastic summit's (R = 1 without a cap: an
+// elastic joint retraces its loading curve)
 //
 // with x = P/(sqrt(pi) E' m) (= P/(E' h') for Gaussian slopes), sigma and m the rms height and
 // mean absolute slope, W the bandwidth ratio and s1 the first level's share of the line-scan
@@ -76,9 +78,10 @@ double fittedUnloadingHurst(double fineHurst, const FittedElastoPlasticConstants
 /// the law's roughness), the reduced modulus E' [Pa], the cap H [Pa] and the Hurst exponent H_f of
 /// the combined spectrum's finest octave (finite; fineHurstExponent; none: H_0, where neither of
 /// its terms acts). 1 at P >= peak (loading) and without a cap; P_max/H held at
-/// unloadingPeakHeaviest (0.77) above it, H_f within [unloadingHurstLeast, unloadingHurstMost]
-/// (0.3 and 1, the training spectra's) and s at unloadingDeepest (1/30) in the deep-unloading
-/// term. ParameterError naming the entry on bad input.
+/// unloadingPeakHeaviest (0.77) above it in c (not in the light-peak term), H_f within
+/// [unloadingHurstLeast, unloadingHurstMost] (0.3 and 1, the training spectra's) and s at
+/// unloadingDeepest (1/30) in the deep-unloading term. ParameterError naming the entry on bad
+/// input.
 double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, double Eprime, std::optional<double> H,
                              std::optional<double> fineHurst = std::nullopt,
                              const FittedElastoPlasticConstants& c = {});
