@@ -83,7 +83,8 @@ class Case:
 
 FITTED, HELD_OUT_ROLE, LARGE, LARGE_HELD_OUT = "fitted", "held out", "fitted, period 4L", "held out, period 4L"
 LIGHTEST = "lightest peak, period 4L"  # hardened steel at x = 1e-4: P_max/H below every fitted peak's
-ROLES = (FITTED, HELD_OUT_ROLE, LARGE, LARGE_HELD_OUT, LIGHTEST)
+PERIOD_CHECK = "period check, 8L"  # where periods of 4L keep less than periods of L: is 4L large enough?
+ROLES = (FITTED, HELD_OUT_ROLE, LARGE, LARGE_HELD_OUT, LIGHTEST, PERIOD_CHECK)
 TRAINING = (FITTED, LARGE)  # the roles the branch is fitted on
 
 
@@ -95,6 +96,7 @@ class Design:
             self.held_out, self.held_out_regimes = HELD_OUT[:1], ["steelSteel"]
             self.light_regimes, self.light_period = [], 4
             self.light_seeds, self.held_out_light_seeds, self.lightest_regimes = {}, {}, []
+            self.period_check = []
         else:
             self.N, self.seeds, self.peaks = 512, [1, 2, 3, 4, 5, 6], [1e-4, 1e-3, 1e-2]
             self.regimes = [key for key, _, pair in materials.REGIMES if pair is not None]
@@ -115,12 +117,16 @@ class Design:
             self.held_out_light_seeds = {1e-5: self.seeds[:4], 1e-4: self.seeds[:3]}
             # Hardened steel at x = 1e-4: P_max/H = 3e-4, below the fitted peaks' least (8e-4).
             self.lightest_regimes = ["hardSteel"]
+            # Copper at x = 1e-3 on periods of 8L (grid 8N, seeds 1-3) for the two spectra whose
+            # periods of 4L keep least against their periods of L.
+            self.period_check = [("selfAffine05", "copperCopper", 1e-4), ("hurst04rolloff1", "copperCopper", 1e-4)]
 
     def cases(self, ctx):
         """[Case]: the training spectra on every capped pair and seed (fitted); the held-out ones
-        (blindSpectra's four shapes) on three pairs and every seed; the engineering range's
-        spectra's two lightest peaks on periods of 4L (three seeds), not fitted, and the held-out
-        spectra's lightest (two seeds). Peaks up to 0.9 H only."""
+        (blindSpectra's four shapes) on three pairs and every seed; the two lightest peaks on
+        periods of 4L for steel and copper, on the engineering range's spectra (fitted) and on the
+        held-out ones; hardened steel's lightest peak on all seven (4L); the period check on 8L.
+        Peaks up to 0.9 H only."""
         def peaks(regime, of):
             pair = materials.regime_pair(ctx, regime)
             return [pe for pe in of if pe * pair.Eprime <= 0.9 * pair.hardness]
@@ -135,7 +141,9 @@ class Design:
                  for name, _, _ in self.held_out for regime in self.light_regimes for peak in self.light_peaks] +
                 [Case(name, regime, self.light_seeds[1e-4], LIGHTEST, self.light_period,
                       peaks(regime, self.light_peaks[:1]))
-                 for name in self.light_spectra + [n for n, _, _ in self.held_out] for regime in self.lightest_regimes])
+                 for name in self.light_spectra + [n for n, _, _ in self.held_out] for regime in self.lightest_regimes] +
+                [Case(name, regime, self.seeds[:3], PERIOD_CHECK, 8, peaks(regime, [peak]))
+                 for name, regime, peak in self.period_check])
 
 
 class Study:
@@ -351,7 +359,7 @@ def period_label(s, regime, role, peak):
     """The ratio tables' note on a row of periods of 4L: their seeds, and the spectra if not the
     training ones ("" on periods of L)."""
     cases = [c for c in s.cases if c.regime == regime and c.role == role and peak in c.peaks]
-    if role not in (LARGE, LIGHTEST):
+    if role not in (LARGE, LIGHTEST, PERIOD_CHECK):
         return ""
     seeds = sorted({seed for c in cases for seed in c.seeds})
     spectra = f", {len(cases)} spectra" if role == LIGHTEST else ""
@@ -391,8 +399,8 @@ def outputs(ctx):
     fit_table = []
     for role in ROLES:
         for name in dict.fromkeys(c.name for c in s.cases if c.role == role):
-            for peak in (sorted({p for c in s.cases if c.role == role for p in c.peaks}) if role in (LARGE, LARGE_HELD_OUT, LIGHTEST)
-                         else [None]):
+            per_peak = role in (LARGE, LARGE_HELD_OUT, LIGHTEST, PERIOD_CHECK)
+            for peak in (sorted({p for c in s.cases if c.role == role for p in c.peaks}) if per_peak else [None]):
                 here = [r for r in below if r["spectrum"] == name and r["role"] == role
                         and (peak is None or float(r["peak_p_per_Eprime"]) == peak)]
                 ours = [float(r["branch_over_exact_ratio"]) for r in here]
@@ -402,6 +410,20 @@ def outputs(ctx):
                                   within(ours), pages.span(whole), within(whole)])
     out.table("branch", ["spectrum", "H_f", "role", "branch R / exact R", "within 25 %",
                          "law with its branch / exact unloading h", "within 25 %"], fit_table)
+    # The period check: the exact ratio on periods of L, 4L and 8L (geometric mean over the seeds,
+    # their range) and the branch's.
+    periods = []
+    for name, regime, peak in d.period_check:
+        label = next(lab for key, lab, _ in materials.REGIMES if key == regime).replace("capped: ", "")
+        for f in FRACTIONS[1:]:
+            here = {int(r["period_L"]): r for r in below if r["spectrum"] == name and r["regime"] == regime
+                    and float(r["peak_p_per_Eprime"]) == peak and abs(float(r["fraction"]) / f - 1) < 1e-5}
+            periods.append([name, label, f"{peak / GRADIENT:.0e}", f"{f:.2g}"] +
+                           [f"{float(here[k]['unloading_over_loading_h']):.2f} "
+                            f"({float(here[k]['ratio_min']):.2f}-{float(here[k]['ratio_max']):.2f})" for k in (1, 4, 8)] +
+                           [f"{float(here[8]['branch_ratio']):.2f}"])
+    out.table("periods", ["spectrum", "pair", "peak x", "P/P_max", "exact R, period L (seeds 1-6)",
+                          "4L (seeds 1-3)", "8L (seeds 1-3)", "branch R"], periods)
     # What orders the spectra's hysteresis: per spectrum (sorted by H_f) what the law takes of it,
     # and the exact and the branch's ratio at the light peaks of L (P_max/H < 0.1) unloaded to a
     # tenth and a thirtieth (geometric means over the pairs and peaks).
