@@ -72,10 +72,6 @@ int runBoundaryElement(const Options& o)
     std::optional<double> peak;
     if (o.unloadFrom) {
         requireUnloadingPeak(*o.unloadFrom, bo.hardness, "--unload-from", "--hardness or --hardness-from-yield");
-        if (gapInputs) {
-            throw ParameterError("--unload-from", "the gap's columns (--gas, --emissivity) of an unloaded joint are "
-                                                  "not built yet: leave the gap out, or --unload-from");
-        }
         peak = *o.unloadFrom / materials.reducedModulus();
     }
     if (!o.pressureMap.empty()) {
@@ -140,6 +136,7 @@ int runBoundaryElement(const Options& o)
     const std::optional<double> ks = harmonicConductivityOf(o, true);
     const double Ep = materials.reducedModulus();
     std::optional<InterfaceGap> gap;
+    std::optional<InterfaceGap> unloadingGap; // the unloaded joint's: Y its own mean separation
     if (gapInputs) {
         // The gap's Y is the model's mean separation (the separation column), as the condition's
         // boundary-element table gives it: the solved point's at each load (another solve only
@@ -162,12 +159,25 @@ int runBoundaryElement(const Options& o)
             return model.solve(P / Ep).meanSeparation;
         };
         gap.emplace(interfaceGapOf(o, *gapInputs, materials, separation, firstTouch));
+        if (peak) {
+            // Every positive load was solved on the unloaded joint: its Y at the row's P.
+            const auto unloadedSeparation = [&](double P) {
+                for (std::size_t i = 0; i < loads.size(); ++i) {
+                    if (loads[i] * Ep == P) {
+                        return unloading[i].meanSeparation;
+                    }
+                }
+                return model.loadPath(*peak, {P / Ep}).front().meanSeparation;
+            };
+            unloadingGap.emplace(interfaceGapOf(o, *gapInputs, materials, unloadedSeparation, firstTouch));
+        }
     }
     out << (pressures.empty() ? "" : "nominal_pressure,")
         << "nominal_pressure_per_Eprime,area_fraction,contact_pressure_per_Eprime,separation,h_per_k,"
         << (ks ? "h," : "") << (gap ? "gap_separation,h_gas,h_radiation," : "") << (gap && ks ? "h_total," : "")
         << (peak ? "unloading_area_fraction,unloading_separation,unloading_h_per_k," : "")
-        << (peak && ks ? "unloading_h," : "") << "iterations,residual"
+        << (peak && ks ? "unloading_h," : "") << (peak && gap ? "unloading_h_gas,unloading_h_radiation," : "")
+        << (peak && gap && ks ? "unloading_h_total," : "") << "iterations,residual"
         << (peak ? ",unloading_iterations,unloading_residual" : "") << "\n";
     for (std::size_t i = 0; i < points.size(); ++i) {
         const BoundaryElementPoint& p = points[i];
@@ -194,6 +204,15 @@ int runBoundaryElement(const Options& o)
                 << unloading[i].conductancePerConductivity << ',';
             if (ks) {
                 out << *ks * unloading[i].conductancePerConductivity << ',';
+            }
+            if (gap) {
+                // The unloaded joint's gap at its own separation (the column unloading_separation).
+                std::ostringstream cells; // ",Y,h_g,h_r[,h_total]": all but Y
+                cells.precision(out.precision());
+                writeGapCells(cells, *unloadingGap, *gapInputs, loads[i] * Ep, unloading[i].areaFraction >= 1.0, ks,
+                              unloading[i].conductancePerConductivity);
+                const std::string c = cells.str();
+                out << c.substr(c.find(',', 1) + 1) << ',';
             }
         }
         out << p.iterations << ',' << p.residual;

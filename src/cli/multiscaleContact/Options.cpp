@@ -157,10 +157,12 @@ void addOptions(CLI::App& app, Options& o)
     withUnits(app.add_option("--unload-from", o.unloadFrom,
                              "the peak nominal pressure PMAX [Pa] (or with a unit: 50MPa) the joint has carried. "
                              "boundaryElement with a cap: the output gains the columns unloading_area_fraction, "
-                             "unloading_separation, unloading_h_per_k (and unloading_h), unloading_iterations and "
+                             "unloading_separation, unloading_h_per_k (and unloading_h; with the gap "
+                             "unloading_h_gas, unloading_h_radiation, unloading_h_total), unloading_iterations and "
                              "unloading_residual, the joint unloaded from PMAX (loaded on from it above PMAX); a "
                              "multi-scale model: unloading_area_fraction, and with a conductance the law's "
-                             "unloading branch unloading_h_per_k (and unloading_h; fittedElastoPlastic with a cap)"),
+                             "unloading branch unloading_h_per_k (and unloading_h, unloading_h_total with the gap; "
+                             "fittedElastoPlastic with a cap)"),
               roughContact::Quantity::pressure);
     app.add_option("--pressure-map", o.pressureMap,
                    "boundaryElement: write the contact pressure [Pa] at the highest load to this file, as a "

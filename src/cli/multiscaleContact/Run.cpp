@@ -175,12 +175,9 @@ int runCurve(const Options& o)
             throw ParameterError("--unload-from", "unloads --model boundaryElement (with a cap) and the multi-scale "
                                                   "models; " + o.model + " has no unloading curve");
         }
-        if (o.levels || gapInputs) {
-            throw ParameterError("--unload-from", std::string("of a multi-scale model gives its unloading area and "
-                                                              "the law's unloading conductance: ") +
-                                                      (o.levels ? "leave out --levels"
-                                                                : "the gap has no unloading branch (leave out the gap "
-                                                                  "options)"));
+        if (o.levels) {
+            throw ParameterError("--unload-from", "of a multi-scale model gives its unloading area and the law's "
+                                                  "unloading conductance: leave out --levels");
         }
         peakLoad = checkLoad(requirePositive("--unload-from", *o.unloadFrom) / materials.reducedModulus());
     }
@@ -352,7 +349,8 @@ int runCurve(const Options& o)
         out << ",h_per_k_" << name;
     }
     out << (o.unloadFrom ? ",unloading_area_fraction" : "") << (o.unloadFrom && conductance ? ",unloading_h_per_k" : "")
-        << (o.unloadFrom && conductance && ks ? ",unloading_h" : "") << '\n';
+        << (o.unloadFrom && conductance && ks ? ",unloading_h" : "") << (o.unloadFrom && gap && ks ? ",unloading_h_total" : "")
+        << '\n';
     for (std::size_t i = 0; i < loads.size(); ++i) {
         const double load = loads[i];
         if (!pressures.empty()) {
@@ -417,6 +415,12 @@ int runCurve(const Options& o)
                 out << ',' << hk;
                 if (ks) {
                     out << ',' << *ks * hk;
+                }
+                if (gap && ks) {
+                    // The gap as the condition takes it on a law's unloading branch: at the
+                    // separation of the moment (the row's h_gas, h_radiation).
+                    const GapRow g = gapRowOf(*gap, *gapInputs, load * Ep, model->areaFraction(load) >= 1.0);
+                    out << ',' << *ks * hk + g.h.gas + g.h.radiative;
                 }
             }
         }

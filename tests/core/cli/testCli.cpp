@@ -630,14 +630,12 @@ TEST(Cli, UnloadFromAddsTheJointThatCarriedThePeak)
             EXPECT_NEAR(value("unloading_h_per_k"), value("h_per_k"), 1e-3 * value("h_per_k"));
         }
     }
-    // Its errors: no cap, the peak at or above it, the gap, a model without an unloading curve,
+    // Its errors: no cap, the peak at or above it, a model without an unloading curve, --levels,
     // --check.
     expectError("--profile '" + standin + "' --synthesize 32 --model boundaryElement --Eprime 2e11 --loads 1e-4 "
                 "--unload-from 1MPa",
                 {"--unload-from", "--hardness"});
     expectError(p + " --hardness-from-yield --loads 1e-4 --unload-from 1GPa", {"--unload-from", "below the cap"});
-    expectError(p + " --hardness-from-yield --loads 1e-4 --unload-from 1MPa --gas air --gas-pressure 1e5 --temperature 300",
-                {"--unload-from", "gap"});
     expectError("--profile '" + standin + "' --model persson" + steel + " --loads 1e-4 --unload-from 1MPa",
                 {"--unload-from", "persson has no unloading curve"});
     expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --conductance-law mikic --loads 1e-4 "
@@ -646,12 +644,49 @@ TEST(Cli, UnloadFromAddsTheJointThatCarriedThePeak)
     expectError("--profile '" + standin + "' --model hertz --E 179.52e9 --nu 0.32 --conductance --loads 1e-4 "
                 "--unload-from 1MPa",
                 {"--unload-from", "fittedElastoPlastic has no unloading branch without a cap"});
-    expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --conductance --loads 1e-4 "
-                "--unload-from 1MPa --gas air --gas-pressure 1e5 --temperature 300",
-                {"--unload-from", "the gap has no unloading branch"});
+    expectError("--profile '" + standin + "' --model jacksonGreen" + steel + " --loads 1e-4 --levels "
+                "--unload-from 1MPa",
+                {"--unload-from", "--levels"});
     expectError("--profile '" + standin + "' --model hertz --E 179.52e9 --nu 0.32 --check --loads 1e-4 "
                 "--unload-from 1MPa",
                 {"--unload-from", "hardness"});
+}
+
+TEST(Cli, UnloadFromGivesTheUnloadedJointsGap)
+{
+    // With a gas and radiation the unloaded joint's gap is taken at its own mean separation
+    // (unloading_separation): the same gap columns (h_gas, h_radiation) as the loading curve's at
+    // that separation, so equal at the peak; below it the flattened summits sit closer, the gas
+    // conducts more, and unloading_h_total is their sum with unloading_h. The rows' own load curve
+    // at each row's unloading separation is the reference: the same run with --gap-width Y at
+    // load 0 gives the gap at Y (InterfaceGap::conductances depends on Y and T alone).
+    const std::string p = "--profile '" + standin + "' --synthesize 64,7 --model boundaryElement" + steel +
+                          " --hardness-from-yield --k1 50 --k2 50 --gas air --gas-pressure 1e5 --emissivity 0.3,0.3 "
+                          "--temperature 400,300";
+    const CommandResult r = run(p + " --pressures 20MPa,60MPa,200MPa --unload-from 200MPa");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Csv csv = parseCsv(r.out);
+    ASSERT_EQ(csv.rows.size(), 3U);
+    for (std::size_t i = 0; i < 3; ++i) {
+        SCOPED_TRACE(i);
+        const auto value = [&](const char* name) { return std::stod(csv.rows[i].at(column(csv, name))); };
+        EXPECT_NEAR(value("unloading_h_total"),
+                    value("unloading_h") + value("unloading_h_gas") + value("unloading_h_radiation"),
+                    1e-9 * value("unloading_h_total"));
+        EXPECT_EQ(csv.rows[i].at(column(csv, "unloading_h_radiation")), csv.rows[i].at(column(csv, "h_radiation")));
+        if (i < 2) {
+            EXPECT_LT(value("unloading_separation"), value("separation"));
+            EXPECT_GT(value("unloading_h_gas"), value("h_gas"));
+        } else {
+            EXPECT_NEAR(value("unloading_h_gas"), value("h_gas"), 1e-3 * value("h_gas"));
+        }
+        // The gas at the unloaded separation Y: the gap of faces apart by Y (load 0, --gap-width).
+        const std::string Y = csv.rows[i].at(column(csv, "unloading_separation"));
+        const CommandResult apart = run(p + " --loads 0 --gap-width " + Y);
+        ASSERT_EQ(apart.status, 0) << apart.err;
+        const Csv a = parseCsv(apart.out);
+        EXPECT_NEAR(std::stod(a.rows[0].at(column(a, "h_gas"))), value("unloading_h_gas"), 1e-8 * value("unloading_h_gas"));
+    }
 }
 
 TEST(Cli, UnloadFromGivesAMultiscaleModelsUnloadingArea)
@@ -709,6 +744,21 @@ TEST(Cli, UnloadFromGivesTheDefaultLawsUnloadingBranch)
         } else {
             EXPECT_EQ(csv.rows[i].at(column(csv, "unloading_h_per_k")), csv.rows[i].at(column(csv, "h_per_k")));
         }
+    }
+    // With a gas the law's unloaded joint keeps the gap of the moment, as the condition does
+    // (ContactInterface::loadHistoryNote): unloading_h_total = unloading_h + h_gas + h_radiation.
+    const CommandResult g = run("--profile '" + standin + "' --model jacksonGreen" + steel +
+                                " --conductance --k1 50 --k2 50 --pressures 1MPa,10MPa,30MPa --unload-from 30MPa "
+                                "--gas air --gas-pressure 1e5 --temperature 300");
+    ASSERT_EQ(g.status, 0) << g.err;
+    const Csv gc = parseCsv(g.out);
+    ASSERT_EQ(gc.rows.size(), 3U);
+    for (std::size_t i = 0; i < 3; ++i) {
+        const auto value = [&](const char* name) { return std::stod(gc.rows[i].at(column(gc, name))); };
+        EXPECT_NEAR(value("unloading_h_total"), value("unloading_h") + value("h_gas") + value("h_radiation"),
+                    1e-9 * value("unloading_h_total"));
+        EXPECT_NEAR(value("h_total") - value("h") + value("unloading_h"), value("unloading_h_total"),
+                    1e-9 * value("unloading_h_total"));
     }
 }
 
