@@ -127,20 +127,22 @@ void bindFittedLaw(py::module_& m)
         "(NaN: no light-load factor), with `constants`. Equally long arrays (or numbers) in, an array out.");
     m.def(
         "fitted_unloading_factor",
-        [](const py::handle& P, const py::handle& peak, const py::handle& m, const py::handle& Eprime,
-           const py::handle& hardness, const py::handle& fineHurst, const FittedElastoPlasticConstants& constants) {
+        [](const py::handle& P, const py::handle& peak, const py::handle& m, const py::handle& bandwidth,
+           const py::handle& Eprime, const py::handle& hardness, const py::handle& fineHurst,
+           const FittedElastoPlasticConstants& constants) {
             const Array p = numbers(P, "P");
-            const Array arrays[] = {numbers(peak, "peak"), numbers(m, "m"), numbers(Eprime, "Eprime"),
-                                    numbers(hardness, "hardness"), numbers(fineHurst, "fine_hurst")};
+            const Array arrays[] = {numbers(peak, "peak"), numbers(m, "m"), numbers(bandwidth, "bandwidth"),
+                                    numbers(Eprime, "Eprime"), numbers(hardness, "hardness"),
+                                    numbers(fineHurst, "fine_hurst")};
             return vectorized("fitted_unloading_factor", p, arrays, [&](double Pi, const auto& a) {
-                return fittedUnloadingFactor(Pi, a(0), a(1), a(2), given(a(3)), given(a(4)), constants);
+                return fittedUnloadingFactor(Pi, a(0), a(1), a(2), a(3), given(a(4)), given(a(5)), constants);
             });
         },
-        py::arg("P"), py::arg("peak"), py::arg("m"), py::arg("Eprime"), py::arg("hardness"), py::arg("fine_hurst"),
-        py::arg("constants") = FittedElastoPlasticConstants{},
+        py::arg("P"), py::arg("peak"), py::arg("m"), py::arg("bandwidth"), py::arg("Eprime"), py::arg("hardness"),
+        py::arg("fine_hurst"), py::arg("constants") = FittedElastoPlasticConstants{},
         "R of fittedElastoPlastic's unloading branch (the core's fittedUnloadingFactor): the factor on the "
         "law's loading h_c/k_s at the nominal pressure P [Pa] of a joint that has carried peak [Pa], for the "
-        "mean absolute slope m, E' [Pa], the cap H [Pa] (NaN: elastic, R = 1) and the Hurst exponent of the "
+        "mean absolute slope m, the bandwidth ratio W, E' [Pa], the cap H [Pa] (NaN: elastic, R = 1) and the Hurst exponent of the "
         "spectrum's finest octave H_f (fine_hurst_exponent; NaN: none), with `constants`. Equally long arrays "
         "(or numbers) in, an array out.");
     m.def(

@@ -42,7 +42,7 @@ def test_table_is_the_model_and_the_law(interface):
 def test_the_default_law_unloads_by_its_branch(interface):
     """A multi-scale interface with the default law and a cap: below a peak h_c is the loading
     value times the law's unloading factor (roughcontact.fitted_unloading_factor on the profile's
-    m, E', H = 2.84 S_y and its spectrum's H_f), A_r/A_n the loading one; the law alone gives the same with
+    m, its spectrum's W, E', H = 2.84 S_y and its spectrum's H_f), A_r/A_n the loading one; the law alone gives the same with
     unload_from; a law without a branch refuses it."""
     pair = rc.ContactMaterials.pair(STEEL_M, STEEL_M)
     m = rc.profile_roughness(rc.read_profile(STANDIN)).mean_absolute_slope
@@ -51,7 +51,8 @@ def test_the_default_law_unloads_by_its_branch(interface):
     P = np.array([1e6, 1e7, 5e7])
     Hf = rc.fine_hurst_exponent(interface.surface)
     assert Hf is not None
-    R = rc.fitted_unloading_factor(P, np.full(3, peak), np.full(3, m), np.full(3, pair.reduced_modulus),
+    W = rc.spectral_bandwidth_ratio(interface.surface)
+    R = rc.fitted_unloading_factor(P, np.full(3, peak), np.full(3, m), np.full(3, W), np.full(3, pair.reduced_modulus),
                                    np.full(3, H), np.full(3, Hf))
     assert np.all(R > 1.0)
     assert interface.remembers_load and "unloading branch" in interface.load_history_note

@@ -729,13 +729,14 @@ TEST(Cli, UnloadFromGivesTheDefaultLawsUnloadingBranch)
     const double Ep = ContactMaterials::againstRigidFlat(Material{179.52e9, 0.32, 0.2e9}).reducedModulus();
     const double m = profileRoughness(readProfile(standin)).meanAbsoluteSlope;
     const std::optional<double> Hf = fineHurstExponent(Spectrum::fromProfile(readProfile(standin)));
+    const double W = spectralBandwidthRatio(Spectrum::fromProfile(readProfile(standin)));
     ASSERT_TRUE(Hf.has_value());
     for (std::size_t i = 0; i < 4; ++i) {
         const double P = std::stod(csv.rows[i].at(column(csv, "nominal_pressure")));
         SCOPED_TRACE(P);
         // h_per_k as printed (10 digits) times the factor: within the printing's rounding.
         const double loading = std::stod(csv.rows[i].at(column(csv, "h_per_k")));
-        const double hk = loading * fittedUnloadingFactor(P, 30e6, m, Ep, 2.84 * 0.2e9, Hf);
+        const double hk = loading * fittedUnloadingFactor(P, 30e6, m, W, Ep, 2.84 * 0.2e9, Hf);
         const double printed = std::stod(csv.rows[i].at(column(csv, "unloading_h_per_k")));
         EXPECT_NEAR(printed, hk, 2e-9 * hk);
         EXPECT_NEAR(std::stod(csv.rows[i].at(column(csv, "unloading_h"))), 50.0 * printed, 2e-9 * 50.0 * printed);

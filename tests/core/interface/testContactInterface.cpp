@@ -103,7 +103,7 @@ TEST(ContactInterface, TheDefaultLawUnloadsByItsBranch)
 {
     // A multi-scale model with the default law and a cap: below a face's peak h_c is the table's
     // loading value times the law's unloading factor (fittedUnloadingFactor on the surfaces'
-    // combined m, E' and the law's H), A_r/A_n the loading one; at or above the peak, bit for bit
+    // combined m and W, E' and the law's H), A_r/A_n the loading one; at or above the peak, bit for bit
     // the loading values. The note a front-end says once tells it.
     const ContactInterface ci(steelOnCopper());
     const ContactMaterials mat = ContactMaterials::pair(steel, copper);
@@ -116,7 +116,8 @@ TEST(ContactInterface, TheDefaultLawUnloadsByItsBranch)
             SCOPED_TRACE(std::to_string(P) + " from " + std::to_string(peak));
             const FaceContact loading = ci.face(P, 50.0, 20.0);
             const FaceContact unloading = ci.face(P, 50.0, 20.0, peak);
-            const double R = fittedUnloadingFactor(P, peak, m, mat.reducedModulus(), H, fineHurstExponent(ci.surface()));
+            const double R = fittedUnloadingFactor(P, peak, m, spectralBandwidthRatio(ci.surface()), mat.reducedModulus(), H,
+                                                   fineHurstExponent(ci.surface()));
             EXPECT_GT(R, 1.0);
             EXPECT_NEAR(unloading.conductance, loading.conductance * R, 1e-14 * unloading.conductance);
             EXPECT_EQ(unloading.areaFraction, loading.areaFraction);

@@ -10,6 +10,7 @@
 #include "roughContact/io/ProfileReader.hpp"
 #include "roughContact/surface/FractalFit.hpp"
 #include "roughContact/surface/Roughness.hpp"
+#include "roughContact/surface/SpectralMoments.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 #include "roughContact/thermal/FittedElastoPlastic.hpp"
 #include "roughContact/thermal/GapConductance.hpp"
@@ -664,7 +665,8 @@ TEST(FaceCoupling, AMultiscaleFaceBelowItsPeakUnloadsByTheDefaultLawsBranch)
     couple(iface, side.inputs(), plainCache, plain);
     EXPECT_EQ(out.unloading, 1u);
     const double m = profileRoughness(readProfile(standin)).meanAbsoluteSlope;
-    const double R = fittedUnloadingFactor(1e6, 1e8, m, iface.reducedModulus(), 2.84 * 0.07e9,
+    const double R = fittedUnloadingFactor(1e6, 1e8, m, spectralBandwidthRatio(iface.surface()), iface.reducedModulus(),
+                                           2.84 * 0.07e9,
                                            fineHurstExponent(iface.surface()));
     EXPECT_GT(R, 1.1);
     EXPECT_NEAR(out.contactConductance[0], R * plain.contactConductance[0], 1e-14 * out.contactConductance[0]);

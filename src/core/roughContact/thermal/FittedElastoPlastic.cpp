@@ -206,8 +206,14 @@ double fittedUnloadingHurst(double fineHurst, const FittedElastoPlasticConstants
     return std::min(std::max(fineHurst, c.unloadingHurstLeast), c.unloadingHurstMost);
 }
 
-double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, double Eprime, std::optional<double> H,
-                             std::optional<double> fineHurst, const FittedElastoPlasticConstants& c)
+double fittedUnloadingBandwidth(double bandwidth, const FittedElastoPlasticConstants& c)
+{
+    return std::min(bandwidth, c.unloadingBandwidthMost);
+}
+
+double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, double bandwidth, double Eprime,
+                             std::optional<double> H, std::optional<double> fineHurst,
+                             const FittedElastoPlasticConstants& c)
 {
     requireFinite("contact pressure P", P);
     requireFinite("peak pressure P_max", peak);
@@ -217,6 +223,7 @@ double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, do
     }
     // The law's range for m (checkRoughness): gamma below it stays far from overflowing.
     limits::requireInRange("mean absolute slope m", meanAbsoluteSlope, limits::minimumSlope, limits::maximumSlope, "");
+    checkBandwidth(bandwidth);
     limits::requireInRange("reduced modulus E'", Eprime, limits::minimumReducedModulus, limits::maximumReducedModulus,
                            "Pa");
     if (fineHurst) {
@@ -235,7 +242,10 @@ double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, do
     // H_f held within the training spectra's; none: H_0, where neither of its terms acts.
     const double above = fineHurst ? fittedUnloadingHurst(*fineHurst, c) - c.unloadingHurstPivot : 0.0;
     const double plastic = fittedUnloadingPlasticShare(gamma, c);
-    const double plateau = c.unloadingBase * plastic +
+    // A light peak's set grows with W above W_c: spots clustered on the long waves (low W)
+    // recover together as one elastic contact, scattered ones (high W) each keep theirs.
+    const double scattered = std::max(0.0, fittedUnloadingBandwidth(bandwidth, c) - c.unloadingBandwidthLeast);
+    const double plateau = c.unloadingBase * plastic * scattered +
                            c.unloadingFlow * flow * (1.0 + c.unloadingFlowHurst * above);
     const double s = P / peak;
     // The deep unloading's power of 1/s, s held at the deepest fitted: the steep fine scales' or,
@@ -252,7 +262,7 @@ FittedUnloading fittedElastoPlasticUnloading(double P, double peak, const Surfac
                                              std::optional<double> firstLevelShare, std::optional<double> fineHurst,
                                              const FittedElastoPlasticConstants& c)
 {
-    const double R = fittedUnloadingFactor(P, peak, r.meanAbsoluteSlope, Eprime, H, fineHurst, c);
+    const double R = fittedUnloadingFactor(P, peak, r.meanAbsoluteSlope, bandwidth, Eprime, H, fineHurst, c);
     const double h = fittedElastoPlasticConductancePerConductivity(P, r, bandwidth, Eprime, H, skewness,
                                                                    firstLevelShare, c);
     if (R == 1.0) {

@@ -12,7 +12,7 @@
 //
 // and, below the heaviest pressure P_max a joint has carried, its unloading branch (§5.7c):
 // min(h_c/k_s(P) R(P/P_max), h_c/k_s(P_max)) with
-//   ln R = (l_0 Phi(gamma) + l_1 c (1 + u (H_f - H_0)))(1 - s^q) + e ln(1/s),
+//   ln R = (l_0 Phi(gamma) max(0, W - W_c) + l_1 c (1 + u (H_f - H_0)))(1 - s^q) + e ln(1/s),
 //   e = max(t max(0, H_f - H_0), Phi(gamma) min(e_1, v max(0, ln(A_c H/P_max)))),
 // s = P/P_max, c = -ln(1 - P_max/H), Phi(gamma) = 1/(1 + (gamma/gamma_M)^2), gamma = H/(E' m
 // sqrt(pi/2)) Mikic's plasticity index, H_f the Hurst exponent of the spectrum's finest octave
@@ -72,18 +72,23 @@ double fittedUnloadingPlasticShare(double plasticityIndex, const FittedElastoPla
 /// (0.3 and 1, the training spectra's; no check).
 double fittedUnloadingHurst(double fineHurst, const FittedElastoPlasticConstants& c = {});
 
+/// W as the unloading branch takes it: held at unloadingBandwidthMost (0.72, the training
+/// spectra's largest) above it (no check).
+double fittedUnloadingBandwidth(double bandwidth, const FittedElastoPlasticConstants& c = {});
+
 /// R of the header: the unloading branch's factor on the law's loading h_c/k_s at the nominal
 /// pressure P [Pa] (finite, >= 0) of a joint that has carried the pressure peak [Pa] (finite,
 /// >= 0), for the combined surfaces' mean absolute slope m (within the project's slope range, as
-/// the law's roughness), the reduced modulus E' [Pa], the cap H [Pa] and the Hurst exponent H_f of
+/// the law's roughness), the spectrum's bandwidth ratio W (0 < W <= 1, as the law's; held at
+/// 0.72 above it), the reduced modulus E' [Pa], the cap H [Pa] and the Hurst exponent H_f of
 /// the combined spectrum's finest octave (finite; fineHurstExponent; none: H_0, where neither of
 /// its terms acts). 1 at P >= peak (loading) and without a cap; P_max/H held at
 /// unloadingPeakHeaviest (0.77) above it in c (not in the light-peak term), H_f within
 /// [unloadingHurstLeast, unloadingHurstMost] (0.3 and 1, the training spectra's) and s at
 /// unloadingDeepest (1/30) in the deep-unloading term. ParameterError naming the entry on bad
 /// input.
-double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, double Eprime, std::optional<double> H,
-                             std::optional<double> fineHurst = std::nullopt,
+double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, double bandwidth, double Eprime,
+                             std::optional<double> H, std::optional<double> fineHurst = std::nullopt,
                              const FittedElastoPlasticConstants& c = {});
 
 /// The law's h_c/k_s [1/m] at the nominal pressure P [Pa], loading and on the unloading branch
