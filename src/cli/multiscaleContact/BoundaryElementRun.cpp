@@ -207,12 +207,11 @@ int runBoundaryElement(const Options& o)
             }
             if (gap) {
                 // The unloaded joint's gap at its own separation (the column unloading_separation).
-                std::ostringstream cells; // ",Y,h_g,h_r[,h_total]": all but Y
-                cells.precision(out.precision());
-                writeGapCells(cells, *unloadingGap, *gapInputs, loads[i] * Ep, unloading[i].areaFraction >= 1.0, ks,
-                              unloading[i].conductancePerConductivity);
-                const std::string c = cells.str();
-                out << c.substr(c.find(',', 1) + 1) << ',';
+                const GapRow g = gapRowOf(*unloadingGap, *gapInputs, loads[i] * Ep, unloading[i].areaFraction >= 1.0);
+                out << g.h.gas << ',' << g.h.radiative << ',';
+                if (ks) { // inf at complete contact
+                    out << *ks * unloading[i].conductancePerConductivity + g.h.gas + g.h.radiative << ',';
+                }
             }
         }
         out << p.iterations << ',' << p.residual;
