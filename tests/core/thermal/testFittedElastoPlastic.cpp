@@ -483,7 +483,7 @@ TEST(FittedElastoPlastic, ATableEndsWhereTheLawConductsPerfectly)
 TEST(FittedElastoPlastic, TheUnloadingBranchIsItsClosedForm)
 {
     // R = exp((l_0 Phi(gamma) max(0, W - W_c) + l_1 c (1 + u (H_f - H_0)))(1 - s^q) + e ln(1/s)),
-    // e = max(t max(0, H_f - H_0), Phi(gamma) min(e_1, v max(0, ln(A_c H/P_max)))), s = P/P_max,
+    // e = Phi(gamma) max(t max(0, H_f - H_0), min(e_1, v max(0, ln(A_c H/P_max)))), s = P/P_max,
     // c = -ln(1 - P_max/H), Phi = 1/(1 + (gamma/gamma_M)^2), gamma = H/(E' m sqrt(pi/2))
     // (FittedElastoPlastic.hpp), computed here from the constants, with W held at 0.72 above it,
     // H_f held within [0.3, 1] (none: H_0) and s at 1/30 below it in the last term (to the
@@ -510,7 +510,7 @@ TEST(FittedElastoPlastic, TheUnloadingBranchIsItsClosedForm)
             for (double peakOverH : {1e-5, 1e-3, 0.01, 0.3, 0.77}) {
                 const double isolated = std::min(c.unloadingIsolated,
                                                  c.unloadingSpread * std::max(0.0, std::log(c.unloadingCrowded / peakOverH)));
-                const double exponent = std::max(c.unloadingTail * std::max(0.0, above), plastic * isolated);
+                const double exponent = plastic * std::max(c.unloadingTail * std::max(0.0, above), isolated);
                 for (double s : {0.0, 0.01, 0.03, 0.2, 0.5, 0.99}) {
                     SCOPED_TRACE(std::to_string(peakOverH) + " " + std::to_string(s) + " H_f " +
                                  (Hf ? std::to_string(*Hf) : "none"));
@@ -585,6 +585,19 @@ TEST(FittedElastoPlastic, TheUnloadingBranchIsItsClosedForm)
     EXPECT_NEAR(fittedUnloadingPlasticShare(1.0 / 3.0), 0.9, 1e-12);
     EXPECT_NEAR(fittedUnloadingPlasticShare(3.0), 0.1, 1e-12);
     EXPECT_EQ(fittedUnloadingPlasticShare(0.0), 1.0);
+    // A stiff pair flattens nothing and keeps no set: at gamma = 100 (Phi 1e-4) and a light peak
+    // (P_max/H = 1e-3, c = 1e-3) the branch deep below it is 1 within its flow term's 1e-3,
+    // whatever the spectrum's finest octave (Phi's 1e-4 of a power of 1/s up to 1/6 at s = 1/30:
+    // 6e-5) and W.
+    const double stiffM = 1e-2 * m;
+    const double stiffH = 100.0 * Ep * stiffM * std::sqrt(pi / 2.0);
+    for (double Hf : {0.3, 0.6, 1.0}) {
+        for (double w : {0.5, 0.72}) {
+            EXPECT_NEAR(fittedUnloadingFactor(1e-3 * stiffH / 30.0, 1e-3 * stiffH, stiffM, w, Ep, stiffH, Hf), 1.0,
+                        1.5e-3)
+                << Hf << " " << w;
+        }
+    }
     // P_max/H held at 0.77 above it (the study's heaviest peak).
     ASSERT_EQ(c.unloadingPeakHeaviest, 0.77);
     EXPECT_NEAR(fittedUnloadingFactor(0.2 * 0.9 * H, 0.9 * H, m, W, Ep, H),
@@ -601,7 +614,7 @@ TEST(FittedElastoPlastic, AnUnloadedJointConductsLessTheFurtherItIsUnloaded)
     // fitted range), skewness 0 and +-0.6 and H_f none, 0.3, 0.6 and 1 (equal where the peak's h
     // holds it). Beyond the study's heaviest peak, 0.77 H, the loading curve steepens towards H
     // faster than the branch's rise follows: just below a peak of 0.9 H it may rise by 1e-3 of
-    // itself (4e-4 at gamma 1, W 0.8, skewness -0.6, H_f 1, the one case of the grid that rises).
+    // itself (9.6e-4 at gamma 1, W 0.8, skewness -0.6, H_f 1, the one case of the grid that rises).
     const double m = rough.meanAbsoluteSlope;
     const FittedElastoPlasticConstants c;
     int cases = 0;

@@ -248,12 +248,13 @@ double fittedUnloadingFactor(double P, double peak, double meanAbsoluteSlope, do
     const double plateau = c.unloadingBase * plastic * scattered +
                            c.unloadingFlow * flow * (1.0 + c.unloadingFlowHurst * above);
     const double s = P / peak;
-    // The deep unloading's power of 1/s, s held at the deepest fitted: the steep fine scales' or,
-    // at a light peak, that of its isolated plastic spots (at most e_1, the Hertzian summit's).
+    // The deep unloading's power of 1/s, s held at the deepest fitted: the flattened plateaus'
+    // that stay in contact, of the steep fine scales or, at a light peak, of its isolated plastic
+    // spots (at most e_1, the Hertzian summit's); a pair that flattens nothing keeps none.
     // (A_c H/P_max overflows to +inf for a denormal peak: e_1.)
     const double crowding = std::max(0.0, std::log(c.unloadingCrowded * *H / peak));
     const double isolated = c.unloadingSpread > 0.0 ? std::min(c.unloadingIsolated, c.unloadingSpread * crowding) : 0.0;
-    const double tail = std::max(c.unloadingTail * std::max(0.0, above), isolated * plastic);
+    const double tail = plastic * std::max(c.unloadingTail * std::max(0.0, above), isolated);
     return std::exp(plateau * (1.0 - std::pow(s, c.unloadingRise)) - tail * std::log(std::max(s, c.unloadingDeepest)));
 }
 

@@ -13,7 +13,7 @@
 // and, below the heaviest pressure P_max a joint has carried, its unloading branch (§5.7c):
 // min(h_c/k_s(P) R(P/P_max), h_c/k_s(P_max)) with
 //   ln R = (l_0 Phi(gamma) max(0, W - W_c) + l_1 c (1 + u (H_f - H_0)))(1 - s^q) + e ln(1/s),
-//   e = max(t max(0, H_f - H_0), Phi(gamma) min(e_1, v max(0, ln(A_c H/P_max)))),
+//   e = Phi(gamma) max(t max(0, H_f - H_0), min(e_1, v max(0, ln(A_c H/P_max)))),
 // s = P/P_max, c = -ln(1 - P_max/H), Phi(gamma) = 1/(1 + (gamma/gamma_M)^2), gamma = H/(E' m
 // sqrt(pi/2)) Mikic's plasticity index, H_f the Hurst exponent of the spectrum's finest octave
 // (fineHurstExponent) and e_1 = 1/6 an isolated plastic summit's (R = 1 without a cap: an
