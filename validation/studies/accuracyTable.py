@@ -7,8 +7,9 @@ with a point there, and how many surfaces. From the engineering range (its cappe
 one capped reference), and for the area models it does not run the fidelity study's curves; for
 the default law beyond the engineering range, elastic, the heavy-load study's ratios up to the
 heaviest load it measured. `run` writes src/core/roughContact/thermal/MeasuredAccuracyTable.inc,
-the bands as a page's table, and the default law's bands by regime as README.md's "Which h to
-trust" (`trust`); `check` fails when they are not what the studies' data give.
+the bands as a page's table, and the default law's bands by regime, with its unloading branch's
+from the unloading study, as README.md's "Which h to trust" (`trust`); `check` fails when they
+are not what the studies' data give.
 """
 import math
 import os
@@ -188,9 +189,35 @@ def trust(ctx, rows):
         body.append([words, x, p, f"{short(min(loads))} to {short(max(loads))}" if loads else "-",
                      f"{band['elastic'][0]:.3g}-{band['elastic'][1]:.3g}" if band["elastic"] else "not measured",
                      f"{band['capped'][0]:.3g}-{band['capped'][1]:.3g}" if band["capped"] else "not measured", todo])
+    body.append(unloading_row(ctx, steel))
     body += lay_rows(ctx)
     return pages.markdown_table(["regime", "p/(E' h')", "p [MPa], steel, h' = 0.1", "P/H", "elastic: h / exact",
                                  "yielding: h / exact", "what to do"], body)
+
+
+def unloading_row(ctx, steel):
+    """The row of a joint below the heaviest load it carried: the unloading study's summary.csv,
+    the branch's ratio R over the exact unloading-to-loading ratio at its counted points (below
+    the peak), on top of the loading rows' band at the pressure of the moment."""
+    from .unloading import COUNTED
+    from ..fitting import BAND
+    rows = [r for r in pages.generated(ctx, "unloading", "summary.csv").rows
+            if r["role"] in COUNTED and float(r["fraction"]) < 1]
+    ratio = [float(r["branch_over_exact_ratio"]) for r in rows]
+    x = [float(r["peak_x"]) for r in rows]
+    fractions = [float(r["fraction"]) for r in rows]
+    over = [float(r["peak_over_H"]) for r in rows]
+    outside = sum(abs(v - 1) > BAND for v in ratio)
+    held = (f"within {100 * BAND:.0f} % at all {len(ratio)} points" if not outside else
+            f"outside {100 * BAND:.0f} % at {outside} of {len(ratio)} points")
+    todo = (f"sign h with the loading row's band at P times R's (R {held}); other peaks or P/P_max: "
+            "`model boundaryElement;`")
+    return [f"unloaded below its heaviest load P_max (P/P_max {short(min(fractions))} to {short(max(fractions))})",
+            f"peaks {short(min(x))} to {short(max(x))}",
+            f"peaks {short(min(x) * steel * 0.1 / 1e6)}-{short(max(x) * steel * 0.1 / 1e6)}",
+            f"peaks {short(min(over))} to {short(max(over))}",
+            "no memory: the rows above",
+            f"R / exact R {min(ratio):.3f}-{max(ratio):.3f}", todo]
 
 
 def lay_rows(ctx):
