@@ -211,11 +211,9 @@ class Study:
         self.cases = d.cases(ctx)
         spectrum = self_affine_spectra(ctx, "unloading", d.N // 8, GRADIENT)
         spectrum.update({name: spectra.self_affine(ctx.scratch_path("unloading", name + ".spectrum"), hurst,
-                                                   rolloff, d.N // 8, GRADIENT)
-                         for name, hurst, rolloff in list(d.held_out) + list(d.more)})
-        spectrum.update({name: spectra.self_affine(ctx.scratch_path("unloading", name + ".spectrum"), hurst,
-                                                   rolloff, d.N // 8, STIFF_GRADIENT)
-                         for name, hurst, rolloff in d.stiff})
+                                                   rolloff, d.N // 8, gradient)
+                         for shapes, gradient in ((list(d.held_out) + list(d.more), GRADIENT), (d.stiff, STIFF_GRADIENT))
+                         for name, hurst, rolloff in shapes})
         # {(name, k): the spectrum file on the period kL}
         self.spectrum = {(name, 1): path for name, path in spectrum.items()}
         for c in self.cases:
