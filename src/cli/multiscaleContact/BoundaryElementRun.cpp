@@ -207,11 +207,13 @@ int runBoundaryElement(const Options& o)
             }
             if (gap) {
                 // The unloaded joint's gap at its own separation (the column unloading_separation).
-                const GapRow g = gapRowOf(*unloadingGap, *gapInputs, loads[i] * Ep, unloading[i].areaFraction >= 1.0);
-                out << g.h.gas << ',' << g.h.radiative << ',';
-                if (ks) { // inf at complete contact
-                    out << *ks * unloading[i].conductancePerConductivity + g.h.gas + g.h.radiative << ',';
-                }
+                std::ostringstream cells; // ",h_g,h_r[,h_total]"
+                cells.precision(out.precision());
+                writeConductanceCells(cells,
+                                      gapRowOf(*unloadingGap, *gapInputs, loads[i] * Ep,
+                                               unloading[i].areaFraction >= 1.0),
+                                      ks, unloading[i].conductancePerConductivity);
+                out << cells.str().substr(1) << ',';
             }
         }
         out << p.iterations << ',' << p.residual;

@@ -134,6 +134,11 @@ void writeGapCells(std::ostream& out, const InterfaceGap& gap, const GapInputs& 
     if (!std::isnan(row.separation)) {
         out << row.separation;
     }
+    writeConductanceCells(out, row, ks, hPerK);
+}
+
+void writeConductanceCells(std::ostream& out, const GapRow& row, const std::optional<double>& ks, double hPerK)
+{
     out << ',' << row.h.gas << ',' << row.h.radiative;
     if (ks) {
         out << ',';

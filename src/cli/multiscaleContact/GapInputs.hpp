@@ -54,4 +54,9 @@ GapRow gapRowOf(const roughContact::InterfaceGap& gap, const GapInputs& g, doubl
 void writeGapCells(std::ostream& out, const roughContact::InterfaceGap& gap, const GapInputs& g, double P,
                    bool complete, const std::optional<double>& ks, double hPerK);
 
+// A row's conductance cells, each after a comma: h_gas, h_radiation, and with ks h_total =
+// k_s hPerK + h_g + h_r (inf at complete contact; empty where hPerK is NaN). writeGapCells's
+// last cells, and the unloaded joint's (its separation in a column of its own).
+void writeConductanceCells(std::ostream& out, const GapRow& row, const std::optional<double>& ks, double hPerK);
+
 } // namespace multiscaleContact
