@@ -614,7 +614,7 @@ TEST(FittedElastoPlastic, AnUnloadedJointConductsLessTheFurtherItIsUnloaded)
     // fitted range), skewness 0 and +-0.6 and H_f none, 0.3, 0.6 and 1 (equal where the peak's h
     // holds it). Beyond the study's heaviest peak, 0.77 H, the loading curve steepens towards H
     // faster than the branch's rise follows: just below a peak of 0.9 H it may rise by 1e-3 of
-    // itself (at the fitted constants none of the grid's cases rises; earlier fits rose by 9.6e-4).
+    // itself (at the fitted constants none of the grid's cases rises).
     const double m = rough.meanAbsoluteSlope;
     const FittedElastoPlasticConstants c;
     int cases = 0;
