@@ -547,15 +547,19 @@ def outputs(ctx):
     pts = ratio_points(s)
     rc = ctx.rc()
     law, without = branch(rc, rc.FittedElastoPlasticConstants(), pts), branch(rc, fit_without_hurst(ctx, pts), pts)
-    terms = []
+    # ... and, per counted role, where the branch is held (held.md).
+    terms, held_rows = [], []
     for role in ROLES:
         keep = numpy.array([r["role"] == role for r in pts.rows])
         q, q0 = law[keep] / pts.exact[keep], without[keep] / pts.exact[keep]
         terms.append([role, pages.span(q), within(q), pages.span(q0), within(q0)])
+        if role in COUNTED:
+            held_rows.append([role, "yes" if role in TRAINING else "no", pages.span(q), within(q)])
     held = numpy.array([r["role"] in COUNTED for r in pts.rows])
     q, q0 = law[held] / pts.exact[held], without[held] / pts.exact[held]
     terms.append(["all held to 25 % (every role but periods of L beside 4L)", pages.span(q), within(q),
                   pages.span(q0), within(q0)])
+    held_rows.append(["all", "", pages.span(q), within(q)])
     out.table("hurst-terms", ["spectra", "branch R / exact R", "within 25 %", "without H_f (refitted)",
                               "within 25 %"], terms)
     # The fit's own cross-validation: each training spectrum left out of the fit, the rest refitted,
@@ -563,7 +567,7 @@ def outputs(ctx):
     cross = []
     for name, c in [(None, rc.FittedElastoPlasticConstants())] + list(left_out(rc, pts, d.spectra).items()):
         q = branch(rc, c, pts) / pts.exact
-        mine = numpy.array([r["role"] in TRAINING and r["name"] == (name or r["name"]) for r in pts.rows])
+        mine = numpy.array([r["role"] in TRAINING and (name is None or r["name"] == name) for r in pts.rows])
         given = s.given[(name, 1)] if name else None
         cross.append([name or "none (the law: all six fitted)", f"{given.fine_hurst:.2f}" if name else "",
                       f"{given.bandwidth:.3f}" if name else "", pages.span(q[mine]), within(q[mine]),
@@ -571,14 +575,6 @@ def outputs(ctx):
                       f"{c.unloadingBase:.3f}", f"{c.unloadingBandwidthLeast:.3f}", f"{c.unloadingFlow:.3f}"])
     out.table("left-out", ["spectrum left out", "H_f", "W", "its training points: branch R / exact R", "within 25 %",
                            "every counted point", "within 25 %", "H_0", "l_0", "W_c", "l_1"], cross)
-    # Where the branch is held: per counted role, and every counted point.
-    held_rows = []
-    for role in COUNTED:
-        keep = numpy.array([r["role"] == role for r in pts.rows])
-        q = law[keep] / pts.exact[keep]
-        held_rows.append([role, "yes" if role in TRAINING else "no", pages.span(q), within(q)])
-    q = law[held] / pts.exact[held]
-    held_rows.append(["all", "", pages.span(q), within(q)])
     out.table("held", ["spectra", "fitted on", "branch R / exact R", "within 25 %"], held_rows)
     out.block("README.md", "held", held_sentence(law / pts.exact, pts))
     out.table("misses", ["spectrum", "H_f", "W", "role", "pair", "peak x", "P_max/H", "P/P_max",
