@@ -211,8 +211,25 @@ def outputs(ctx):
                 chosen = built
     out = pages.Outputs(ctx, "fittedElastoPlastic")
     out.source(CONSTANTS, constants_text(sets))
+    for name, names in THEORY_LINES.items():
+        out.block(os.path.join("docs", "theory.md"), name, constants_line(sets, names))
     fittedElastoPlasticTables.tables(ctx, out, chosen, pts, sets)
     return out
+
+
+# The lines of docs/theory.md that give the fitted constants, by block name: each its constants.
+THEORY_LINES = {"loading-constants": FITTED,
+                "unloading-constants": ["unloadingBase", "unloadingBandwidthLeast", "unloadingFlow", "unloadingTail",
+                                        "unloadingHurstPivot", "unloadingFlowHurst", "unloadingSpread",
+                                        "unloadingCrowded"]}
+
+
+def constants_line(sets, names):
+    """"C_E = 0.8515, A = 0.8715, ... and K = 0.5142.": the constants' symbols (what each is
+    says first, before its colon) with their values as the core holds them."""
+    given = {n: (v, w.split(":")[0]) for n, v, w in sets}
+    terms = [f"{given[n][1]} = {given[n][0]!r}" for n in names]
+    return ", ".join(terms[:-1]) + f" and {terms[-1]}.\n"
 
 
 def solve(ctx):
