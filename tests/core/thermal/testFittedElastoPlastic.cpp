@@ -667,7 +667,7 @@ TEST(FittedElastoPlastic, AnUnloadedJointConductsNoMoreThanAtItsPeak)
 {
     // Just below a heavy peak R rises faster than the loading curve falls where that flattens
     // near H (W = 0.1: the plastic branch's spots far apart), and h R alone would rise above the
-    // peak's h (by 14 % at P_max = 0.77 H, H_f none; more than 10 % checked): the branch holds it
+    // peak's h (by 23 % at P_max = 0.77 H, H_f none; more than 10 % checked): the branch holds it
     // at the peak's h there, and is h R where that is lower.
     const double m = rough.meanAbsoluteSlope;
     const double spread = 0.1; // W
