@@ -219,6 +219,8 @@ def outputs(ctx):
 
 # The lines of docs/theory.md that give the fitted constants, by block name: each its constants.
 THEORY_LINES = {"loading-constants": FITTED,
+                "heavy-load-constants": ["heavyLoadGrowth", "heavyLoadGrowthSlope"],
+                "skewness-constants": ["skewnessSlope", "skewnessSlopeLog", "skewnessCurvature"],
                 "unloading-constants": ["unloadingBase", "unloadingBandwidthLeast", "unloadingFlow", "unloadingTail",
                                         "unloadingHurstPivot", "unloadingFlowHurst", "unloadingSpread",
                                         "unloadingCrowded"]}
