@@ -25,7 +25,8 @@ The default law's unloading branch (docs/theory.md §5.7c) multiplies its loadin
 `fit` fits R's constants to the exact unloading over loading h of the training spectra on L, 4L
 and 8L (the core's fittedUnloadingFactor evaluated, never a copy), and the fittedElastoPlastic study
 writes them into the core. The tables hold R and the whole law to
-the exact answer, and today's law without memory beside them. The multi-scale model
+the exact answer, and today's law without memory beside them, and show how the unloading's area is
+spread (R over the square root of the area's ratio, the clustering table). The multi-scale model
 (jacksonGreen on the same spectrum, each level unloading as a Hertzian contact of its peak,
 docs/theory.md §3.6) is held to the exact unloading area. The surfaces are made again from their
 seeds by the CLI, never committed. docs/validation/unloading.md reads the tables.
@@ -568,6 +569,9 @@ def outputs(ctx):
                        f"{geometric_mean([float(r['unloading_over_loading_h']) for r in here]):.2f}",
                        f"{geometric_mean([float(r['branch_ratio']) for r in here]):.2f}", len(here)])
     out.table("bandwidth", ["spectrum", "role", "W", "H_f", "exact R", "branch R", "points"], spread)
+    out.table("clustering", ["spectrum", "W", "H_f", "pair", "period"] +
+              [f"{what}, P/P_max = {f:.2g}" for f in CLUSTERING_FRACTIONS
+               for what in ("A_u/A_l", "R", "R / sqrt(A_u/A_l)")], clustering(s, below))
     # What H_f buys: the branch over the exact ratio per role, with the law's constants and with
     # the H_f terms left out and the rest refitted.
     pts = ratio_points(s)
@@ -655,6 +659,35 @@ def held_sentence(q, pts):
 
 # The misses table's rows: every counted point outside the band and the worst inside, at least.
 WORST = 6
+
+
+# The fractions the clustering table shows: deep, where the exact ratio differs most between spectra.
+CLUSTERING_FRACTIONS = (FRACTIONS[-2], FRACTIONS[-1])
+
+
+def clustering(s, below):
+    """How the unloading's area is spread, after x = 1e-3 (p/E' = 1e-4) for steel and copper on the
+    largest period a counted role solved, per spectrum (sorted by W): at each of
+    CLUSTERING_FRACTIONS the exact unloading over loading A_r/A_n, the exact R, and R over the square
+    root of the area's ratio: 1 where the unloading's spots are the loading's grown in place (Holm:
+    h ~ the sum of the spots' radii, A_r ~ the sum of their squares), below 1 where its area lies in
+    fewer, larger patches (geometric means over the seeds)."""
+    rows = []
+    for regime in ("steelSteel", "copperCopper"):
+        label = next(lab for key, lab, _ in materials.REGIMES if key == regime).replace("capped: ", "")
+        mine = [r for r in below if r["regime"] == regime and r["role"] in COUNTED and r["role"] != STIFF
+                and abs(float(r["peak_p_per_Eprime"]) / 1e-4 - 1) < 1e-9]
+        for name in sorted(dict.fromkeys(r["spectrum"] for r in mine), key=lambda n: s.given[(n, 1)].bandwidth):
+            k = max(int(r["period_L"]) for r in mine if r["spectrum"] == name)
+            given = s.given[(name, 1)]
+            row = [name, f"{given.bandwidth:.3f}", f"{given.fine_hurst:.2f}", label, "L" if k == 1 else f"{k}L"]
+            for f in CLUSTERING_FRACTIONS:
+                r = next(r for r in mine if r["spectrum"] == name and int(r["period_L"]) == k
+                         and abs(float(r["fraction"]) / f - 1) < 1e-5)
+                area, ratio = float(r["unloading_over_loading_area"]), float(r["unloading_over_loading_h"])
+                row += [f"{area:.2f}", f"{ratio:.2f}", f"{ratio / area ** 0.5:.2f}"]
+            rows.append(row)
+    return rows
 
 
 def misses_table(s, below):
