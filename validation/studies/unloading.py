@@ -18,6 +18,9 @@ all ten (seeds 1-6): not fitted; so are stiff pairs, steel and hardened steel on
 spectra at h' = 0.01 and 0.03 (gamma 0.6 to 4.3; periods of L, seeds 1-6). The period check
 solves x = 1e-3 on periods of 8L (grid 8N, seeds 1-6): copper on five spectra (three fitted, two
 held out) and steel on one; there 8L stands for the peak, fitted or held out as its spectrum is.
+The resolution check puts copper's surfaces of 4L on the held-out Hurst-0.4 shape at x = 1e-3
+(seeds 1-3), whose ratio is below 1, on a grid twice as fine (the CLI's --resample: the same
+surfaces): is that ratio the grid's?
 Where a fitted or held-out peak has a larger period, its smaller ones are shown beside it but
 neither fitted nor held to the branch: the larger period is nearer the joint (periods of L keep
 up to 1.4 times what 4L keep there; 8L keep up to 19 % less than 4L on copper: periods.md).
@@ -80,7 +83,8 @@ FIXED = {# The study's nearest fraction below the peak is a half: every q above 
          # (Hertz on its flattened top): h_u/h_l = s^(-1/6) (docs/theory.md §5.7c).
          "unloadingIsolated": (0.1667, "e_1 = 1/6: the deep-unloading power of 1/s of isolated fully plastic "
                                        "Hertzian summits, the light-peak term's most")}
-KEYS = ["surface", "regime", "grid", "seed", "peak", "branch"]
+# resample: the grid a resolution check's surface is put on (the CLI's --resample), empty otherwise.
+KEYS = ["surface", "regime", "grid", "resample", "seed", "peak", "branch"]
 GRADIENT = 0.1  # h' of the spectra: x = p/(E' h') sets the peaks
 # Stiff pairs: two of MORE_TRAINING's spectra at a tenth and at 0.3 of the slope, h' = 0.01 and
 # 0.03, so that steel and hardened steel have gamma = 1.8 and 4.3, and 0.6 and 1.4, between the
@@ -138,6 +142,7 @@ class Design:
             self.light_regimes, self.light_period = [], 4
             self.light_seeds, self.held_out_light_seeds, self.lightest_regimes = {}, {}, []
             self.period_check, self.pairs_check, self.stiff = [], [], []
+            self.resolution, self.resolution_seeds = [], []
         else:
             self.N, self.seeds, self.peaks = 512, [1, 2, 3, 4, 5, 6], [1e-4, 1e-3, 1e-2]
             self.regimes = [key for key, _, pair in materials.REGIMES if pair is not None]
@@ -166,6 +171,13 @@ class Design:
             self.period_check = [("selfAffine05", "copperCopper", 1e-4), ("hurst06rolloff1", "copperCopper", 1e-4),
                                  ("hurst04rolloff1", "copperCopper", 1e-4), ("selfAffine03", "copperCopper", 1e-4),
                                  ("hurst07rolloff3", "copperCopper", 1e-4), ("selfAffine05", "steelSteel", 1e-4)]
+            # The resolution check: is a ratio below 1 the grid's? Copper at x = 1e-3 on the
+            # held-out Hurst-0.4 shape on periods of 4L (R 0.89-0.97 there), the same surfaces
+            # (seeds 1-3) put on a grid twice as fine each way (the CLI's --resample: the same
+            # Fourier series, 16 points per shortest wave instead of 8): (name, regime, peak, k,
+            # refinement).
+            self.resolution = [("hurst04rolloff1", "copperCopper", 1e-4, 4, 2)]
+            self.resolution_seeds = [1, 2, 3]
             # Aluminium on steel and hardened steel at x = 1e-3 on periods of 4L on all ten
             # spectra: the pairs the light end's periods of 4L leave out, held to the branch,
             # never fitted. Seeds 1-6: on three seeds a point's ratios spread by up to a factor
@@ -264,9 +276,22 @@ class Study:
         return list(zip((float(a) for a in model.area_fraction(P)),
                         (float(a) for a in model.area_fraction(P, unload_from=peak * pair.Eprime))))
 
-    def key(self, case, seed, peak, branch):
-        return {"surface": case.name, "regime": case.regime, "grid": self.design.N * case.k, "seed": seed,
-                "peak": peak, "branch": branch}
+    def key(self, case, seed, peak, branch, resample=None):
+        return {"surface": case.name, "regime": case.regime, "grid": self.design.N * case.k, "resample": resample,
+                "seed": seed, "peak": peak, "branch": branch}
+
+    def resolution_cases(self):
+        """[(case, peak, the finer grid)] of the resolution check: the case solved on the period it
+        names, its surfaces put on a grid `refinement` times as fine."""
+        out = []
+        for name, regime, peak, k, refinement in self.design.resolution:
+            case = next((c for c in self.cases if c.name == name and c.regime == regime and c.k == k and peak in c.peaks),
+                        None)
+            if case is None:
+                raise SystemExit(f"unloading: the resolution check's {name} {regime} x = {peak / GRADIENT:g} on {k}L "
+                                 "is not a case of the study")
+            out.append((case, peak, self.design.N * k * refinement))
+        return out
 
     def solves(self):
         out = []
@@ -282,7 +307,27 @@ class Study:
                     out.append(solves.Solve(self.key(c, seed, peak, "unloading"),
                                             base + ["--unload-from", f"{peak * pair.Eprime:.17g}"], loads,
                                             solves.UNLOADING_COLUMNS))
+        for c, peak, fine in self.resolution_cases():
+            pair = materials.regime_pair(self.ctx, c.regime)
+            loads = [f * peak for f in FRACTIONS]
+            for seed in d.resolution_seeds:
+                base = (["--spectrum", self.spectrum[(c.name, c.k)], "--synthesize", f"{d.N * c.k},{seed}",
+                         "--resample", str(fine), "--model", "boundaryElement"] + pair.arguments +
+                        ["--hardness-from-yield"])
+                out.append(solves.Solve(self.key(c, seed, peak, "loading", fine), base, loads))
+                out.append(solves.Solve(self.key(c, seed, peak, "unloading", fine),
+                                        base + ["--unload-from", f"{peak * pair.Eprime:.17g}"], loads,
+                                        solves.UNLOADING_COLUMNS))
         return out
+
+    def ratio(self, case, seed, peak, fraction, resample=None):
+        """(exact unloading over loading h, loading h_c/k_s) of one seed at P/P_max = fraction."""
+        rows = [solves.at(self.store.curve(self.key(case, seed, peak, b, resample)), fraction * peak)
+                for b in ("loading", "unloading")]
+        if not all(rows):
+            raise SystemExit(f"unloading: {case.label} {case.regime} seed {seed} peak {peak} (grid {resample}) is "
+                             "not at the loads")
+        return float(rows[1]["h_per_k_per_m"]) / float(rows[0]["h_per_k_per_m"]), float(rows[0]["h_per_k_per_m"])
 
     def points(self, case, seed, peak):
         """[(P/P_max, loading row, unloading row, the default law's h_c/k_s there)]."""
@@ -572,6 +617,9 @@ def outputs(ctx):
     out.table("clustering", ["spectrum", "W", "H_f", "pair", "period"] +
               [f"{what}, P/P_max = {f:.2g}" for f in CLUSTERING_FRACTIONS
                for what in ("A_u/A_l", "R", "R / sqrt(A_u/A_l)")], clustering(s, below))
+    out.table("resolution", ["spectrum", "pair", "peak x", "grids", "P/P_max", "exact R, study's grid",
+                             "exact R, finer grid", "finer / study's R, per seed",
+                             "finer / study's loading h, per seed"], resolution(s))
     # What H_f buys: the branch over the exact ratio per role, with the law's constants and with
     # the H_f terms left out and the rest refitted.
     pts = ratio_points(s)
@@ -659,6 +707,24 @@ def held_sentence(q, pts):
 
 # The misses table's rows: every counted point outside the band and the worst inside, at least.
 WORST = 6
+
+
+def resolution(s):
+    """The resolution check's rows: per case and fraction below 1, the exact R on the study's grid
+    and on the finer one (the same surfaces, seeds' geometric means), and per seed the fine over
+    the coarse R and loading h (the same surface on both grids: their ratio is the grid's error,
+    free of the seeds' scatter)."""
+    rows = []
+    for c, peak, fine in s.resolution_cases():
+        label = next(lab for key, lab, _ in materials.REGIMES if key == c.regime).replace("capped: ", "")
+        for f in FRACTIONS[1:]:
+            coarse = [s.ratio(c, seed, peak, f) for seed in s.design.resolution_seeds]
+            finer = [s.ratio(c, seed, peak, f, fine) for seed in s.design.resolution_seeds]
+            rows.append([c.label, label, f"{peak / c.gradient:.0e}", f"{s.design.N * c.k}^2, {fine}^2", f"{f:.2g}",
+                         f"{geometric_mean([r for r, _ in coarse]):.2f}", f"{geometric_mean([r for r, _ in finer]):.2f}",
+                         pages.span([b[0] / a[0] for a, b in zip(coarse, finer)], 3),
+                         pages.span([b[1] / a[1] for a, b in zip(coarse, finer)], 3)])
+    return rows
 
 
 # The fractions the clustering table shows: deep, where the exact ratio differs most between spectra.
