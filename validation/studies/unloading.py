@@ -320,29 +320,34 @@ class Study:
                                         solves.UNLOADING_COLUMNS))
         return out
 
+    def rows(self, case, seed, peak, branch, resample=None):
+        """The solve's rows at the FRACTIONS of the peak; SystemExit where one is missing."""
+        c = self.store.curve(self.key(case, seed, peak, branch, resample))
+        rows = [solves.at(c, f * peak) for f in FRACTIONS]
+        if not all(rows):
+            raise SystemExit(f"unloading: {case.label} {case.regime} seed {seed} peak {peak} {branch}"
+                             f"{f' (grid {resample})' if resample else ''} is not at the loads")
+        return rows
+
     def ratio(self, case, seed, peak, fraction, resample=None):
         """(exact unloading over loading h, loading h_c/k_s) of one seed at P/P_max = fraction."""
-        rows = [solves.at(self.store.curve(self.key(case, seed, peak, b, resample)), fraction * peak)
-                for b in ("loading", "unloading")]
-        if not all(rows):
-            raise SystemExit(f"unloading: {case.label} {case.regime} seed {seed} peak {peak} (grid {resample}) is "
-                             "not at the loads")
-        return float(rows[1]["h_per_k_per_m"]) / float(rows[0]["h_per_k_per_m"]), float(rows[0]["h_per_k_per_m"])
+        i = next(i for i, f in enumerate(FRACTIONS) if abs(f / fraction - 1) < 1e-9)
+        loading, unloading = (self.rows(case, seed, peak, b, resample)[i] for b in ("loading", "unloading"))
+        return float(unloading["h_per_k_per_m"]) / float(loading["h_per_k_per_m"]), float(loading["h_per_k_per_m"])
 
     def points(self, case, seed, peak):
         """[(P/P_max, loading row, unloading row, the default law's h_c/k_s there)]."""
         pair = materials.regime_pair(self.ctx, case.regime)
-        rows = {}
-        for branch in ("loading", "unloading"):
-            c = self.store.curve(self.key(case, seed, peak, branch))
-            rows[branch] = [solves.at(c, f * peak) for f in FRACTIONS]
-            if not all(rows[branch]):
-                raise SystemExit(f"unloading: {case.label} {case.regime} seed {seed} peak {peak} {branch} is not at "
-                                 "the loads")
+        rows = {branch: self.rows(case, seed, peak, branch) for branch in ("loading", "unloading")}
         given = self.given[(case.name, 1)]  # the surface as described (on L), as the law takes it
         law = fitting.law(self.ctx.rc(), self.ctx.rc().FittedElastoPlasticConstants(),
                           fitting.Points([given.point(f * peak * pair.Eprime, pair) for f in FRACTIONS]))
         return list(zip(FRACTIONS, rows["loading"], rows["unloading"], (float(v) for v in law)))
+
+
+def pair_label(regime):
+    """The regime's pair as the tables name it ("steel on steel")."""
+    return next(lab for key, lab, _ in materials.REGIMES if key == regime).replace("capped: ", "")
 
 
 def solve(ctx):
@@ -570,7 +575,7 @@ def outputs(ctx):
     # their range) and the branch's.
     periods = []
     for name, regime, peak in d.period_check:
-        label = next(lab for key, lab, _ in materials.REGIMES if key == regime).replace("capped: ", "")
+        label = pair_label(regime)
         for f in FRACTIONS[1:]:
             here = {int(r["period_L"]): r for r in below if r["spectrum"] == name and r["regime"] == regime
                     and float(r["peak_p_per_Eprime"]) == peak and abs(float(r["fraction"]) / f - 1) < 1e-5}
@@ -716,7 +721,7 @@ def resolution(s):
     free of the seeds' scatter)."""
     rows = []
     for c, peak, fine in s.resolution_cases():
-        label = next(lab for key, lab, _ in materials.REGIMES if key == c.regime).replace("capped: ", "")
+        label = pair_label(c.regime)
         for f in FRACTIONS[1:]:
             coarse = [s.ratio(c, seed, peak, f) for seed in s.design.resolution_seeds]
             finer = [s.ratio(c, seed, peak, f, fine) for seed in s.design.resolution_seeds]
@@ -740,7 +745,7 @@ def clustering(s, below):
     fewer, larger patches (geometric means over the seeds)."""
     rows = []
     for regime in ("steelSteel", "copperCopper"):
-        label = next(lab for key, lab, _ in materials.REGIMES if key == regime).replace("capped: ", "")
+        label = pair_label(regime)
         mine = [r for r in below if r["regime"] == regime and r["role"] in COUNTED and r["role"] != STIFF
                 and abs(float(r["peak_p_per_Eprime"]) / 1e-4 - 1) < 1e-9]
         for name in sorted(dict.fromkeys(r["spectrum"] for r in mine), key=lambda n: s.given[(n, 1)].bandwidth):
@@ -765,7 +770,7 @@ def misses_table(s, below):
     rows = []
     for r in counted[:max(WORST, outside)]:
         given = s.given[(r["spectrum"], 1)]
-        pair = next(lab for key, lab, _ in materials.REGIMES if key == r["regime"]).replace("capped: ", "")
+        pair = pair_label(r["regime"])
         rows.append([r["spectrum"], f"{given.fine_hurst:.2f}", f"{given.bandwidth:.3f}", r["role"], pair,
                      f"{float(r['peak_x']):.0e}", f"{float(r['peak_over_H']):.2g}", f"{float(r['fraction']):.2g}",
                      f"{float(r['unloading_over_loading_h']):.2f} ({float(r['ratio_min']):.2f}-"
