@@ -20,7 +20,11 @@ solves x = 1e-3 on periods of 8L (grid 8N, seeds 1-6): copper on five spectra (t
 held out) and steel on one; there 8L stands for the peak, fitted or held out as its spectrum is.
 The resolution check puts copper's surfaces of 4L on the held-out Hurst-0.4 shape at x = 1e-3
 (seeds 1-3), whose ratio is below 1, on a grid twice as fine (the CLI's --resample: the same
-surfaces): is that ratio the grid's?
+surfaces): is that ratio the grid's? The convergence check solves copper at x = 1e-3 on the
+fitted Hurst-0.5 spectrum on periods of 16L (seeds 1-6) on a grid of 8N, half the study's
+resolution (the CLI synthesizes up to 4096^2), beside its 8L put on that resolution (the
+resolution check again: the same surfaces, grid 4N): does the ratio that falls from L to 8L
+settle? Neither fitted nor counted.
 Where a fitted or held-out peak has a larger period, its smaller ones are shown beside it but
 neither fitted nor held to the branch: the larger period is nearer the joint (periods of L keep
 up to 1.4 times what 4L keep there; 8L keep up to 19 % less than 4L on copper: periods.md).
@@ -83,8 +87,10 @@ FIXED = {# The study's nearest fraction below the peak is a half: every q above 
          # (Hertz on its flattened top): h_u/h_l = s^(-1/6) (docs/theory.md §5.7c).
          "unloadingIsolated": (0.1667, "e_1 = 1/6: the deep-unloading power of 1/s of isolated fully plastic "
                                        "Hertzian summits, the light-peak term's most")}
-# resample: the grid a resolution check's surface is put on (the CLI's --resample), empty otherwise.
-KEYS = ["surface", "regime", "grid", "resample", "seed", "peak", "branch"]
+# grid: the N of the CLI's --synthesize; period: the surface's period in L (grid/N but on the
+# convergence check's coarser grid); resample: the grid a resolution check's surface is put on
+# (the CLI's --resample), empty otherwise.
+KEYS = ["surface", "regime", "grid", "period", "resample", "seed", "peak", "branch"]
 GRADIENT = 0.1  # h' of the spectra: x = p/(E' h') sets the peaks
 # Stiff pairs: two of MORE_TRAINING's spectra at a tenth and at 0.3 of the slope, h' = 0.01 and
 # 0.03, so that steel and hardened steel have gamma = 1.8 and 4.3, and 0.6 and 1.4, between the
@@ -103,9 +109,10 @@ class Case:
     """A spectrum on a regime: its seeds, its role (one of ROLES), the period kL it is
     solved on (grid kN), its peaks p/E' and its spectrum's h'."""
 
-    def __init__(self, name, regime, seeds, role, k, peaks, gradient=GRADIENT):
+    def __init__(self, name, regime, seeds, role, k, peaks, gradient=GRADIENT, coarsening=1):
         self.name, self.regime, self.seeds, self.role, self.k, self.peaks = name, regime, seeds, role, k, peaks
         self.gradient = gradient
+        self.coarsening = coarsening  # the grid is kN/coarsening: the convergence check's 16L
 
     @property
     def label(self):
@@ -119,6 +126,7 @@ LARGE_8L, LARGE_8L_HELD_OUT = "fitted, period 8L", "held out, period 8L"
 LIGHTEST = "lightest peak, period 4L"  # hardened steel at x = 1e-4: P_max/H below every fitted peak's
 PAIRS_CHECK = "pairs check, 4L"  # the other two pairs at x = 1e-3 on periods of 4L
 STIFF = "stiff pairs, h' = 0.01 and 0.03"  # plasticity index gamma 0.6 to 4.3, beyond the fitted 0.04-0.43
+CONVERGENCE = "convergence check, 16L"  # not among Design.cases: neither fitted nor counted
 # A peak on periods of L that a fitted or held-out period of 4L was solved for too, and one on
 # periods of 4L that a period of 8L was (same spectrum, pair and peak; the pairs check is a check
 # only): the larger period is nearer the joint (one period of L keeps up to 1.4 times what 4L
@@ -142,7 +150,7 @@ class Design:
             self.light_regimes, self.light_period = [], 4
             self.light_seeds, self.held_out_light_seeds, self.lightest_regimes = {}, {}, []
             self.period_check, self.pairs_check, self.stiff = [], [], []
-            self.resolution, self.resolution_seeds = [], []
+            self.resolution, self.convergence = [], []
         else:
             self.N, self.seeds, self.peaks = 512, [1, 2, 3, 4, 5, 6], [1e-4, 1e-3, 1e-2]
             self.regimes = [key for key, _, pair in materials.REGIMES if pair is not None]
@@ -175,9 +183,19 @@ class Design:
             # held-out Hurst-0.4 shape on periods of 4L (R 0.89-0.97 there), the same surfaces
             # (seeds 1-3) put on a grid twice as fine each way (the CLI's --resample: the same
             # Fourier series, 16 points per shortest wave instead of 8): (name, regime, peak, k,
-            # refinement).
-            self.resolution = [("hurst04rolloff1", "copperCopper", 1e-4, 4, 2)]
-            self.resolution_seeds = [1, 2, 3]
+            # refinement, seeds). The convergence check's coarser grid is checked the same way: the
+            # fitted Hurst-0.5 spectrum's copper on 8L at 4 points per shortest wave (seeds 1-6).
+            self.resolution = [("hurst04rolloff1", "copperCopper", 1e-4, 4, 2, [1, 2, 3]),
+                               ("selfAffine05", "copperCopper", 1e-4, 8, 0.5, self.seeds)]
+            # The convergence check: copper's periods of 8L keep less than its 4L on the spectra
+            # of least W (0.86 against 1.03 at a thirtieth of x = 1e-3 on the fitted Hurst-0.5
+            # one, 1.48 on L): does the ratio settle or fall on? That peak on periods of 16L, on a
+            # grid of 8N (the CLI synthesizes up to 4096^2; 4 points per shortest wave, against
+            # which the resolution check holds 8L): (name, regime, peak, k, coarsening). Seeds 1-6;
+            # neither fitted nor counted (one spectrum, a coarser grid). The phases of a seed are
+            # drawn on the grid's indices: on the same grid its 16L surface shares its 8L one's
+            # phases, its waves an octave longer (paired with 8L, not independent of it).
+            self.convergence = [("selfAffine05", "copperCopper", 1e-4, 16, 2)]
             # Aluminium on steel and hardened steel at x = 1e-3 on periods of 4L on all ten
             # spectra: the pairs the light end's periods of 4L leave out, held to the branch,
             # never fitted. Seeds 1-6: on three seeds a point's ratios spread by up to a factor
@@ -259,7 +277,7 @@ class Study:
                          for name, hurst, rolloff, gradient in shapes + list(d.stiff)})
         # {(name, k): the spectrum file on the period kL}
         self.spectrum = {(name, 1): path for name, path in spectrum.items()}
-        for c in self.cases:
+        for c in self.cases + self.convergence_cases():
             if (c.name, c.k) not in self.spectrum:
                 self.spectrum[(c.name, c.k)] = spectra.on_period(ctx, spectrum[c.name], c.k)
         self.store = solves.Store(ctx, "unloading", KEYS)
@@ -276,30 +294,54 @@ class Study:
         return list(zip((float(a) for a in model.area_fraction(P)),
                         (float(a) for a in model.area_fraction(P, unload_from=peak * pair.Eprime))))
 
+    def grid(self, case):
+        """The N of the case's N x N surfaces (--synthesize)."""
+        return self.design.N * case.k // case.coarsening
+
     def key(self, case, seed, peak, branch, resample=None):
-        return {"surface": case.name, "regime": case.regime, "grid": self.design.N * case.k, "resample": resample,
-                "seed": seed, "peak": peak, "branch": branch}
+        return {"surface": case.name, "regime": case.regime, "grid": self.grid(case), "period": case.k,
+                "resample": resample, "seed": seed, "peak": peak, "branch": branch}
+
+    def seed_label(self, case):
+        return f"seeds {case.seeds[0]}-{case.seeds[-1]}"
+
+    def on_8l(self, case):
+        """The period check's case (8L) a convergence check's case extends."""
+        return next(e for e in self.cases
+                    if e.name == case.name and e.regime == case.regime and e.k == 8 and case.peaks[0] in e.peaks)
+
+    def convergence_cases(self):
+        """[Case] of the convergence check: a period check's case (8L) on the larger period it
+        names, on a grid `coarsening` times as coarse as the study's."""
+        out = []
+        for name, regime, peak, k, coarsening in self.design.convergence:
+            case = Case(name, regime, self.design.seeds, CONVERGENCE, k, [peak], coarsening=coarsening)
+            if not any(c.name == name and c.regime == regime and c.k == 8 and peak in c.peaks for c in self.cases):
+                raise SystemExit(f"unloading: the convergence check's {name} {regime} x = {peak / GRADIENT:g} is not "
+                                 "a case of the period check (8L)")
+            out.append(case)
+        return out
 
     def resolution_cases(self):
-        """[(case, peak, the finer grid)] of the resolution check: the case solved on the period it
-        names, its surfaces put on a grid `refinement` times as fine."""
+        """[(case, peak, the other grid, seeds)] of the resolution check: the case solved on the
+        period it names, its surfaces put on a grid `refinement` times as fine."""
         out = []
-        for name, regime, peak, k, refinement in self.design.resolution:
+        for name, regime, peak, k, refinement, seeds in self.design.resolution:
             case = next((c for c in self.cases if c.name == name and c.regime == regime and c.k == k and peak in c.peaks),
                         None)
             if case is None:
                 raise SystemExit(f"unloading: the resolution check's {name} {regime} x = {peak / GRADIENT:g} on {k}L "
                                  "is not a case of the study")
-            out.append((case, peak, self.design.N * k * refinement))
+            out.append((case, peak, int(self.design.N * k * refinement), seeds))
         return out
 
     def solves(self):
         out = []
         d = self.design
-        for c in self.cases:
+        for c in self.cases + self.convergence_cases():
             pair = materials.regime_pair(self.ctx, c.regime)
             for seed in c.seeds:
-                base = (["--spectrum", self.spectrum[(c.name, c.k)], "--synthesize", f"{d.N * c.k},{seed}", "--model",
+                base = (["--spectrum", self.spectrum[(c.name, c.k)], "--synthesize", f"{self.grid(c)},{seed}", "--model",
                          "boundaryElement"] + pair.arguments + ["--hardness-from-yield"])
                 for peak in c.peaks:
                     loads = [f * peak for f in FRACTIONS]
@@ -307,11 +349,11 @@ class Study:
                     out.append(solves.Solve(self.key(c, seed, peak, "unloading"),
                                             base + ["--unload-from", f"{peak * pair.Eprime:.17g}"], loads,
                                             solves.UNLOADING_COLUMNS))
-        for c, peak, fine in self.resolution_cases():
+        for c, peak, fine, seeds in self.resolution_cases():
             pair = materials.regime_pair(self.ctx, c.regime)
             loads = [f * peak for f in FRACTIONS]
-            for seed in d.resolution_seeds:
-                base = (["--spectrum", self.spectrum[(c.name, c.k)], "--synthesize", f"{d.N * c.k},{seed}",
+            for seed in seeds:
+                base = (["--spectrum", self.spectrum[(c.name, c.k)], "--synthesize", f"{self.grid(c)},{seed}",
                          "--resample", str(fine), "--model", "boundaryElement"] + pair.arguments +
                         ["--hardness-from-yield"])
                 out.append(solves.Solve(self.key(c, seed, peak, "loading", fine), base, loads))
@@ -589,6 +631,12 @@ def outputs(ctx):
         return f"seeds {used[0]}-{used[-1]}" if used else "none"
     out.table("periods", ["spectrum", "pair", "peak x", "P/P_max", f"exact R, period L ({seeds(1)})",
                           f"4L ({seeds(4)})", f"8L ({seeds(8)})", "branch R"], periods)
+    for c in s.convergence_cases()[:1]:  # one table: its columns name the first case's grids
+        eight = s.on_8l(c)
+        out.table("convergence", ["spectrum", "pair", "peak x", "P/P_max",
+                                  f"exact R, 8L on {s.grid(eight)}^2 ({s.seed_label(eight)})",
+                                  f"8L on {s.grid(eight) // c.coarsening}^2 (the same surfaces)",
+                                  f"{c.k}L on {s.grid(c)}^2 ({s.seed_label(c)})", "branch R"], convergence(s, below))
     # What orders the spectra's hysteresis: per spectrum (sorted by H_f) what the law takes of it,
     # and the exact and the branch's ratio at the light peaks of L (P_max/H < 0.1) unloaded to a
     # tenth and a thirtieth (geometric means over the pairs and peaks).
@@ -623,8 +671,8 @@ def outputs(ctx):
               [f"{what}, P/P_max = {f:.2g}" for f in CLUSTERING_FRACTIONS
                for what in ("A_u/A_l", "R", "R / sqrt(A_u/A_l)")], clustering(s, below))
     out.table("resolution", ["spectrum", "pair", "peak x", "grids", "P/P_max", "exact R, study's grid",
-                             "exact R, finer grid", "finer / study's R, per seed",
-                             "finer / study's loading h, per seed"], resolution(s))
+                             "exact R, other grid", "other / study's R, per seed",
+                             "other / study's loading h, per seed"], resolution(s))
     # What H_f buys: the branch over the exact ratio per role, with the law's constants and with
     # the H_f terms left out and the rest refitted.
     pts = ratio_points(s)
@@ -720,15 +768,38 @@ def resolution(s):
     the coarse R and loading h (the same surface on both grids: their ratio is the grid's error,
     free of the seeds' scatter)."""
     rows = []
-    for c, peak, fine in s.resolution_cases():
+    for c, peak, fine, seeds in s.resolution_cases():
         label = pair_label(c.regime)
         for f in FRACTIONS[1:]:
-            coarse = [s.ratio(c, seed, peak, f) for seed in s.design.resolution_seeds]
-            finer = [s.ratio(c, seed, peak, f, fine) for seed in s.design.resolution_seeds]
-            rows.append([c.label, label, f"{peak / c.gradient:.0e}", f"{s.design.N * c.k}^2, {fine}^2", f"{f:.2g}",
+            coarse = [s.ratio(c, seed, peak, f) for seed in seeds]
+            finer = [s.ratio(c, seed, peak, f, fine) for seed in seeds]
+            rows.append([c.label, label, f"{peak / c.gradient:.0e}", f"{s.grid(c)}^2, {fine}^2", f"{f:.2g}",
                          f"{geometric_mean([r for r, _ in coarse]):.2f}", f"{geometric_mean([r for r, _ in finer]):.2f}",
                          pages.span([b[0] / a[0] for a, b in zip(coarse, finer)], 3),
                          pages.span([b[1] / a[1] for a, b in zip(coarse, finer)], 3)])
+    return rows
+
+
+def convergence(s, below):
+    """The convergence check's rows: per case and fraction below 1, the exact R (geometric mean
+    over the seeds, their range) on periods of 8L on the study's grid and on the check's coarser
+    one (the resolution check's: the same surfaces), on the larger period on the coarser grid,
+    and the branch's R."""
+    rows = []
+    for c in s.convergence_cases():
+        peak = c.peaks[0]
+        eight = s.on_8l(c)
+        coarse = next((grid, seeds) for e, pe, grid, seeds in s.resolution_cases()
+                      if e is eight and pe == peak and grid * c.coarsening == s.grid(eight))
+        for f in FRACTIONS[1:]:
+            cells = []
+            for case, resample, seeds in ((eight, None, eight.seeds), (eight, coarse[0], coarse[1]), (c, None, c.seeds)):
+                R = [s.ratio(case, seed, peak, f, resample)[0] for seed in seeds]
+                cells.append(f"{geometric_mean(R):.2f} ({min(R):.2f}-{max(R):.2f})")
+            branch = next(float(r["branch_ratio"]) for r in below if r["spectrum"] == c.name and r["regime"] == c.regime
+                          and int(r["period_L"]) == 8 and float(r["peak_p_per_Eprime"]) == peak
+                          and abs(float(r["fraction"]) / f - 1) < 1e-5)
+            rows.append([c.name, pair_label(c.regime), f"{peak / GRADIENT:.0e}", f"{f:.2g}"] + cells + [f"{branch:.2f}"])
     return rows
 
 
