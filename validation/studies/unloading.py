@@ -337,7 +337,6 @@ class Study:
 
     def solves(self):
         out = []
-        d = self.design
         for c in self.cases + self.convergence_cases():
             pair = materials.regime_pair(self.ctx, c.regime)
             for seed in c.seeds:
@@ -764,9 +763,9 @@ WORST = 6
 
 def resolution(s):
     """The resolution check's rows: per case and fraction below 1, the exact R on the study's grid
-    and on the finer one (the same surfaces, seeds' geometric means), and per seed the fine over
-    the coarse R and loading h (the same surface on both grids: their ratio is the grid's error,
-    free of the seeds' scatter)."""
+    and on the other one (the same surfaces, seeds' geometric means), and per seed the other grid's
+    over the study's R and loading h (the same surface on both grids: their ratio is the grid's
+    error, free of the seeds' scatter)."""
     rows = []
     for c, peak, fine, seeds in s.resolution_cases():
         label = pair_label(c.regime)
