@@ -788,8 +788,11 @@ def convergence(s, below):
     for c in s.convergence_cases():
         peak = c.peaks[0]
         eight = s.on_8l(c)
-        coarse = next((grid, seeds) for e, pe, grid, seeds in s.resolution_cases()
-                      if e is eight and pe == peak and grid * c.coarsening == s.grid(eight))
+        coarse = next(((grid, seeds) for e, pe, grid, seeds in s.resolution_cases()
+                       if e is eight and pe == peak and grid * c.coarsening == s.grid(eight)), None)
+        if coarse is None:
+            raise SystemExit(f"unloading: the convergence check's {c.label} {c.regime} has no resolution check "
+                             f"of its 8L on its grid ({s.grid(c)}^2)")
         for f in FRACTIONS[1:]:
             cells = []
             for case, resample, seeds in ((eight, None, eight.seeds), (eight, coarse[0], coarse[1]), (c, None, c.seeds)):
