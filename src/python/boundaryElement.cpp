@@ -168,6 +168,8 @@ void bindBoundaryElement(py::module_& m)
                 d["iterations"] = column([](const BoundaryElementPoint& q) { return q.iterations; });
                 d["residual"] = column([](const BoundaryElementPoint& q) { return q.residual; });
                 d["patch_correction_gain"] = column([](const BoundaryElementPoint& q) { return q.patchCorrectionGain; });
+                d["spots"] = column([](const BoundaryElementPoint& q) { return q.spots.count; });
+                d["mean_spot_radius"] = column([](const BoundaryElementPoint& q) { return q.spots.meanRadius(); });
                 if (const std::string warning = patchCorrectionWarning(points, x.model->reducedModulus(), "mirror=True"); !warning.empty()) {
                     py::module_::import("warnings").attr("warn")(warning, py::module_::import("builtins").attr("RuntimeWarning"), 1);
                 }
@@ -179,7 +181,8 @@ void bindBoundaryElement(py::module_& m)
             "that peak (the deformed surface unloaded elastically, loaded on with the cap above the peak; "
             "multiscaleContact --unload-from), as a dict of 1-D arrays: pressure [Pa], load (P/E'), "
             "area_fraction, plastic_fraction, mean_separation [m], conductance_per_conductivity [1/m], "
-            "iterations, residual (the columns of multiscaleContact --model boundaryElement), and "
+            "iterations, residual, spots, mean_spot_radius [m] (0 without a spot) (the columns of multiscaleContact "
+            "--model boundaryElement), and "
             "patch_correction_gain (a map solved padded: how many times 1/h_c = 1/h_spots - 1/h_patch multiplies "
             "an error of the spots' h; 1 periodic or mirrored). A RuntimeWarning when it exceeds 50 at some "
             "pressure: the map's h_c is not to be trusted there; solve it mirror=True.");

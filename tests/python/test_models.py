@@ -186,6 +186,8 @@ def test_boundary_element_equals_the_cli(cli, spectrum):
     np.testing.assert_allclose(curve["area_fraction"], c["area_fraction"], rtol=1e-9)
     np.testing.assert_allclose(curve["mean_separation"], c["separation"], rtol=1e-9)
     np.testing.assert_allclose(curve["conductance_per_conductivity"], c["h_per_k"], rtol=1e-9)
+    np.testing.assert_array_equal(curve["spots"], c["spots"])
+    np.testing.assert_allclose(curve["mean_spot_radius"], c["mean_spot_radius"], rtol=1e-9)
     assert math.isinf(bem.patch_conductance_per_conductivity)
     # area_fraction solves each pressure from scratch: the same contact set up to the tolerance.
     np.testing.assert_allclose(bem.area_fraction([2e6, 2e7]), c["area_fraction"], rtol=1e-6)
@@ -204,6 +206,7 @@ def test_boundary_element_unloads_as_the_cli(cli, spectrum):
     unloading = bem.curve([2e7, 1e8, 2e8], unload_from=2e8)
     np.testing.assert_allclose(unloading["area_fraction"], c["unloading_area_fraction"], rtol=1e-9)
     np.testing.assert_allclose(unloading["conductance_per_conductivity"], c["unloading_h_per_k"], rtol=1e-9)
+    np.testing.assert_array_equal(unloading["spots"], c["unloading_spots"])
     assert np.all(unloading["conductance_per_conductivity"][:2] > loading["conductance_per_conductivity"][:2])
     assert unloading["conductance_per_conductivity"][2] == pytest.approx(loading["conductance_per_conductivity"][2],
                                                                         rel=1e-3)

@@ -50,6 +50,18 @@ using namespace roughContact;
 
 namespace multiscaleContact {
 
+namespace {
+// "spots,mean_spot_radius," of a point (ContactSpots.hpp): the radius empty without a spot.
+void writeSpotCells(std::ostream& out, const ContactSpots& spots)
+{
+    out << spots.count << ',';
+    if (spots.count > 0) {
+        out << spots.meanRadius();
+    }
+    out << ',';
+}
+} // namespace
+
 // --model boundaryElement: the curve, one progress line on stderr per load once the run takes
 // longer than 2 s, then the whole CSV.
 int runBoundaryElement(const Options& o)
@@ -174,10 +186,12 @@ int runBoundaryElement(const Options& o)
     }
     out << (pressures.empty() ? "" : "nominal_pressure,")
         << "nominal_pressure_per_Eprime,area_fraction,contact_pressure_per_Eprime,separation,h_per_k,"
-        << (ks ? "h," : "") << (gap ? "gap_separation,h_gas,h_radiation," : "") << (gap && ks ? "h_total," : "")
+        << (ks ? "h," : "") << (gap ? "gap_separation,h_gas,h_radiation," : "")
+        << (gap && ks ? "h_total," : "") << "spots,mean_spot_radius,"
         << (peak ? "unloading_area_fraction,unloading_separation,unloading_h_per_k," : "")
         << (peak && ks ? "unloading_h," : "") << (peak && gap ? "unloading_h_gas,unloading_h_radiation," : "")
-        << (peak && gap && ks ? "unloading_h_total," : "") << "iterations,residual"
+        << (peak && gap && ks ? "unloading_h_total," : "")
+        << (peak ? "unloading_spots,unloading_mean_spot_radius," : "") << "iterations,residual"
         << (peak ? ",unloading_iterations,unloading_residual" : "") << "\n";
     for (std::size_t i = 0; i < points.size(); ++i) {
         const BoundaryElementPoint& p = points[i];
@@ -199,6 +213,7 @@ int runBoundaryElement(const Options& o)
                           p.conductancePerConductivity);
             out << cells.str().substr(1) << ',';
         }
+        writeSpotCells(out, p.spots);
         if (peak) {
             out << unloading[i].areaFraction << ',' << unloading[i].meanSeparation << ','
                 << unloading[i].conductancePerConductivity << ',';
@@ -215,6 +230,7 @@ int runBoundaryElement(const Options& o)
                                       ks, unloading[i].conductancePerConductivity);
                 out << cells.str().substr(1) << ',';
             }
+            writeSpotCells(out, unloading[i].spots);
         }
         out << p.iterations << ',' << p.residual;
         if (peak) {

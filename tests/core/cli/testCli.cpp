@@ -558,6 +558,15 @@ TEST(Cli, BoundaryElementIsTheLibrarys)
         EXPECT_NEAR(std::stod(row.at(column(csv, "separation"))), p.meanSeparation, 1e-3 * p.meanSeparation);
         EXPECT_GT(std::stod(row.at(column(csv, "iterations"))), 0.0);
         EXPECT_LE(std::stod(row.at(column(csv, "residual"))), 1e-8);
+        // The contact set's spots (ContactSpots): a cell that differs may make or join a spot,
+        // so the count is held to within one and the mean radius where the counts agree.
+        const double spots = std::stod(row.at(column(csv, "spots")));
+        EXPECT_GT(spots, 0.0);
+        EXPECT_NEAR(spots, double(p.spots.count), 1.0);
+        if (spots == double(p.spots.count)) {
+            EXPECT_NEAR(std::stod(row.at(column(csv, "mean_spot_radius"))), p.spots.meanRadius(),
+                        1e-2 * p.spots.meanRadius());
+        }
     }
     // --pressure-map: the field at the highest load, a matrix the areal reader reads back,
     // whose mean is the nominal pressure F/A_n = load E' (to the solver's load balance, 1e-9).
@@ -624,6 +633,10 @@ TEST(Cli, UnloadFromAddsTheJointThatCarriedThePeak)
         EXPECT_NEAR(value("unloading_area_fraction"), path[i].areaFraction, 2.0 / (64 * 64));
         EXPECT_NEAR(value("unloading_h_per_k"), path[i].conductancePerConductivity,
                     1e-3 * path[i].conductancePerConductivity);
+        // The same load path as the library's: its spots to the digit printed.
+        EXPECT_EQ(value("unloading_spots"), double(path[i].spots.count));
+        EXPECT_NEAR(value("unloading_mean_spot_radius"), path[i].spots.meanRadius(),
+                    1e-9 * path[i].spots.meanRadius());
         if (i < 2) {
             EXPECT_GT(value("unloading_h_per_k"), value("h_per_k"));
         } else {
@@ -1202,8 +1215,9 @@ TEST(Cli, ColumnNamesSayWhatTheyAre)
     const CommandResult bem =
         run("--profile '" + standin + "' --synthesize 16 --model boundaryElement --Eprime 2e11 --loads 1e-4");
     ASSERT_EQ(bem.status, 0) << bem.err;
-    EXPECT_EQ(header(bem), "nominal_pressure_per_Eprime,area_fraction,contact_pressure_per_Eprime,separation,h_per_k,"
-                           "iterations,residual");
+    EXPECT_EQ(header(bem),
+              "nominal_pressure_per_Eprime,area_fraction,contact_pressure_per_Eprime,separation,h_per_k,"
+              "spots,mean_spot_radius,iterations,residual");
     const CommandResult gap = run(p + " --loads 1e-5 --gas air --temperature 300 --k1 50 --k2 50");
     ASSERT_EQ(gap.status, 0) << gap.err;
     EXPECT_EQ(header(gap), "nominal_pressure_per_Eprime,area_fraction,contact_pressure_per_Eprime,separation,h_per_k,h,"

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughContact/models/BoundaryElement.hpp"
 
+#include "roughContact/Constants.hpp"
 #include "roughContact/Error.hpp"
 #include "roughContact/Limits.hpp"
 
@@ -101,6 +102,8 @@ BoundaryElementPoint BoundaryElementModel::solve(double load, std::vector<double
         out.conductancePerConductivity = std::numeric_limits<double>::infinity();
         out.spotsConductancePerConductivity = patchConductance_;
         out.patchCorrectionGain = 1.0; // nothing is subtracted: complete contact is exact
+        const double nominalArea = static_cast<double>(op_->size()) * op_->dx() * op_->dy();
+        out.spots = {1, std::sqrt(nominalArea / pi), nominalArea};
         return out;
     }
     ContactSolution s = solver_->solve(P, warmStart);
@@ -119,6 +122,8 @@ BoundaryElementPoint BoundaryElementModel::solve(double load, std::vector<double
     for (std::size_t i = 0; i < contact.size(); ++i) {
         contact[i] = s.pressure[i] > 0.0;
     }
+    out.spots = contactSpots(contact, op_->nx(), op_->ny(), op_->dx(), op_->dy(),
+                             op_->periodic() && !op_->mirrored());
     const SpotConductance c = spotConductance(*op_, contact, conductanceTolerance, options_.maxIterations,
                                               warmFlux, flux, options_.precondition, options_.progress,
                                               options_.progressEvery);

@@ -3,6 +3,7 @@
 // a contact model, with the exact contact conductance of its contact set.
 #pragma once
 
+#include "roughContact/bem/ContactSpots.hpp"
 #include "roughContact/bem/HalfSpaceOperator.hpp"
 #include "roughContact/bem/PolonskyKeer.hpp"
 #include "roughContact/models/ContactModel.hpp"
@@ -81,6 +82,9 @@ struct BoundaryElementPoint {
     /// (every point flows: complete contact, exact without a correction). Above
     /// patchCorrectionGainLimit the padded answer is not to be trusted (patchCorrectionWarning).
     double patchCorrectionGain = 1.0;
+    /// The contact set's spots (ContactSpots.hpp): across the period's edges when periodic; a
+    /// mirrored map's on the map itself; one spot, the whole grid, at complete contact (P >= H).
+    ContactSpots spots;
     std::size_t iterations = 0;              ///< contact solve
     double residual = 0.0;                   ///< contact solve
     std::size_t conductanceIterations = 0;
