@@ -30,6 +30,11 @@ CLI_COLUMNS = {"nominal_pressure_per_Eprime": "load", "area_fraction": "area_fra
 UNLOADING_COLUMNS = {"nominal_pressure_per_Eprime": "load", "unloading_area_fraction": "area_fraction",
                      "unloading_separation": "separation_m", "unloading_h_per_k": "h_per_k_per_m",
                      "unloading_iterations": "iterations", "unloading_residual": "residual"}
+# A curve's contact spots besides (a store whose values are VALUES + SPOT_VALUES).
+SPOT_VALUES = ["spots", "mean_spot_radius_m"]
+SPOT_COLUMNS = {**CLI_COLUMNS, "spots": "spots", "mean_spot_radius": "mean_spot_radius_m"}
+UNLOADING_SPOT_COLUMNS = {**UNLOADING_COLUMNS, "unloading_spots": "spots",
+                          "unloading_mean_spot_radius": "mean_spot_radius_m"}
 
 
 class Solve:
@@ -53,14 +58,16 @@ def run_cli(ctx, arguments, what):
 
 
 class Store:
-    """A study's table of exact solves (validation/data/NAME.csv), its key columns first."""
+    """A study's table of exact solves (validation/data/NAME.csv), its key columns first, then
+    `values`; `study`: the study that remakes it (NAME when None)."""
 
-    def __init__(self, ctx, name, keys):
+    def __init__(self, ctx, name, keys, values=VALUES, study=None):
         self.ctx = ctx
         self.name = name
+        self.study = study or name
         self.keys = list(keys)
         self.path = os.path.join(ctx.data, name + ".csv")
-        self.table = tables.Table.read(self.path, self.keys + VALUES)
+        self.table = tables.Table.read(self.path, self.keys + list(values))
         self._index = None
 
     def index(self):
@@ -91,7 +98,7 @@ class Store:
         self.table.sort(self.keys + ["load"])
         self.table.write(self.path)
         if not self.ctx.quick:
-            tables.record(self.ctx.data, self.name + ".csv", f"python3 -m validation run {self.name}")
+            tables.record(self.ctx.data, self.name + ".csv", f"python3 -m validation run {self.study}")
 
     def solve(self, solves):
         """Runs the solves not in the table, ctx.jobs at a time (each on one thread: solves that
@@ -100,7 +107,7 @@ class Store:
         if self.ctx.checking:
             if todo:
                 raise SystemExit(f"validation: {len(todo)} solves of {self.ctx.relative(self.path)} are missing "
-                                 f"(the first: {todo[0].name()}); python3 -m validation run {self.name} solves them")
+                                 f"(the first: {todo[0].name()}); python3 -m validation run {self.study} solves them")
             return 0
         if not todo:
             return 0

@@ -24,7 +24,10 @@ surfaces): is that ratio the grid's? The convergence check solves copper at x = 
 fitted Hurst-0.5 spectrum on periods of 16L (seeds 1-6) on a grid of 8N, half the study's
 resolution (the CLI synthesizes up to 4096^2), beside its 8L put on that resolution (the
 resolution check again: the same surfaces, grid 4N): does the ratio that falls from L to 8L
-settle? Neither fitted nor counted.
+settle? Neither fitted nor counted. The spots check solves seeds 1-3 of four 8L cases again at a
+tenth and a thirtieth of the peak with their contact spots (unloadingSpots.csv; the CLI's spots
+columns): how many spots carry the load on the way up and on the way down, and Holm's R of
+independent spots beside the exact R. Neither fitted nor counted.
 Where a fitted or held-out peak has a larger period, its smaller ones are shown beside it but
 neither fitted nor held to the branch: the larger period is nearer the joint (periods of L keep
 up to 1.4 times what 4L keep there; 8L keep up to 19 % less than 4L on copper: periods.md).
@@ -45,7 +48,7 @@ from ..tables import Table
 from .blindSpectra import SHAPES as HELD_OUT
 from .engineeringRange import SELF_AFFINE, self_affine_spectra, geometric_mean
 
-DATA = ["unloading.csv"]
+DATA = ["unloading.csv", "unloadingSpots.csv"]
 # Training spectra beside the engineering range's three (Hurst 0.3, 0.5 and 0.8): the unloading
 # ratio grows with the Hurst exponent, so the fit needs it from 0.6 to 1 (blindSpectra's
 # shapes, held out, lie within: Hurst 0.4 to 0.9).
@@ -150,7 +153,7 @@ class Design:
             self.light_regimes, self.light_period = [], 4
             self.light_seeds, self.held_out_light_seeds, self.lightest_regimes = {}, {}, []
             self.period_check, self.pairs_check, self.stiff = [], [], []
-            self.resolution, self.convergence = [], []
+            self.resolution, self.convergence, self.spots = [], [], []
         else:
             self.N, self.seeds, self.peaks = 512, [1, 2, 3, 4, 5, 6], [1e-4, 1e-3, 1e-2]
             self.regimes = [key for key, _, pair in materials.REGIMES if pair is not None]
@@ -196,6 +199,16 @@ class Design:
             # drawn on the grid's indices: on the same grid its 16L surface shares its 8L one's
             # phases, its waves an octave longer (paired with 8L, not independent of it).
             self.convergence = [("selfAffine05", "copperCopper", 1e-4, 16, 2)]
+            # The spots check: how many contact spots carry the load on the way up and on the way
+            # down, and Holm's R of independent spots (the sum of their radii, unloading over
+            # loading), at SPOT_FRACTIONS after x = 1e-3 on periods of 8L: copper on the two
+            # spectra of least W (the branch's misses) and on the held-out Hurst-0.7 shape, steel
+            # on the Hurst-0.5 one (name, regime, peak, k, seeds). The same surfaces as the period
+            # check's; its own table (unloadingSpots.csv), neither fitted nor counted.
+            self.spots = [("selfAffine05", "copperCopper", 1e-4, 8, [1, 2, 3]),
+                          ("hurst04rolloff1", "copperCopper", 1e-4, 8, [1, 2, 3]),
+                          ("hurst07rolloff3", "copperCopper", 1e-4, 8, [1, 2, 3]),
+                          ("selfAffine05", "steelSteel", 1e-4, 8, [1, 2, 3])]
             # Aluminium on steel and hardened steel at x = 1e-3 on periods of 4L on all ten
             # spectra: the pairs the light end's periods of 4L leave out, held to the branch,
             # never fitted. Seeds 1-6: on three seeds a point's ratios spread by up to a factor
@@ -281,6 +294,7 @@ class Study:
             if (c.name, c.k) not in self.spectrum:
                 self.spectrum[(c.name, c.k)] = spectra.on_period(ctx, spectrum[c.name], c.k)
         self.store = solves.Store(ctx, "unloading", KEYS)
+        self.spot_store = solves.Store(ctx, "unloadingSpots", KEYS, solves.VALUES + solves.SPOT_VALUES, "unloading")
         rc = ctx.rc()
         self.given = {key: surrogates.LawInputs(rc, rc.SurfaceSpec.spectrum(path)) for key, path in self.spectrum.items()}
         self.levels = {key: rc.SurfaceSpec.spectrum(path).read_spectrum() for key, path in self.spectrum.items()}
@@ -333,6 +347,33 @@ class Study:
                 raise SystemExit(f"unloading: the resolution check's {name} {regime} x = {peak / GRADIENT:g} on {k}L "
                                  "is not a case of the study")
             out.append((case, peak, int(self.design.N * k * refinement), seeds))
+        return out
+
+    def spot_cases(self):
+        """[(case, peak, seeds)] of the spots check: a case of the study on the period it names."""
+        out = []
+        for name, regime, peak, k, seeds in self.design.spots:
+            case = next((c for c in self.cases if c.name == name and c.regime == regime and c.k == k and peak in c.peaks),
+                        None)
+            if case is None:
+                raise SystemExit(f"unloading: the spots check's {name} {regime} x = {peak / GRADIENT:g} on {k}L "
+                                 "is not a case of the study")
+            out.append((case, peak, seeds))
+        return out
+
+    def spot_solves(self):
+        """The spots check's solves: loading and unloading at SPOT_FRACTIONS of the peak."""
+        out = []
+        for c, peak, seeds in self.spot_cases():
+            pair = materials.regime_pair(self.ctx, c.regime)
+            loads = [f * peak for f in SPOT_FRACTIONS]
+            for seed in seeds:
+                base = (["--spectrum", self.spectrum[(c.name, c.k)], "--synthesize", f"{self.grid(c)},{seed}", "--model",
+                         "boundaryElement"] + pair.arguments + ["--hardness-from-yield"])
+                out.append(solves.Solve(self.key(c, seed, peak, "loading"), base, loads, solves.SPOT_COLUMNS))
+                out.append(solves.Solve(self.key(c, seed, peak, "unloading"),
+                                        base + ["--unload-from", f"{peak * pair.Eprime:.17g}"], loads,
+                                        solves.UNLOADING_SPOT_COLUMNS))
         return out
 
     def solves(self):
@@ -394,6 +435,7 @@ def pair_label(regime):
 def solve(ctx):
     s = Study(ctx)
     s.store.solve(s.solves())
+    s.spot_store.solve(s.spot_solves())
 
 
 class Ratios:
@@ -669,6 +711,11 @@ def outputs(ctx):
     out.table("clustering", ["spectrum", "W", "H_f", "pair", "period"] +
               [f"{what}, P/P_max = {f:.2g}" for f in CLUSTERING_FRACTIONS
                for what in ("A_u/A_l", "R", "R / sqrt(A_u/A_l)")], clustering(s, below))
+    for c, peak, seeds in s.spot_cases()[:1]:  # one table: its header names the first case's period and seeds
+        out.table("spots", ["spectrum", "W", "pair", "peak x", "P/P_max",
+                            f"exact R, {c.k}L (seeds {seeds[0]}-{seeds[-1]})", "spots, loading",
+                            "spots, unloading", "Holm's R: sum of radii, unloading / loading", "exact R / Holm's R"],
+                  spots_table(s))
     out.table("resolution", ["spectrum", "pair", "peak x", "grids", "P/P_max", "exact R, study's grid",
                              "exact R, other grid", "other / study's R, per seed",
                              "other / study's loading h, per seed"], resolution(s))
@@ -807,6 +854,14 @@ def convergence(s, below):
 
 # The fractions the clustering table shows: deep, where the exact ratio differs most between spectra.
 CLUSTERING_FRACTIONS = (FRACTIONS[-2], FRACTIONS[-1])
+# ... and the spots check solves.
+SPOT_FRACTIONS = CLUSTERING_FRACTIONS
+# How far the spots check's R may lie from the study's on the same surface: its loads are the
+# study's two lowest, solved in the same order from the same warm starts, so its h are the
+# study's to the digits printed (they are); 1e-3 leaves room for a solver change between the two
+# runs (its tolerance is 1e-8, and a contact set a cell apart moves h by far less), none for
+# another surface.
+SAME_SURFACE = 1e-3
 
 
 def clustering(s, below):
@@ -831,6 +886,41 @@ def clustering(s, below):
                 area, ratio = float(r["unloading_over_loading_area"]), float(r["unloading_over_loading_h"])
                 row += [f"{area:.2f}", f"{ratio:.2f}", f"{ratio / area ** 0.5:.2f}"]
             rows.append(row)
+    return rows
+
+
+def spots_table(s):
+    """The spots check's rows: per case and fraction, the exact R (the seeds' geometric mean and
+    range), the spots on the way up and down (the seeds' range), Holm's R of independent spots,
+    the sum of their radii unloading over loading (geometric mean and range), and R over it. Its
+    R is held to the study's on the same surfaces (SAME_SURFACE)."""
+    rows = []
+    for c, peak, seeds in s.spot_cases():
+        for f in SPOT_FRACTIONS:
+            R, holm, up, down = [], [], [], []
+            for seed in seeds:
+                loading, unloading = (solves.at(s.spot_store.curve(s.key(c, seed, peak, b)), f * peak)
+                                      for b in ("loading", "unloading"))
+                if loading is None or unloading is None:
+                    raise SystemExit(f"unloading: the spots check's {c.label} {c.regime} seed {seed} is not at "
+                                     f"P/P_max = {f:.2g}")
+                r = float(unloading["h_per_k_per_m"]) / float(loading["h_per_k_per_m"])
+                study = s.ratio(c, seed, peak, f)[0]
+                if abs(r / study - 1) > SAME_SURFACE:
+                    raise SystemExit(f"unloading: the spots check's R of {c.label} {c.regime} seed {seed} at "
+                                     f"P/P_max = {f:.2g} is {r:.6g}, the study's {study:.6g}: not the same surface")
+                n_up, n_down = int(loading["spots"]), int(unloading["spots"])
+                radii = [n * float(row["mean_spot_radius_m"]) for n, row in ((n_up, loading), (n_down, unloading))]
+                R.append(r)
+                holm.append(radii[1] / radii[0])
+                up.append(n_up)
+                down.append(n_down)
+            rows.append([c.name, f"{s.given[(c.name, 1)].bandwidth:.3f}", pair_label(c.regime),
+                         f"{peak / c.gradient:.0e}", f"{f:.2g}",
+                         f"{geometric_mean(R):.2f} ({min(R):.2f}-{max(R):.2f})",
+                         f"{min(up)}-{max(up)}", f"{min(down)}-{max(down)}",
+                         f"{geometric_mean(holm):.2f} ({min(holm):.2f}-{max(holm):.2f})",
+                         pages.span([a / b for a, b in zip(R, holm)])])
     return rows
 
 
