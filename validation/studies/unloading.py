@@ -361,6 +361,13 @@ class Study:
             out.append((case, peak, seeds))
         return out
 
+    def arguments(self, case, seed, resample=None):
+        """The CLI's arguments of a case's capped surface on a seed (on the grid `resample`)."""
+        pair = materials.regime_pair(self.ctx, case.regime)
+        return (["--spectrum", self.spectrum[(case.name, case.k)], "--synthesize", f"{self.grid(case)},{seed}"] +
+                (["--resample", str(resample)] if resample else []) + ["--model", "boundaryElement"] +
+                pair.arguments + ["--hardness-from-yield"])
+
     def spot_solves(self):
         """The spots check's solves: loading and unloading at SPOT_FRACTIONS of the peak."""
         out = []
@@ -368,8 +375,7 @@ class Study:
             pair = materials.regime_pair(self.ctx, c.regime)
             loads = [f * peak for f in SPOT_FRACTIONS]
             for seed in seeds:
-                base = (["--spectrum", self.spectrum[(c.name, c.k)], "--synthesize", f"{self.grid(c)},{seed}", "--model",
-                         "boundaryElement"] + pair.arguments + ["--hardness-from-yield"])
+                base = self.arguments(c, seed)
                 out.append(solves.Solve(self.key(c, seed, peak, "loading"), base, loads, solves.SPOT_COLUMNS))
                 out.append(solves.Solve(self.key(c, seed, peak, "unloading"),
                                         base + ["--unload-from", f"{peak * pair.Eprime:.17g}"], loads,
@@ -381,8 +387,7 @@ class Study:
         for c in self.cases + self.convergence_cases():
             pair = materials.regime_pair(self.ctx, c.regime)
             for seed in c.seeds:
-                base = (["--spectrum", self.spectrum[(c.name, c.k)], "--synthesize", f"{self.grid(c)},{seed}", "--model",
-                         "boundaryElement"] + pair.arguments + ["--hardness-from-yield"])
+                base = self.arguments(c, seed)
                 for peak in c.peaks:
                     loads = [f * peak for f in FRACTIONS]
                     out.append(solves.Solve(self.key(c, seed, peak, "loading"), base, loads))
@@ -393,9 +398,7 @@ class Study:
             pair = materials.regime_pair(self.ctx, c.regime)
             loads = [f * peak for f in FRACTIONS]
             for seed in seeds:
-                base = (["--spectrum", self.spectrum[(c.name, c.k)], "--synthesize", f"{self.grid(c)},{seed}",
-                         "--resample", str(fine), "--model", "boundaryElement"] + pair.arguments +
-                        ["--hardness-from-yield"])
+                base = self.arguments(c, seed, fine)
                 out.append(solves.Solve(self.key(c, seed, peak, "loading", fine), base, loads))
                 out.append(solves.Solve(self.key(c, seed, peak, "unloading", fine),
                                         base + ["--unload-from", f"{peak * pair.Eprime:.17g}"], loads,

@@ -67,8 +67,8 @@ ContactSpots contactSpots(const std::vector<bool>& contact, std::size_t nx, std:
         throw ParameterError("contact", "has " + std::to_string(contact.size()) + " cells, not nx ny = " +
                                             std::to_string(nx) + " x " + std::to_string(ny));
     }
-    if (!(std::isfinite(dx) && std::isfinite(dy) && dx > 0.0 &&
-          dy > 0.0)) { // isfinite first: no NaN compared
+    // isfinite first: a NaN is never compared (the tests trap FE_INVALID, as OpenFOAM does).
+    if (!(std::isfinite(dx) && std::isfinite(dy) && dx > 0.0 && dy > 0.0)) {
         throw ParameterError("contact", "needs a positive, finite cell size dx, dy");
     }
     std::vector<Run> runs;
@@ -114,7 +114,7 @@ ContactSpots contactSpots(const std::vector<bool>& contact, std::size_t nx, std:
     ContactSpots out;
     const double cellArea = dx * dy;
     for (std::size_t r = 0; r < runs.size(); ++r) {
-        if (f.parent[r] == r) { // a root: after the finds above, every run's parent is its root
+        if (f.parent[r] == r) { // a spot's root run: the one run of each spot that is its own parent
             const double area = cells[r] * cellArea;
             ++out.count;
             out.radiusSum += std::sqrt(area / pi);
