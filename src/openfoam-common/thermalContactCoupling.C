@@ -217,7 +217,8 @@ void Foam::thermalContactCoupling::couple
     // it is due (the same on every processor: it is of the reduced sums).
     roughContact::FaceSums s;
     s.addPressures(out);
-    scalar counts[2] = {scalar(s.inContact), scalar(s.faces)};
+    scalar counts[3] =
+        {scalar(s.inContact), scalar(s.faces), scalar(s.unloading)};
     for (scalar& c : counts)
     {
         reduce(c, sumOp<scalar>());
@@ -225,8 +226,12 @@ void Foam::thermalContactCoupling::couple
     reduce(s.pressureMin, minOp<scalar>());
     reduce(s.pressureMax, maxOp<scalar>());
     reduce(s.pressureSum, sumOp<scalar>());
+    reduce(s.unloadingPeakMin, minOp<scalar>());
+    reduce(s.unloadingPeakMax, maxOp<scalar>());
+    reduce(s.unloadingFractionMin, minOp<scalar>());
     s.inContact = std::size_t(counts[0]);
     s.faces = std::size_t(counts[1]);
+    s.unloading = std::size_t(counts[2]);
     // check yes: made once, at the first evaluation, at the faces' pressures
     // unless the entry gives checkPressures.
     contactInterfaces::New(runTime).checkOnce

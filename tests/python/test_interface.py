@@ -278,6 +278,33 @@ def test_regime_and_band_at_pressures(interface):
     assert np.all(np.isnan(interface.accuracy_band([0.0])[0]))
 
 
+def test_unloading_band_at_peaks(interface):
+    # The default law's unloading branch: at a peak the band of R / exact R over the unloading
+    # study's counted points (its smaller periods shown beside a larger one left out) whose peak
+    # lies in the same decade of x, read here from the study's summary.csv itself.
+    import csv
+    import os
+    path = os.path.join(os.environ["ROUGHCONTACT_SOURCE_DIR"], "docs", "validation", "generated", "unloading",
+                        "summary.csv")
+    with open(path) as f:
+        rows = [r for r in csv.DictReader(line for line in f if not line.startswith("#"))
+                if "beside" not in r["role"] and float(r["fraction"]) < 1]
+    Ep = interface.reduced_modulus
+    gradient = rc.areal_rms_gradient(interface.surface)
+    x = np.array([3e-4, 3e-3, 3e-2])
+    low, high = interface.unloading_accuracy_band(x * Ep * gradient)
+    for xi, lo, hi in zip(x, low, high):
+        a = 10.0 ** math.floor(math.log10(xi))
+        ratios = [float(r["branch_over_exact_ratio"]) for r in rows if a * (1 - 1e-9) <= float(r["peak_x"]) < 10 * a]
+        assert len(ratios) > 10
+        assert (lo, hi) == (float(f"{min(ratios):.3g}"), float(f"{max(ratios):.3g}"))
+    # Beyond the study's heaviest peak, for a peak <= 0, and for a law without a branch: NaN.
+    assert np.all(np.isnan(interface.unloading_accuracy_band([0.5 * Ep * gradient, 0.0])[0]))
+    plain = rc.ContactInterface(surfaces=[rc.SurfaceSpec.profile(STANDIN)], side1=STEEL_M, side2=STEEL_M,
+                                conductance="mikic")
+    assert np.all(np.isnan(plain.unloading_accuracy_band([3e-3 * Ep * gradient])[1]))
+
+
 def test_keywords_left_out_are_the_cores_defaults():
     # Issue 52: the keywords default to None, "the core's default", not to copies of its values:
     # left out, the interface is the one the dictionary gives without those entries.

@@ -19,6 +19,7 @@ from ..tables import Table
 
 DATA = []
 TABLE = os.path.join("src", "core", "roughContact", "thermal", "MeasuredAccuracyTable.inc")
+UNLOADING_TABLE = os.path.join("src", "core", "roughContact", "thermal", "MeasuredUnloadingAccuracy.inc")
 DECADES = [10.0 ** k for k in range(-5, 1)]  # edges 1e-5 .. 1
 # (the fidelity study's curve, law, area model, capped): its curves turned into the names users select
 CURVES = [
@@ -195,18 +196,38 @@ def trust(ctx, rows):
                                  "yielding: h / exact", "what to do"], body)
 
 
+def unloading_points(ctx):
+    """The unloading study's counted points below the peak (summary.csv): [(peak x, P/P_max, P_max/H,
+    the branch's R over the exact unloading-to-loading ratio)]."""
+    from .unloading import COUNTED
+    return [(float(r["peak_x"]), float(r["fraction"]), float(r["peak_over_H"]), float(r["branch_over_exact_ratio"]))
+            for r in pages.generated(ctx, "unloading", "summary.csv").rows
+            if r["role"] in COUNTED and float(r["fraction"]) < 1]
+
+
+def unloading_bands(ctx):
+    """The branch's R / exact R by decade [a, 10 a) of the peak's x, to the decade's end where the
+    next decade's first peak was measured too (the branch is held at both ends), else up to the
+    largest peak measured: [(from, to, the least P/P_max, lo, hi, points, outside BAND)]."""
+    from ..fitting import BAND
+    per = {}
+    for x, f, _, v in unloading_points(ctx):
+        a = max(d for d in DECADES if d <= x * (1 + 1e-9))
+        per.setdefault(a, []).append((x, f, v))
+    out = []
+    for a in sorted(per):
+        xs, fs, vs = zip(*per[a])
+        b = a * 10 if any(abs(d / (a * 10) - 1) < 1e-9 for d in per) else max(xs) * (1 + 1e-6)
+        out.append((a, b, min(fs), min(vs), max(vs), len(vs), sum(abs(v - 1) > BAND for v in vs)))
+    return out
+
+
 def unloading_row(ctx, steel):
     """The row of a joint below the heaviest load it carried: the unloading study's summary.csv,
     the branch's ratio R over the exact unloading-to-loading ratio at its counted points (below
     the peak), on top of the loading rows' band at the pressure of the moment."""
-    from .unloading import COUNTED
     from ..fitting import BAND
-    rows = [r for r in pages.generated(ctx, "unloading", "summary.csv").rows
-            if r["role"] in COUNTED and float(r["fraction"]) < 1]
-    ratio = [float(r["branch_over_exact_ratio"]) for r in rows]
-    x = [float(r["peak_x"]) for r in rows]
-    fractions = [float(r["fraction"]) for r in rows]
-    over = [float(r["peak_over_H"]) for r in rows]
+    x, fractions, over, ratio = zip(*unloading_points(ctx))
     outside = sum(abs(v - 1) > BAND for v in ratio)
     held = (f"within {100 * BAND:.0f} % at all {len(ratio)} points" if not outside else
             f"outside {100 * BAND:.0f} % at {outside} of {len(ratio)} points")
@@ -259,6 +280,14 @@ def outputs(ctx):
                      f'{lo:.3g}, {hi:.3g}, {n}, "{report}"}},')
     out = pages.Outputs(ctx, "accuracyTable")
     out.source(TABLE, "\n".join(lines) + "\n")
+    unloading = ["// SPDX-License-Identifier: GPL-3.0-or-later",
+                 "// Written by `python3 -m validation run accuracyTable` (validation/studies/accuracyTable.py) from",
+                 "// the unloading study's summary.csv: do not edit. `python3 -m validation check accuracyTable` fails",
+                 "// when it is not what it gives. One UnloadingAccuracyRow a line (MeasuredAccuracyTable.hpp)."]
+    for a, b, least, lo, hi, n, outside in unloading_bands(ctx):
+        start = f"{a:.0e}" if float(f"{a:.0e}") == a else f"{a:.7g}"
+        unloading.append(f"{{{start}, {b:.7g}, {least:.4g}, {lo:.3g}, {hi:.3g}, {n}, {outside}}},")
+    out.source(UNLOADING_TABLE, "\n".join(unloading) + "\n")
     out.table("bands", ["law", "area model", "reference", "p/(E' h')", "law / exact", "surfaces", "measured by"],
               [[law, model or "-", "capped" if capped else "elastic", decade(a, b), f"{lo:.3g}-{hi:.3g}", n,
                 report] for law, model, capped, a, b, lo, hi, n, report in rows])

@@ -22,11 +22,11 @@
 #include "roughContact/models/Persson.hpp"
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
-#include "roughContact/surface/SpectralResampling.hpp"
 #include "roughContact/surface/FractalFit.hpp"
 #include "roughContact/surface/Profile.hpp"
 #include "roughContact/surface/Roughness.hpp"
 #include "roughContact/surface/SpectralMoments.hpp"
+#include "roughContact/surface/SpectralResampling.hpp"
 #include "roughContact/surface/Spectrum.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
@@ -309,6 +309,11 @@ int runCurve(const Options& o)
                 std::cerr << "multiscaleContact: " << r.describeSurface() << r.describeAt(at) << std::endl;
             } else {
                 std::cerr << "multiscaleContact: " << r.describe() << std::endl;
+            }
+            if (o.unloadFrom && law && law->unloads()) { // the branch's band at the peak, on top of P's
+                std::cerr << "multiscaleContact: unloading_h_per_k is h_per_k times " << lawName
+                          << "'s unloading branch R; " << r.describeUnloading(*o.unloadFrom, *o.unloadFrom)
+                          << std::endl;
             }
             if (gapInputs) {
                 std::cerr << "multiscaleContact: h_gas and h_radiation (their columns, in h_total): "

@@ -18,15 +18,16 @@
 #include "roughContact/surface/ArealSurface.hpp"
 #include "roughContact/surface/ArealSynthesis.hpp"
 #include "roughContact/surface/FractalFit.hpp"
+#include "roughContact/surface/Roughness.hpp"
 #include "roughContact/surface/SpectralMoments.hpp"
 #include "roughContact/surface/SpectralResampling.hpp"
 #include "roughContact/surface/Spectrum.hpp"
-#include "roughContact/surface/Roughness.hpp"
 #include "roughContact/thermal/ConductanceLaw.hpp"
 #include "roughContact/thermal/ConstrictionConductance.hpp"
 #include "roughContact/thermal/FittedElastoPlastic.hpp"
 #include "roughContact/thermal/GapConductance.hpp"
 #include "roughContact/thermal/Gas.hpp"
+#include "roughContact/thermal/MeasuredAccuracy.hpp"
 
 #include <gtest/gtest.h>
 
@@ -762,6 +763,15 @@ TEST(Cli, UnloadFromGivesTheDefaultLawsUnloadingBranch)
             EXPECT_EQ(csv.rows[i].at(column(csv, "unloading_h_per_k")), csv.rows[i].at(column(csv, "h_per_k")));
         }
     }
+    // stderr gives the branch's measured band at the peak's p/(E' h') (MeasuredAccuracy.hpp).
+    const double x =
+        30e6 / (Ep * arealRmsGradient(spectralMoments(Spectrum::fromProfile(readProfile(standin)))));
+    const auto band = measuredUnloadingAccuracy(x, x);
+    ASSERT_TRUE(band.has_value()) << "a peak at p/(E' h') = " << x;
+    EXPECT_NE(r.err.find("unloading_h_per_k is h_per_k times fittedElastoPlastic's unloading branch R; " +
+                         describeUnloadingAccuracy(band, x, x)),
+              std::string::npos)
+        << r.err;
     // With a gas the law's unloaded joint keeps the gap of the moment, as the condition does
     // (ContactInterface::loadHistoryNote): unloading_h_total = unloading_h + h_gas + h_radiation.
     const CommandResult g = run("--profile '" + standin + "' --model jacksonGreen" + steel +

@@ -9,9 +9,11 @@
 #include "roughContact/interface/InterfaceGap.hpp"
 #include "roughContact/thermal/Gas.hpp"
 #include "roughContact/thermal/MeasuredAccuracy.hpp"
+#include "roughContact/thermal/MeasuredAccuracyTable.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -221,4 +223,138 @@ TEST(FaceRegimeLog, PressuresDecideAndHsPartsAreAddedOnlyWhenDue)
     EXPECT_EQ(parts.radiationSum, whole.radiationSum);
     EXPECT_EQ(FaceRegimeLog::describe(dry(), parts), byWhole.update(dry(), whole));
     EXPECT_FALSE(byParts.due(parts)) << "the same pressures: not due again";
+}
+
+namespace {
+
+// Faces at pressures P [Pa] that carried the peaks `peak` [Pa] (P == peak: loading).
+FaceSums history(const std::vector<double>& P, const std::vector<double>& peak)
+{
+    CouplingOutputs out = faces(P, std::vector<double>(P.size(), 1e4), std::vector<double>(P.size(), 0.0),
+                                std::vector<double>(P.size(), 0.0));
+    out.peakPressure = peak;
+    FaceSums s;
+    s.add(out);
+    return s;
+}
+
+const ContactInterface& mikic()
+{
+    static const ContactInterface ci([] {
+        InterfaceSpec spec = steelOnSteel();
+        spec.conductanceLaw = "mikic";
+        return spec;
+    }());
+    return ci;
+}
+
+} // namespace
+
+TEST(FaceRegimeLog, FacesBelowTheirPeakAreCountedWithTheirPeaksAndDeepestUnloading)
+{
+    // Apart (0 below a peak), loading (P == peak), and two below their peaks.
+    const FaceSums s = history({0.0, 3e6, 1e6, 4e6}, {2e7, 3e6, 1e7, 4e7});
+    EXPECT_EQ(s.inContact, 3u);
+    EXPECT_EQ(s.unloading, 2u);
+    EXPECT_EQ(s.unloadingPeakMin, 1e7);
+    EXPECT_EQ(s.unloadingPeakMax, 4e7);
+    EXPECT_DOUBLE_EQ(s.unloadingFractionMin, 0.1);
+    // Without peaks (no load history: peakPressure is P) no face is below its peak.
+    EXPECT_EQ(sums({1e6, 2e6}).unloading, 0u);
+    // Nor is a load held at its peak that comes back an ulp below it (a table in time).
+    EXPECT_EQ(history({std::nextafter(5e7, 0.0)}, {5e7}).unloading, 0u);
+    EXPECT_EQ(history({5e7 * (1.0 - 1e-8)}, {5e7}).unloading, 1u);
+}
+
+TEST(FaceRegimeLog, FacesBelowTheirPeakAreSaidWithTheBranchsMeasuredBand)
+{
+    ASSERT_TRUE(dry().remembersLoad()) << "the default law with a cap has an unloading branch";
+    const InterfaceRegime& r = dry().regime();
+    const double scale = r.reducedModulus * r.gradient;
+    // Peaks at p/(E' h') 0.0033 and 0.013: in the study's range, across two of its decades.
+    const std::string text = FaceRegimeLog::describe(dry(), history({3e6, 1e5, 4e5}, {3e6, 1e6, 4e6}));
+    EXPECT_NE(
+        text.find(
+            "2 faces are below the largest pressure carried (peaks 1e+06 to 4e+06 Pa, P/P_max down to 0.1)"),
+        std::string::npos)
+        << text;
+    const auto band = measuredUnloadingAccuracy(1e6 / scale, 4e6 / scale);
+    ASSERT_TRUE(band.has_value()) << "peaks at p/(E' h') " << 1e6 / scale << " to " << 4e6 / scale;
+    EXPECT_NE(text.find("times the unloading branch's R"), std::string::npos) << text;
+    EXPECT_NE(text.find(describeUnloadingAccuracy(band, 1e6 / scale, 4e6 / scale)), std::string::npos)
+        << text;
+    EXPECT_EQ(text.find("deeper than measured"), std::string::npos) << text;
+    // Unloaded deeper than the study measured (1/100 of the peak): said.
+    const std::string deep = FaceRegimeLog::describe(dry(), history({1e4}, {1e6}));
+    EXPECT_NE(deep.find("1 face is below"), std::string::npos) << deep;
+    EXPECT_NE(deep.find("(unloaded deeper than measured)"), std::string::npos) << deep;
+    // Just below the peak: rounded down, never "1".
+    const std::string shallow = FaceRegimeLog::describe(dry(), history({0.99999e6}, {1e6}));
+    EXPECT_NE(shallow.find("P/P_max down to 0.999)"), std::string::npos) << shallow;
+    // No face below its peak: no such line.
+    EXPECT_EQ(FaceRegimeLog::describe(dry(), history({3e6}, {3e6})).find("below the largest"),
+              std::string::npos);
+    // A law without an unloading branch: h follows the pressure of the moment, and says so.
+    const std::string plain = FaceRegimeLog::describe(mikic(), history({1e6}, {1e7}));
+    EXPECT_NE(plain.find("mikic has no unloading branch: h_c follows the pressure of the moment"),
+              std::string::npos)
+        << plain;
+}
+
+TEST(FaceRegimeLog, IsSaidAgainWhenTheFirstFaceFallsBelowItsPeakAndWhenTheLastLeavesIt)
+{
+    FaceRegimeLog log;
+    EXPECT_NE(log.update(dry(), history({2e7, 2e7}, {2e7, 2e7})), "") << "first contact";
+    // Relaxed by less than the factor 2: the pressures alone would not be said again.
+    EXPECT_NE(log.update(dry(), history({1.5e7, 1.5e7}, {2e7, 2e7})), "")
+        << "the first faces below their peak";
+    EXPECT_EQ(log.update(dry(), history({1.4e7, 1.5e7}, {2e7, 2e7})), "")
+        << "still below, pressures within 2";
+    EXPECT_NE(log.update(dry(), history({2.1e7, 2.1e7}, {2.1e7, 2.1e7})), "")
+        << "retightened beyond the peak";
+    EXPECT_EQ(log.update(dry(), history({2.2e7, 2.2e7}, {2.2e7, 2.2e7})), "");
+}
+
+TEST(MeasuredUnloadingAccuracy, ABandSpansTheDecadesOfThePeaksAndNothingOutsideTheStudy)
+{
+    const auto& rows = measured::unloadingAccuracyRows;
+    const std::size_t n = sizeof rows / sizeof rows[0];
+    ASSERT_GE(n, 2u);
+    // Peaks within one row: that row.
+    const double inside = std::sqrt(rows[0].from * rows[0].to);
+    const auto one = measuredUnloadingAccuracy(inside, inside);
+    ASSERT_TRUE(one.has_value());
+    EXPECT_EQ(one->low, rows[0].low);
+    EXPECT_EQ(one->high, rows[0].high);
+    EXPECT_EQ(one->points, rows[0].points);
+    EXPECT_EQ(one->outside, rows[0].outside);
+    // Peaks across two rows: their extremes and sums.
+    const auto two = measuredUnloadingAccuracy(inside, rows[1].from);
+    ASSERT_TRUE(two.has_value());
+    EXPECT_EQ(two->from, rows[0].from);
+    EXPECT_EQ(two->to, rows[1].to);
+    EXPECT_EQ(two->low, std::min(rows[0].low, rows[1].low));
+    EXPECT_EQ(two->high, std::max(rows[0].high, rows[1].high));
+    EXPECT_EQ(two->points, rows[0].points + rows[1].points);
+    EXPECT_EQ(two->outside, rows[0].outside + rows[1].outside);
+    // Peaks heavier than any measured (4e7 Pa on the test's surface: p/(E' h') = 0.13): said so.
+    const std::string heavy = FaceRegimeLog::describe(dry(), history({1e6}, {4e7}));
+    EXPECT_NE(heavy.find("the unloading branch was not measured for peaks at"), std::string::npos) << heavy;
+    EXPECT_EQ(heavy.find("sign h"), std::string::npos) << heavy;
+    // Peaks lighter or heavier than any measured, or reaching beyond them: none, and said so.
+    EXPECT_FALSE(measuredUnloadingAccuracy(0.5 * rows[0].from, inside).has_value());
+    EXPECT_FALSE(measuredUnloadingAccuracy(inside, 2.0 * rows[n - 1].to).has_value());
+    EXPECT_NE(describeUnloadingAccuracy(std::nullopt, 1.0, 2.0)
+                  .find("not measured for peaks at p/(E' h') = 1 to 2"),
+              std::string::npos);
+    // The rows cover the study's peaks without a gap, and every band is a real one.
+    for (std::size_t k = 0; k < n; ++k) {
+        EXPECT_LT(rows[k].from, rows[k].to);
+        EXPECT_LE(rows[k].low, rows[k].high);
+        EXPECT_GT(rows[k].points, 0);
+        EXPECT_LE(rows[k].outside, rows[k].points);
+        if (k > 0) {
+            EXPECT_EQ(rows[k].from, rows[k - 1].to);
+        }
+    }
 }

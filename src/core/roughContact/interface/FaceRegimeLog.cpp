@@ -13,6 +13,15 @@
 
 namespace roughContact {
 
+namespace {
+
+// A face within this of its peak is not said to be below it: a load held in a table in time
+// comes back an ulp or two below the pressure it peaked at (interpolated between two equal
+// values), which would start and stop the log's unloading line at every such step.
+constexpr double saidBelowPeak = 1e-9;
+
+} // namespace
+
 void FaceSums::add(const CouplingOutputs& out)
 {
     addPressures(out);
@@ -29,6 +38,13 @@ void FaceSums::addPressures(const CouplingOutputs& out)
             pressureMin = std::min(pressureMin, P);
             pressureMax = std::max(pressureMax, P);
             pressureSum += P * pressureScale;
+            const double peak = i < out.peakPressure.size() ? out.peakPressure[i] : P;
+            if (P < peak * (1.0 - saidBelowPeak)) {
+                ++unloading;
+                unloadingPeakMin = std::min(unloadingPeakMin, peak);
+                unloadingPeakMax = std::max(unloadingPeakMax, peak);
+                unloadingFractionMin = std::min(unloadingFractionMin, P / peak);
+            }
         }
     }
 }
@@ -89,7 +105,8 @@ bool FaceRegimeLog::due(const FaceSums& all)
         return false;
     }
     const std::array<double, 3> now{all.pressureMin, all.meanPressure(), all.pressureMax};
-    if (said_) {
+    const bool unloading = all.unloading > 0;
+    if (said_ && unloading == saidUnloading_) {
         bool moved = false;
         for (std::size_t k = 0; k < 3; ++k) {
             const double ratio = now[k] / (*said_)[k];
@@ -101,6 +118,7 @@ bool FaceRegimeLog::due(const FaceSums& all)
         }
     }
     said_ = now;
+    saidUnloading_ = unloading;
     return true;
 }
 
@@ -120,6 +138,31 @@ std::string FaceRegimeLog::describe(const ContactInterface& iface, const FaceSum
             os << regime.describeAt({{all.inContact == 1 ? "the face" : "every face", mean}});
         } else {
             os << regime.describeAt({{"min", all.pressureMin}, {"mean", mean}, {"max", all.pressureMax}});
+        }
+    }
+    if (all.unloading > 0) {
+        os << "\n    " << all.unloading << (all.unloading == 1 ? " face is" : " faces are")
+           << " below the largest pressure carried (peaks " << all.unloadingPeakMin;
+        if (all.unloadingPeakMax > all.unloadingPeakMin) {
+            os << " to " << all.unloadingPeakMax;
+        }
+        // Rounded down (0.99999 is "0.999", not "1"): at least as deep as said.
+        os << " Pa, P/P_max down to " << std::floor(all.unloadingFractionMin * 1000.0) / 1000.0 << "): ";
+        if (!iface.unloading().empty()) {
+            os << "h_c from the exact unloading curves, interpolated between their peaks (docs/theory.md "
+                  "§7.6)";
+        } else if (iface.remembersLoad() && regime.law == "fittedElastoPlastic") {
+            const auto band = regime.unloadingBand(all.unloadingPeakMin, all.unloadingPeakMax);
+            os << "h_c is the loading h_c at P times the unloading branch's R (docs/theory.md §5.7c); "
+               << regime.describeUnloading(all.unloadingPeakMin, all.unloadingPeakMax);
+            if (band) {
+                os << ": sign h there with the band at P times R's";
+                if (all.unloadingFractionMin < band->leastFraction * (1.0 - 1e-9)) {
+                    os << " (unloaded deeper than measured)";
+                }
+            }
+        } else {
+            os << regime.law << " has no unloading branch: h_c follows the pressure of the moment";
         }
     }
     const std::size_t counted = all.faces - all.complete;

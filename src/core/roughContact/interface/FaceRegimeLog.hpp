@@ -2,9 +2,11 @@
 // The regime at the pressures an interface's faces carry, for the boundary condition's log: the
 // min, mean and max pressure of the faces in contact, p/(E' h') and P/H there and the chosen
 // law's measured band (InterfaceRegime::describeAt), and h split into its contact, gas and
-// radiation parts with what is known of each one's accuracy. Said at the first evaluation with
-// a face in contact and again whenever the min, mean or max has moved by more than a factor of
-// two since it was last said (docs/checking.md, "The regime at your pressures").
+// radiation parts with what is known of each one's accuracy; with a load history, the faces
+// below their peak and the measured band of the unloading they follow. Said at the first
+// evaluation with a face in contact, again whenever the min, mean or max has moved by more than
+// a factor of two since it was last said, and when faces start or stop being below their peak
+// (docs/checking.md, "The regime at your pressures").
 #pragma once
 
 #include <array>
@@ -30,14 +32,21 @@ struct FaceSums {
     double contactSum = 0.0;    ///< sums of h_c, h_g, h_r [W/(m^2 K)] over the faces not complete
     double gasSum = 0.0;
     double radiationSum = 0.0;
+    /// Faces in contact below their peak (CouplingOutputs::peakPressure: unloaded or reloading;
+    /// by more than 1e-9 of it, not a held load's round-off), their least and largest peak [Pa]
+    /// and their least P/P_max.
+    std::size_t unloading = 0;
+    double unloadingPeakMin = std::numeric_limits<double>::infinity();
+    double unloadingPeakMax = 0.0;
+    double unloadingFractionMin = 1.0;
 
     /// pressureSum's scale, 2^-64: a sum of pressures up to the largest double stays finite.
     static constexpr double pressureScale = 1.0 / 18446744073709551616.0;
 
     /// Adds the faces of one evaluation (couple()'s outputs): addPressures and addConductances.
     void add(const CouplingOutputs& out);
-    /// Their count and pressures alone (faces, inContact, the pressures): what decides whether
-    /// the log is due, at every evaluation.
+    /// Their count and pressures alone (faces, inContact, the pressures, and those below their
+    /// peak): what decides whether the log is due, at every evaluation.
     void addPressures(const CouplingOutputs& out);
     /// Their h's parts alone (complete and the sums of h_c, h_g, h_r): what the log says, only
     /// when it is due.
@@ -65,7 +74,8 @@ public:
 
     /// True (and the pressures taken as said) when the log is due for `all`, of which only the
     /// counts and pressures are read (FaceSums::addPressures): at the first evaluation with a face
-    /// in contact, and when the min, mean or max pressure has moved by more than the factor.
+    /// in contact, when the min, mean or max pressure has moved by more than the factor, and when
+    /// the first face falls below its peak or the last one leaves it.
     bool due(const FaceSums& all);
 
     /// The lines for `all`, whatever was said before.
@@ -74,6 +84,7 @@ public:
 private:
     double factor_;
     std::optional<std::array<double, 3>> said_; ///< min, mean, max when last said
+    bool saidUnloading_ = false;                ///< whether faces were below their peak then
 };
 
 } // namespace roughContact

@@ -167,6 +167,18 @@ std::string InterfaceRegime::describeLine(const RegimeAt& r, const std::string& 
     return os.str();
 }
 
+std::optional<UnloadingAccuracyBand> InterfaceRegime::unloadingBand(double peakMin, double peakMax) const
+{
+    const double scale = reducedModulus * gradient; // p/(E' h') of a pressure
+    return measuredUnloadingAccuracy(peakMin / scale, peakMax / scale);
+}
+
+std::string InterfaceRegime::describeUnloading(double peakMin, double peakMax) const
+{
+    const double scale = reducedModulus * gradient;
+    return describeUnloadingAccuracy(unloadingBand(peakMin, peakMax), peakMin / scale, peakMax / scale);
+}
+
 std::string InterfaceRegime::describeAt(const std::vector<std::pair<std::string, double>>& labelledPressures) const
 {
     std::string out;

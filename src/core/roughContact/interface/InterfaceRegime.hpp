@@ -73,6 +73,13 @@ struct InterfaceRegime {
     /// none: the pressure alone). No line for a pressure <= 0.
     std::string describeAt(const std::vector<std::pair<std::string, double>>& labelledPressures) const;
 
+    /// The default law's unloading branch's measured band for joints loaded to peaks from
+    /// peakMin to peakMax [Pa] (measuredUnloadingAccuracy at their p/(E' h')); none where not
+    /// measured. Only the band: whether the interface unloads by the branch is the caller's.
+    std::optional<UnloadingAccuracyBand> unloadingBand(double peakMin, double peakMax) const;
+    /// That band as a line (describeUnloadingAccuracy).
+    std::string describeUnloading(double peakMin, double peakMax) const;
+
 private:
     std::string describeLine(const RegimeAt& r, const std::string& label) const;
 };

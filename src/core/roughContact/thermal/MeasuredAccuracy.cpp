@@ -3,6 +3,7 @@
 
 #include "roughContact/thermal/MeasuredAccuracyTable.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
@@ -60,6 +61,57 @@ std::string describeAccuracy(const std::optional<AccuracyBand>& band, double loa
         os << "; measured against periodic cells, which may conduct more than a large joint at these loads "
               "(docs/checking.md)";
     }
+    return os.str();
+}
+
+std::optional<UnloadingAccuracyBand> measuredUnloadingAccuracy(double peakMin, double peakMax)
+{
+    std::optional<UnloadingAccuracyBand> out;
+    for (const measured::UnloadingAccuracyRow& r : measured::unloadingAccuracyRows) {
+        if (!(r.from <= peakMax && peakMin < r.to)) {
+            continue;
+        }
+        if (!out) {
+            out = UnloadingAccuracyBand{r.from, r.to, r.leastFraction, r.low, r.high, r.points, r.outside};
+            continue;
+        }
+        if (r.from != out->to) { // a gap between the decades: not measured there
+            return std::nullopt;
+        }
+        out->to = r.to;
+        out->leastFraction = std::max(out->leastFraction, r.leastFraction);
+        out->low = std::min(out->low, r.low);
+        out->high = std::max(out->high, r.high);
+        out->points += r.points;
+        out->outside += r.outside;
+    }
+    if (!out || peakMin < out->from || !(peakMax < out->to)) {
+        return std::nullopt;
+    }
+    return out;
+}
+
+std::string describeUnloadingAccuracy(const std::optional<UnloadingAccuracyBand>& band, double peakMin,
+                                      double peakMax)
+{
+    std::ostringstream os;
+    os << std::setprecision(2);
+    if (!band) {
+        os << "the unloading branch was not measured for peaks at p/(E' h') = " << peakMin;
+        if (peakMax > peakMin) {
+            os << " to " << peakMax;
+        }
+        os << " (the unloading study's peaks: 1e-4 to 0.1)";
+        return os.str();
+    }
+    os << "R / exact R " << bandEnd(band->low) << "-" << bandEnd(band->high) << " at " << band->points
+       << " points of the unloading study (peaks p/(E' h') ";
+    if (band->to < 1.01 * band->from) {
+        os << "= " << band->from << " only";
+    } else {
+        os << band->from << " to " << band->to;
+    }
+    os << ", unloaded down to P/P_max = " << band->leastFraction << "; " << band->outside << " outside 25 %)";
     return os.str();
 }
 

@@ -47,4 +47,29 @@ std::optional<AccuracyBand> measuredAccuracy(const std::string& law, const std::
 /// periodic cells, which may conduct more than a large joint there.
 std::string describeAccuracy(const std::optional<AccuracyBand>& band, double loadPerGradient);
 
+/// How far the default law's unloading branch (fittedElastoPlastic with a cap, docs/theory.md
+/// §5.7c) was measured from the exact model: its R over the exact unloading-to-loading ratio, at
+/// the unloading study's points whose peaks lie in [from, to) of p/(E' h'), unloaded to
+/// leastFraction of the peak at the deepest. The error of h on unloading is this times the
+/// loading band's at the pressure of the moment.
+struct UnloadingAccuracyBand {
+    double from = 0.0; ///< the peaks' p/(E' h'), over the decades the peaks asked for span
+    double to = 0.0;
+    double leastFraction = 0.0; ///< P/P_max: deeper unloading was not measured
+    double low = 0.0;           ///< the smallest R / exact R
+    double high = 0.0;          ///< the largest
+    int points = 0;
+    int outside = 0; ///< points beyond 25 % of 1
+};
+
+/// The branch's band over every decade that holds a peak from peakMin to peakMax (p/(E' h'), >
+/// 0, peakMin <= peakMax); none where a peak lies outside what the study measured.
+std::optional<UnloadingAccuracyBand> measuredUnloadingAccuracy(double peakMin, double peakMax);
+
+/// One line: "R / exact R 0.804-1.30 at 240 points of the unloading study (peaks p/(E' h') 0.001
+/// to 0.01, down to P/P_max = 0.033; 3 outside 25 %)", or that the peaks from peakMin to peakMax
+/// were not measured.
+std::string describeUnloadingAccuracy(const std::optional<UnloadingAccuracyBand>& band, double peakMin,
+                                      double peakMax);
+
 } // namespace roughContact
