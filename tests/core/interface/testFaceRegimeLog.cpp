@@ -2,7 +2,8 @@
 // The regime at the faces' pressures (FaceRegimeLog.hpp): said at the first evaluation in
 // contact and again only when the min, mean or max pressure moved by more than a factor of two;
 // its lines are InterfaceRegime's at those pressures, and h's parts are the means of the faces'
-// values, the gap's said "not validated".
+// values, the gap's said "not validated"; faces below their peak are said with the unloading
+// branch's measured band there (MeasuredAccuracy.hpp).
 #include "roughContact/interface/ContactInterface.hpp"
 #include "roughContact/interface/FaceCoupling.hpp"
 #include "roughContact/interface/FaceRegimeLog.hpp"
@@ -344,9 +345,12 @@ TEST(MeasuredUnloadingAccuracy, ABandSpansTheDecadesOfThePeaksAndNothingOutsideT
     // Peaks lighter or heavier than any measured, or reaching beyond them: none, and said so.
     EXPECT_FALSE(measuredUnloadingAccuracy(0.5 * rows[0].from, inside).has_value());
     EXPECT_FALSE(measuredUnloadingAccuracy(inside, 2.0 * rows[n - 1].to).has_value());
-    EXPECT_NE(describeUnloadingAccuracy(std::nullopt, 1.0, 2.0)
-                  .find("not measured for peaks at p/(E' h') = 1 to 2"),
-              std::string::npos);
+    const std::string none = describeUnloadingAccuracy(std::nullopt, 1.0, 2.0);
+    EXPECT_NE(none.find("not measured for peaks at p/(E' h') = 1 to 2"), std::string::npos) << none;
+    std::ostringstream measuredPeaks; // which peaks it did measure, from the rows
+    measuredPeaks << std::setprecision(2) << "(the unloading study's peaks: " << rows[0].from << " to "
+                  << rows[n - 1].from << ")";
+    EXPECT_NE(none.find(measuredPeaks.str()), std::string::npos) << none;
     // The rows cover the study's peaks without a gap, and every band is a real one.
     for (std::size_t k = 0; k < n; ++k) {
         EXPECT_LT(rows[k].from, rows[k].to);

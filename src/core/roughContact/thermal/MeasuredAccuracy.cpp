@@ -101,7 +101,9 @@ std::string describeUnloadingAccuracy(const std::optional<UnloadingAccuracyBand>
         if (peakMax > peakMin) {
             os << " to " << peakMax;
         }
-        os << " (the unloading study's peaks: 1e-4 to 0.1)";
+        const auto& rows = measured::unloadingAccuracyRows;
+        os << " (the unloading study's peaks: " << rows[0].from << " to "
+           << rows[sizeof rows / sizeof rows[0] - 1].from << ")";
         return os.str();
     }
     os << "R / exact R " << bandEnd(band->low) << "-" << bandEnd(band->high) << " at " << band->points
