@@ -280,15 +280,19 @@ def test_regime_and_band_at_pressures(interface):
 
 def test_unloading_band_at_peaks(interface):
     # The default law's unloading branch: at a peak the band of R / exact R over the unloading
-    # study's counted points (its smaller periods shown beside a larger one left out) whose peak
-    # lies in the same decade of x, read here from the study's summary.csv itself.
+    # study's counted points (its smaller periods shown beside a larger one left out) and the
+    # measured map's (unloadingMap) whose peak lies in the same decade of x, read here from the
+    # studies' summary.csv themselves.
     import csv
     import os
-    path = os.path.join(os.environ["ROUGHCONTACT_SOURCE_DIR"], "docs", "validation", "generated", "unloading",
-                        "summary.csv")
-    with open(path) as f:
-        rows = [r for r in csv.DictReader(line for line in f if not line.startswith("#"))
-                if "beside" not in r["role"] and float(r["fraction"]) < 1]
+
+    def summary(study):
+        path = os.path.join(os.environ["ROUGHCONTACT_SOURCE_DIR"], "docs", "validation", "generated", study,
+                            "summary.csv")
+        with open(path) as f:
+            return list(csv.DictReader(line for line in f if not line.startswith("#")))
+    rows = [r for r in summary("unloading") if "beside" not in r["role"] and float(r["fraction"]) < 1]
+    rows += summary("unloadingMap")
     Ep = interface.reduced_modulus
     gradient = rc.areal_rms_gradient(interface.surface)
     x = np.array([3e-4, 3e-3, 3e-2])

@@ -6,7 +6,7 @@ is missing in check) and outputs(ctx) (what it generates from its data: pages.Ou
 docs/validation.md says how to add one."""
 import importlib
 
-ORDER = ["engineeringRange", "dektakLevels", "spectralShapes", "secondHoldOut", "blindSpectra", "largerPeriods", "fidelity", "checkPeriods", "roughness", "skewness", "paper", "anisotropy", "unloading", "mapSurrogates", "heavyLoads", "fittedElastoPlastic", "accuracyTable", "boundaryElementMap"]
+ORDER = ["engineeringRange", "dektakLevels", "spectralShapes", "secondHoldOut", "blindSpectra", "largerPeriods", "fidelity", "checkPeriods", "roughness", "skewness", "paper", "anisotropy", "unloading", "unloadingMap", "mapSurrogates", "heavyLoads", "fittedElastoPlastic", "accuracyTable", "boundaryElementMap"]
 
 STUDIES = [importlib.import_module(f"{__name__}.{name}") for name in ORDER]
 

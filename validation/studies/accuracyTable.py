@@ -8,7 +8,8 @@ one capped reference), and for the area models it does not run the fidelity stud
 the default law beyond the engineering range, elastic, the heavy-load study's ratios up to the
 heaviest load it measured. `run` writes src/core/roughContact/thermal/MeasuredAccuracyTable.inc,
 the bands as a page's table, and the default law's bands by regime, with its unloading branch's
-from the unloading study, as README.md's "Which h to trust" (`trust`); `check` fails when they
+from the unloading study and the measured map's (unloadingMap), as README.md's "Which h to trust"
+(`trust`); `check` fails when they
 are not what the studies' data give.
 """
 import math
@@ -197,12 +198,15 @@ def trust(ctx, rows):
 
 
 def unloading_points(ctx):
-    """The unloading study's counted points below the peak (summary.csv): [(peak x, P/P_max, P_max/H,
-    the branch's R over the exact unloading-to-loading ratio)]."""
+    """The points the unloading branch is held to below the peak: the unloading study's counted
+    ones and every one of the measured map's (unloadingMap): [(peak x, P/P_max, P_max/H, the
+    branch's R over the exact unloading-to-loading ratio)]."""
     from .unloading import COUNTED
-    return [(float(r["peak_x"]), float(r["fraction"]), float(r["peak_over_H"]), float(r["branch_over_exact_ratio"]))
-            for r in pages.generated(ctx, "unloading", "summary.csv").rows
+    rows = [r for r in pages.generated(ctx, "unloading", "summary.csv").rows
             if r["role"] in COUNTED and float(r["fraction"]) < 1]
+    rows += pages.generated(ctx, "unloadingMap", "summary.csv").rows
+    return [(float(r["peak_x"]), float(r["fraction"]), float(r["peak_over_H"]), float(r["branch_over_exact_ratio"]))
+            for r in rows]
 
 
 def unloading_bands(ctx):
@@ -231,8 +235,12 @@ def unloading_row(ctx, steel):
     outside = sum(abs(v - 1) > BAND for v in ratio)
     held = (f"within {100 * BAND:.0f} % at all {len(ratio)} points" if not outside else
             f"outside {100 * BAND:.0f} % at {outside} of {len(ratio)} points")
-    todo = (f"sign h with the loading row's band at P times R's (R {held}); other peaks or P/P_max: "
-            "`model boundaryElement;`")
+    if outside:
+        todo = (f"wider than 25 % (R {held}): `--check --unload-from PMAX` on your surface, or "
+                "`model boundaryElement;`")
+    else:
+        todo = (f"sign h with the loading row's band at P times R's (R {held}); other peaks or P/P_max: "
+                "`model boundaryElement;`")
     return [f"unloaded below its heaviest load P_max (P/P_max {short(min(fractions))} to {short(max(fractions))})",
             f"peaks {short(min(x))} to {short(max(x))}",
             f"peaks {short(min(x) * steel * 0.1 / 1e6)}-{short(max(x) * steel * 0.1 / 1e6)}",
@@ -282,8 +290,9 @@ def outputs(ctx):
     out.source(TABLE, "\n".join(lines) + "\n")
     unloading = ["// SPDX-License-Identifier: GPL-3.0-or-later",
                  "// Written by `python3 -m validation run accuracyTable` (validation/studies/accuracyTable.py) from",
-                 "// the unloading study's summary.csv: do not edit. `python3 -m validation check accuracyTable` fails",
-                 "// when it is not what it gives. One UnloadingAccuracyRow a line (MeasuredAccuracyTable.hpp)."]
+                 "// the unloading and unloadingMap studies' summary.csv: do not edit. `python3 -m validation check",
+                 "// accuracyTable` fails when it is not what they give. One UnloadingAccuracyRow a line",
+                 "// (MeasuredAccuracyTable.hpp)."]
     for a, b, least, lo, hi, n, outside in unloading_bands(ctx):
         start = f"{a:.0e}" if float(f"{a:.0e}") == a else f"{a:.7g}"
         unloading.append(f"{{{start}, {b:.7g}, {least:.4g}, {lo:.3g}, {hi:.3g}, {n}, {outside}}},")

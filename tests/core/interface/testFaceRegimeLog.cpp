@@ -292,6 +292,14 @@ TEST(FaceRegimeLog, FacesBelowTheirPeakAreSaidWithTheBranchsMeasuredBand)
     // Just below the peak: rounded down, never "1".
     const std::string shallow = FaceRegimeLog::describe(dry(), history({0.99999e6}, {1e6}));
     EXPECT_NE(shallow.find("P/P_max down to 0.999)"), std::string::npos) << shallow;
+    // Signed with the band where the study's points there all lie within 25 %; else wider, said so.
+    for (const measured::UnloadingAccuracyRow& row : measured::unloadingAccuracyRows) {
+        const double peak = row.from * scale * (row.to > 1.01 * row.from ? 2.0 : 1.0);
+        const std::string at = FaceRegimeLog::describe(dry(), history({0.5 * peak}, {peak}));
+        SCOPED_TRACE(at);
+        EXPECT_EQ(at.find("sign h there") != std::string::npos, row.outside == 0);
+        EXPECT_EQ(at.find("wider than 25 % there") != std::string::npos, row.outside > 0);
+    }
     // No face below its peak: no such line.
     EXPECT_EQ(FaceRegimeLog::describe(dry(), history({3e6}, {3e6})).find("below the largest"),
               std::string::npos);

@@ -156,7 +156,9 @@ std::string FaceRegimeLog::describe(const ContactInterface& iface, const FaceSum
             os << "h_c is the loading h_c at P times the unloading branch's R (docs/theory.md §5.7c); "
                << regime.describeUnloading(all.unloadingPeakMin, all.unloadingPeakMax);
             if (band) {
-                os << ": sign h there with the band at P times R's";
+                os << (band->outside == 0 ? ": sign h there with the band at P times R's"
+                                          : ": wider than 25 % there; check your surface with its peak (the "
+                                            "check's --unload-from) or take model boundaryElement");
                 if (all.unloadingFractionMin < band->leastFraction * (1.0 - 1e-9)) {
                     os << " (unloaded deeper than measured)";
                 }

@@ -107,7 +107,7 @@ std::string describeUnloadingAccuracy(const std::optional<UnloadingAccuracyBand>
         return os.str();
     }
     os << "R / exact R " << bandEnd(band->low) << "-" << bandEnd(band->high) << " at " << band->points
-       << " points of the unloading study (peaks p/(E' h') ";
+       << " points of the unloading studies (peaks p/(E' h') ";
     if (band->to < 1.01 * band->from) {
         os << "= " << band->from << " only";
     } else {

@@ -66,9 +66,9 @@ struct UnloadingAccuracyBand {
 /// 0, peakMin <= peakMax); none where a peak lies outside what the study measured.
 std::optional<UnloadingAccuracyBand> measuredUnloadingAccuracy(double peakMin, double peakMax);
 
-/// One line: "R / exact R 0.804-1.3 at 240 points of the unloading study (peaks p/(E' h') 0.001
-/// to 0.01, unloaded down to P/P_max = 0.033; 3 outside 25 %)", or that the peaks from peakMin
-/// to peakMax were not measured (and which the study measured).
+/// One line: "R / exact R 0.733-1.3 at 256 points of the unloading studies (peaks p/(E' h') 0.001
+/// to 0.01, unloaded down to P/P_max = 0.033; 5 outside 25 %)", or that the peaks from peakMin
+/// to peakMax were not measured (and which the studies measured).
 std::string describeUnloadingAccuracy(const std::optional<UnloadingAccuracyBand>& band, double peakMin,
                                       double peakMax);
 
