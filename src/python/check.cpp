@@ -43,32 +43,37 @@ std::string seedList(const std::vector<std::uint64_t>& seeds)
 
 void bindCheck(py::module_& m)
 {
-    py::class_<SurfaceCheck>(m, "SurfaceCheck",
-                             "What check() found: the answer for the user's whole surface (the chosen law, and the exact "
-                             "answer it implies), the exact h_c/k_s of the checked surface at the checked pressures "
-                             "and every law's ratio to it.")
-        .def_readonly("surface", &SurfaceCheck::surface, "What was solved (the map, or the seeds synthesized).")
+    py::class_<SurfaceCheck>(
+        m, "SurfaceCheck",
+        "What check() found: the answer for the user's whole surface (the chosen law, and the exact "
+        "answer it implies), the exact h_c/k_s of the checked surface at the checked pressures "
+        "and every law's ratio to it.")
+        .def_readonly("surface", &SurfaceCheck::surface,
+                      "What was solved (the map, or the seeds synthesized).")
         .def_readonly("regime", &SurfaceCheck::regime, "'elastic' or 'capped at H = ... Pa'.")
         .def_readonly("hardness", &SurfaceCheck::hardness, "The cap H [Pa], or None (elastic).")
         .def_readonly("reduced_modulus", &SurfaceCheck::reducedModulus, "E' [Pa].")
-        .def_readonly("gradient", &SurfaceCheck::gradient, "h': the areal rms gradient of the checked surface.")
+        .def_readonly("gradient", &SurfaceCheck::gradient,
+                      "h': the areal rms gradient of the checked surface.")
         .def_readonly("lay_stretch", &SurfaceCheck::layStretch,
                       "The lay ratio of profiles given across and along a lay (their rms slopes' ratio): the "
                       "checked surfaces are stretched so along y. 1 for an isotropic surface or a map.")
         .def_readonly("levels_kept", &SurfaceCheck::levelsKept, "Levels of the spectrum in the check.")
         .def_readonly("levels_given", &SurfaceCheck::levelsGiven, "Levels of the spectrum given.")
-        .def_readonly("unload_from", &SurfaceCheck::unloadFrom, "The peak [Pa] the check unloaded from (None: none).")
-        .def_property_readonly("exact_unloading_h_per_k",
-                               [](const SurfaceCheck& c) { return toArray(c.exactUnloadingHPerK); },
-                               "With unload_from: the checked surface's exact h_c/k_s unloaded from it [1/m].")
-        .def_property_readonly("chosen_unloading_ratio",
-                               [](const SurfaceCheck& c) { return toArray(c.chosenUnloadingRatio); },
-                               "With unload_from: the chosen law's h on unloading (its unloading branch, or its "
-                               "loading value for a law without one) over the exact unloading h.")
+        .def_readonly("unload_from", &SurfaceCheck::unloadFrom,
+                      "The peak [Pa] the check unloaded from (None: none).")
+        .def_property_readonly(
+            "exact_unloading_h_per_k", [](const SurfaceCheck& c) { return toArray(c.exactUnloadingHPerK); },
+            "With unload_from: the checked surface's exact h_c/k_s unloaded from it [1/m].")
+        .def_property_readonly(
+            "chosen_unloading_ratio", [](const SurfaceCheck& c) { return toArray(c.chosenUnloadingRatio); },
+            "With unload_from: the chosen law's h on unloading (its unloading branch, or its "
+            "loading value for a law without one) over the exact unloading h.")
         .def_readonly("chosen_unloads", &SurfaceCheck::chosenUnloads,
                       "True when the chosen law has an unloading branch (chosen_unloading_ratio holds it).")
-        .def_readonly("light_load_periods", &SurfaceCheck::lightLoadPeriods,
-                      "The period [scan lengths] of the pressures up to p/(E' h') = 1e-3 (1: none on a longer one).")
+        .def_readonly(
+            "light_load_periods", &SurfaceCheck::lightLoadPeriods,
+            "The period [scan lengths] of the pressures up to p/(E' h') = 1e-3 (1: none on a longer one).")
         .def_readonly("light_levels_kept", &SurfaceCheck::lightLevelsKept,
                       "Levels of the spectrum on that period in the check (0: none).")
         .def_readonly("light_levels_of_given", &SurfaceCheck::lightLevelsOfGiven,
@@ -77,27 +82,36 @@ void bindCheck(py::module_& m)
             "long_period_weights", [](const SurfaceCheck& c) { return toArray(c.longPeriodWeights); },
             "Each pressure's weight of the longer period: 1 up to p/(E' h') = 1e-3, 0 from 1e-2, falling "
             "log-linearly between (the two joined there).")
-        .def_property_readonly("pressures", [](const SurfaceCheck& c) { return toArray(c.pressures); },
-                               "The checked pressures [Pa].")
-        .def_property_readonly("dropped", [](const SurfaceCheck& c) { return toArray(c.dropped); },
-                               "Pressures asked for [Pa] outside the checked range.")
-        .def_property_readonly("answer", [](const SurfaceCheck& c) { return toArray(c.answerHPerK); },
-                               "The answer: the chosen law's h_c/k_s [1/m] on the whole surface as given, at the "
-                               "checked pressures (what the condition uses).")
-        .def_property_readonly("answer_exact_low", [](const SurfaceCheck& c) { return toArray(c.answerExactLow); },
-                               "The exact h_c/k_s [1/m] the answer implies (the answer over the law's ratio), at "
-                               "the seeds' smallest; NaN where the exact answer is not trusted.")
-        .def_property_readonly("answer_exact_high", [](const SurfaceCheck& c) { return toArray(c.answerExactHigh); },
-                               "The same at the seeds' largest.")
-        .def_property_readonly("checked_exact", [](const SurfaceCheck& c) { return toArray(c.exactHPerK); },
-                               "The exact h_c/k_s [1/m] of the checked surface (geometric mean over the seeds): a "
-                               "1-D description's band-limited synthesized surfaces, not the whole surface.")
-        .def_property_readonly("checked_exact_low", [](const SurfaceCheck& c) { return toArray(c.exactHPerKLow); },
-                               "The seeds' smallest exact h_c/k_s [1/m] of the checked surface.")
-        .def_property_readonly("checked_exact_high", [](const SurfaceCheck& c) { return toArray(c.exactHPerKHigh); },
-                               "The seeds' largest exact h_c/k_s [1/m] of the checked surface.")
-        .def_property_readonly("checked_area", [](const SurfaceCheck& c) { return toArray(c.exactArea); },
-                               "The exact A_r/A_n of the checked surface (mean over the seeds).")
+        .def_property_readonly(
+            "pressures", [](const SurfaceCheck& c) { return toArray(c.pressures); },
+            "The checked pressures [Pa].")
+        .def_property_readonly(
+            "dropped", [](const SurfaceCheck& c) { return toArray(c.dropped); },
+            "Pressures asked for [Pa] outside the checked range.")
+        .def_property_readonly(
+            "answer", [](const SurfaceCheck& c) { return toArray(c.answerHPerK); },
+            "The answer: the chosen law's h_c/k_s [1/m] on the whole surface as given, at the "
+            "checked pressures (what the condition uses).")
+        .def_property_readonly(
+            "answer_exact_low", [](const SurfaceCheck& c) { return toArray(c.answerExactLow); },
+            "The exact h_c/k_s [1/m] the answer implies (the answer over the law's ratio), at "
+            "the seeds' smallest; NaN where the exact answer is not trusted.")
+        .def_property_readonly(
+            "answer_exact_high", [](const SurfaceCheck& c) { return toArray(c.answerExactHigh); },
+            "The same at the seeds' largest.")
+        .def_property_readonly(
+            "checked_exact", [](const SurfaceCheck& c) { return toArray(c.exactHPerK); },
+            "The exact h_c/k_s [1/m] of the checked surface (geometric mean over the seeds): a "
+            "1-D description's band-limited synthesized surfaces, not the whole surface.")
+        .def_property_readonly(
+            "checked_exact_low", [](const SurfaceCheck& c) { return toArray(c.exactHPerKLow); },
+            "The seeds' smallest exact h_c/k_s [1/m] of the checked surface.")
+        .def_property_readonly(
+            "checked_exact_high", [](const SurfaceCheck& c) { return toArray(c.exactHPerKHigh); },
+            "The seeds' largest exact h_c/k_s [1/m] of the checked surface.")
+        .def_property_readonly(
+            "checked_area", [](const SurfaceCheck& c) { return toArray(c.exactArea); },
+            "The exact A_r/A_n of the checked surface (mean over the seeds).")
         .def_property_readonly(
             "exact_trusted",
             [](const SurfaceCheck& c) {
@@ -107,7 +121,8 @@ void bindCheck(py::module_& m)
                 }
                 return a;
             },
-            "Per pressure: False where the exact answer is not to be trusted (exact_warning); such a pressure counts "
+            "Per pressure: False where the exact answer is not to be trusted (exact_warning); such a "
+            "pressure counts "
             "for no law.")
         .def_property_readonly(
             "ratios",
@@ -133,22 +148,36 @@ void bindCheck(py::module_& m)
                 return d;
             },
             "{law: why it was not checked}.")
-        .def_readonly("chosen_law", &SurfaceCheck::chosenLaw, "The law judged (the conductance given, or the default).")
-        .def_readonly("closest_law", &SurfaceCheck::closestLaw,
-                      "The law with the smallest worst factor over the counted pressures ('' when none is counted).")
-        .def_property_readonly("closest_holds", &SurfaceCheck::closestHolds,
-                               "Whether the closest law is within 25 % at every counted pressure (then it is the law "
-                               "to use; else none is).")
-        .def_property_readonly("chosen_misses", [](const SurfaceCheck& c) { return toArray(c.chosenMisses()); },
-                               "The counted pressures [Pa] at which the chosen law is off by more than 25 %.")
-        .def_property_readonly("untrusted", [](const SurfaceCheck& c) { return toArray(c.untrusted()); },
-                               "The pressures [Pa] where the exact answer is not to be trusted (not counted).")
-        .def_readonly("exact_warning", &SurfaceCheck::exactWarning,
-                      "A map solved padded near complete contact: that its exact h_c (and the ratios) are not "
-                      "to be trusted at some pressures, and to solve it mirrored; empty otherwise.")
+        .def_readonly("chosen_law", &SurfaceCheck::chosenLaw,
+                      "The law judged (the conductance given, or the default).")
+        .def_readonly(
+            "closest_law", &SurfaceCheck::closestLaw,
+            "The law with the smallest worst factor over the counted pressures ('' when none is counted).")
+        .def_property_readonly(
+            "closest_holds", &SurfaceCheck::closestHolds,
+            "Whether the closest law is within 25 % at every counted pressure (then it is the law "
+            "to use; else none is).")
+        .def_property_readonly(
+            "chosen_misses", [](const SurfaceCheck& c) { return toArray(c.chosenMisses()); },
+            "The counted pressures [Pa] at which the chosen law is off by more than 25 %.")
+        .def_property_readonly(
+            "chosen_unloading_misses",
+            [](const SurfaceCheck& c) { return toArray(c.chosenUnloadingMisses()); },
+            "With unload_from: the counted pressures [Pa] at which the chosen law's h on unloading is off "
+            "the exact "
+            "unloading conductance by more than 25 % (empty without a peak).")
+        .def_property_readonly(
+            "untrusted", [](const SurfaceCheck& c) { return toArray(c.untrusted()); },
+            "The pressures [Pa] where the exact answer is not to be trusted (not counted).")
+        .def_readonly(
+            "exact_warning", &SurfaceCheck::exactWarning,
+            "A map solved padded near complete contact: that its exact h_c (and the ratios) are not "
+            "to be trusted at some pressures, and to solve it mirrored; empty otherwise.")
         .def_readonly("small_cell_note", &SurfaceCheck::smallCellNote,
-                      "A profile or spectrum checked where the longer period takes part (below p/(E' h') = 1e-2): that its exact answer there is a "
-                      "small periodic cell's, which may be too high for a large joint; empty otherwise (and for a map).")
+                      "A profile or spectrum checked where the longer period takes part (below p/(E' h') = "
+                      "1e-2): that its exact answer there is a "
+                      "small periodic cell's, which may be too high for a large joint; empty otherwise (and "
+                      "for a map).")
         .def_readonly("seconds", &SurfaceCheck::seconds, "How long the check took [s].")
         .def("report", &SurfaceCheck::report, "The table a terminal or a log shows.")
         .def("csv", &SurfaceCheck::csv, "The numbers as CSV (the CLI's --check).")

@@ -72,12 +72,15 @@ def test_check_unloads_from_a_peak_as_the_cli(cli):
     R = c.chosen_unloading_ratio / (c.ratios[c.chosen_law] * c.checked_exact / c.exact_unloading_h_per_k)
     assert R[0] > R[1] > 1.05, R  # 2e7 and 6e7 Pa unloaded from 3e8
     assert "unloaded from 3e+08 Pa" in c.report()
+    off = [p for p, r in zip(c.pressures, c.chosen_unloading_ratio) if abs(r - 1) > 0.25]
+    np.testing.assert_array_equal(c.chosen_unloading_misses, off)
     cli_numbers = cli_check(cli, "--synthesize", "64", "--pressures", "2e7,6e7", "--check-periods", "1",
                             "--E", "179.52e9,179.52e9", "--nu", "0.32,0.32", "--Sy", "0.2e9,0.2e9", "--unload-from", "3e8")
     np.testing.assert_array_equal(c.exact_unloading_h_per_k, cli_numbers["h_per_k_checked_surface_unloading"])
     np.testing.assert_array_equal(c.chosen_unloading_ratio, cli_numbers["ratio_chosen_unloading"])
     plain = rc.check(**kw)
     assert plain.unload_from is None and len(plain.exact_unloading_h_per_k) == 0
+    assert len(plain.chosen_unloading_misses) == 0
     with pytest.raises(rc.ParameterError, match="^unload_from"):
         rc.check(**kw, unload_from=1e9)  # at or above H = 0.57 GPa
 

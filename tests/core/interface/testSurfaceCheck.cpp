@@ -800,8 +800,34 @@ TEST(SurfaceCheck, UnloadedFromAPeakTheExactAnswerIsTheLoadPath)
     EXPECT_NE(c.report().find("its unloading branch"), std::string::npos) << c.report();
     EXPECT_NE(c.report().find("unloaded from 1.6e+08 Pa"), std::string::npos) << c.report();
     EXPECT_NE(c.csv().find(",h_per_k_checked_surface_unloading,ratio_chosen_unloading\n"), std::string::npos);
+    // The verdict on unloading: the counted pressures where the law's h on unloading is off by
+    // more than 25 %, said in the report.
+    std::vector<double> want;
+    for (std::size_t i = 0; i < 2; ++i) {
+        if (std::fabs(c.chosenUnloadingRatio[i] - 1.0) > checkTolerance) {
+            want.push_back(c.pressures[i]);
+        }
+    }
+    EXPECT_EQ(c.chosenUnloadingMisses(), want);
+    EXPECT_NE(c.report().find(want.empty()
+                                  ? "unloaded from 1.6e+08 Pa, it is within 25 % of the exact unloading"
+                                  : "unloaded from 1.6e+08 Pa, it misses the exact unloading conductance"),
+              std::string::npos)
+        << c.report();
+    SurfaceCheck both = c; // one pressure within, one beyond: the count says which
+    both.chosenUnloadingRatio = {1.1, 1.4};
+    EXPECT_EQ(both.chosenUnloadingMisses(), std::vector<double>{1e8});
+    EXPECT_NE(
+        both.report().find("misses the exact unloading conductance by more than 25 % at 1 of 2 counted"),
+        std::string::npos)
+        << both.report();
+    both.exactTrusted = {true, false}; // an untrusted pressure counts for no verdict
+    EXPECT_TRUE(both.chosenUnloadingMisses().empty());
     // Without it, none of that; a peak at the cap or without one is refused, named as the options say.
-    EXPECT_FALSE(checkSurface(spec, small()).unloadFrom.has_value());
+    const SurfaceCheck plain = checkSurface(spec, small());
+    EXPECT_FALSE(plain.unloadFrom.has_value());
+    EXPECT_TRUE(plain.chosenUnloadingMisses().empty());
+    EXPECT_EQ(plain.report().find("exact unloading conductance"), std::string::npos);
     o.unloadFrom = 2e8;
     o.names.unloadFrom = "--unload-from";
     EXPECT_THROW(

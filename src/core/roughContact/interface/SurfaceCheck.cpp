@@ -136,6 +136,18 @@ std::vector<double> SurfaceCheck::chosenMisses() const
     return out;
 }
 
+std::vector<double> SurfaceCheck::chosenUnloadingMisses() const
+{
+    std::vector<double> out;
+    for (std::size_t i = 0; i < chosenUnloadingRatio.size(); ++i) {
+        const bool counted = i >= exactTrusted.size() || exactTrusted[i];
+        if (counted && !(std::fabs(chosenUnloadingRatio[i] - 1.0) <= checkTolerance)) {
+            out.push_back(pressures[i]);
+        }
+    }
+    return out;
+}
+
 std::vector<double> SurfaceCheck::untrusted() const
 {
     std::vector<double> out;
@@ -344,6 +356,19 @@ std::string SurfaceCheck::report() const
            << countedPressures << " counted pressures";
     }
     os << " (" << number(seconds) << " s)\n";
+    if (unloadFrom && countedPressures > 0) {
+        const std::vector<double> unloadingMisses = chosenUnloadingMisses();
+        os << "  unloaded from " << number(*unloadFrom) << " Pa, it";
+        if (unloadingMisses.empty()) {
+            os << " is within " << tolerance
+               << " % of the exact unloading conductance at every counted pressure\n";
+        } else {
+            os << " misses the exact unloading conductance by more than " << tolerance << " % at "
+               << unloadingMisses.size() << " of " << countedPressures
+               << " counted pressures: for this joint, model boundaryElement with a cap follows the exact "
+                  "unloading\n";
+        }
+    }
     if (!exactWarning.empty()) {
         os << "  warning: " << exactWarning << "\n";
     }

@@ -201,13 +201,17 @@ struct SurfaceCheck {
     /// The pressures at which the chosen law misses the exact conductance by more than
     /// checkTolerance (counted pressures only).
     std::vector<double> chosenMisses() const;
+    /// With a peak (unloadFrom): the counted pressures at which the chosen law's h on unloading
+    /// misses the exact unloading conductance by more than checkTolerance; empty without one.
+    std::vector<double> chosenUnloadingMisses() const;
     /// The pressures whose exact answer is not trusted (exactTrusted false).
     std::vector<double> untrusted() const;
     /// Whether the closest law holds (within checkTolerance) at every counted pressure: then it is
     /// the law to use; else no law does.
     bool closestHolds() const;
     /// A table for a log or a terminal: the exact h_c/k_s per pressure with the seeds' spread,
-    /// each law's ratio, the closest law and the chosen law's verdict (and exactWarning).
+    /// each law's ratio, the closest law and the chosen law's verdict (and exactWarning); with a
+    /// peak, its verdict on unloading too.
     std::string report() const;
     /// The numbers as CSV: nominal_pressure [Pa], nominal_pressure_per_Eprime (F/(A_n E')),
     /// h_per_k_answer and the exact answer it implies (h_per_k_answer_exact_low, _high), the
