@@ -9,8 +9,7 @@ the default law beyond the engineering range, elastic, the heavy-load study's ra
 heaviest load it measured. `run` writes src/core/roughContact/thermal/MeasuredAccuracyTable.inc,
 the bands as a page's table, and the default law's bands by regime, with its unloading branch's
 from the unloading study and the measured map's (unloadingMap), as README.md's "Which h to trust"
-(`trust`); `check` fails when they
-are not what the studies' data give.
+(`trust`); `check` fails when they are not what the studies' data give.
 """
 import math
 import os
@@ -236,7 +235,7 @@ def unloading_row(ctx, steel):
     held = (f"within {100 * BAND:.0f} % at all {len(ratio)} points" if not outside else
             f"outside {100 * BAND:.0f} % at {outside} of {len(ratio)} points")
     if outside:
-        todo = (f"wider than 25 % (R {held}): `--check --unload-from PMAX` on your surface, or "
+        todo = (f"wider than {100 * BAND:.0f} % (R {held}): `--check --unload-from PMAX` on your surface, or "
                 "`model boundaryElement;`")
     else:
         todo = (f"sign h with the loading row's band at P times R's (R {held}); other peaks or P/P_max: "

@@ -11,6 +11,7 @@ the map, direction both). One map is one surface: no seeds. The table is
 validation/data/unloadingMap.csv; docs/validation/unloading.md reads the page's tables.
 """
 from .. import materials, pages, solves, surrogates
+from ..fitting import BAND
 from ..tables import Table
 from .engineeringRange import X3P
 from .unloading import FRACTIONS, Ratios, branch, pair_label
@@ -18,7 +19,6 @@ from .unloading import FRACTIONS, Ratios, branch, pair_label
 DATA = ["unloadingMap.csv"]
 KEYS = ["surface", "regime", "peak", "branch"]
 SURFACE = "x3p"
-BAND = 0.25  # the issue's band on R / exact R
 
 
 def design(ctx):
