@@ -106,4 +106,44 @@ def outputs(ctx):
               [[f"{given.bandwidth:.3f}", f"{given.fine_hurst:.2f}", f"{given.m:.3f}", f"{given.gradient:.3f}",
                 f"{within} of {len(q)}", pages.span(q)]])
     out.text("summary.csv", Table(list(summary[0].keys()), summary).text())
+    out.figure("ratios", lambda path: draw_ratios(ctx, pts, R, path))
     return out
+
+
+def draw_ratios(ctx, pts, R, path):
+    """The branch's R against the exact R: the unloading study's counted points (grey) and the
+    map's (by pair), with the 25 % band."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import matplotlib.ticker
+    from .unloading import COUNTED
+    study = [r for r in pages.generated(ctx, "unloading", "summary.csv").rows
+             if r["role"] in COUNTED and float(r["fraction"]) < 1]
+    fig, ax = plt.subplots(figsize=(5.6, 5.0))
+    ax.loglog([float(r["unloading_over_loading_h"]) for r in study], [float(r["branch_ratio"]) for r in study],
+              ".", color="0.7", label=f"synthesized spectra, unloading study ({len(study)})")
+    for k, regime in enumerate(dict.fromkeys(r["regime"] for r in pts.rows)):
+        mine = [i for i, r in enumerate(pts.rows) if r["regime"] == regime]
+        ax.loglog([pts.exact[i] for i in mine], [R[i] for i in mine], "o", color=f"C{k}",
+                  label=f"X3P map: {pair_label(regime)}")
+    lo, hi = 0.7, 7.0
+    line = [lo, hi]
+    ax.loglog(line, line, "k-", lw=0.8)
+    ax.loglog(line, [v * (1 + BAND) for v in line], "k:", lw=0.8, label=f"{100 * BAND:.0f} % of the exact R")
+    ax.loglog(line, [v * (1 - BAND) for v in line], "k:", lw=0.8)
+    ax.set_xlim(lo, hi)
+    ax.set_ylim(lo, hi)
+    ticks = [0.8, 1, 1.5, 2, 3, 4, 6]
+    for axis in (ax.xaxis, ax.yaxis):
+        axis.set_major_locator(matplotlib.ticker.FixedLocator(ticks))
+        axis.set_major_formatter(matplotlib.ticker.FixedFormatter([f"{t:g}" for t in ticks]))
+        axis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+    ax.set_xlabel("exact R = h_unloading / h_loading")
+    ax.set_ylabel("the default law's branch R")
+    ax.set_title("The unloading branch on a measured map it never saw", fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=80)
+    plt.close(fig)
