@@ -255,6 +255,9 @@ void contactInterfaces::checkOnce
     // The faces' pressures may lie beyond what the check can solve: then it
     // checks the nearer end of its range and says so.
     options.movePressuresIntoRange = spec.checkPressures.empty();
+    // checkUnloadFrom: also unloaded from the joint's peak, and judged there.
+    options.names.unloadFrom = "checkUnloadFrom";
+    options.unloadFrom = spec.checkUnloadFrom;
     options.log = [](const std::string& line)
     {
         Info<< "    " << line.c_str() << endl;
@@ -282,26 +285,11 @@ void contactInterfaces::checkOnce
                 << dictFile << ": check yes: "
                 << c.exactWarning.c_str() << endl;
         }
-        const std::vector<double> misses = c.chosenMisses();
-        if (!misses.empty())
+        for (const std::string& m : c.missWarnings("checkUnloadFrom"))
         {
             WarningInFunction
                 << who.c_str() << ": contact entry '" << name << "' in "
-                << dictFile << ": the conductance law "
-                << c.chosenLaw.c_str() << " is off the exact conductance"
-                << " of this surface by more than "
-                << label(roughContact::checkTolerance*100 + 0.5)
-                << " % at " << label(misses.size()) << " of "
-                << label(c.pressures.size() - c.untrusted().size())
-                << " counted pressures; "
-                << (
-                       c.closestHolds()
-                     ? "the closest law here is " + c.closestLaw
-                       + " (within 25 % at every counted pressure)"
-                     : std::string("no law holds at every counted pressure:")
-                       + " the exact model (model boundaryElement) is the"
-                       + " answer to trust here"
-                   ).c_str()
+                << dictFile << ": " << m.c_str()
                 << " (the check's table is above)" << endl;
         }
     }

@@ -12,7 +12,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -476,6 +478,26 @@ TEST(InterfaceSpecReader, CheckPressuresAreTheChecksPressures)
     EXPECT_NE(messageOf([&] { readInterfaceSpec(c); }, "--checkPressures").find("above 0"), std::string::npos);
     c.set("checkPressures", std::vector<double>{1e6}).set("check", false);
     EXPECT_NE(messageOf([&] { readInterfaceSpec(c); }, "--checkPressures").find("needs check yes"), std::string::npos);
+}
+
+TEST(InterfaceSpecReader, CheckUnloadFromIsThePeakTheCheckUnloadsFrom)
+{
+    // checkUnloadFrom P: unset by default (the check loads only); a pressure above 0 with check
+    // yes; otherwise an error naming the entry.
+    SpecValues c = contact();
+    c.set("check", true);
+    EXPECT_FALSE(readInterfaceSpec(c).checkUnloadFrom.has_value());
+    c.set("checkUnloadFrom", 5e7);
+    EXPECT_EQ(readInterfaceSpec(c).checkUnloadFrom, std::optional<double>(5e7));
+    c.set("checkUnloadFrom", 0.0);
+    EXPECT_NE(messageOf([&] { readInterfaceSpec(c); }, "--checkUnloadFrom").find("above 0"),
+              std::string::npos);
+    c.set("checkUnloadFrom", std::numeric_limits<double>::infinity());
+    EXPECT_NE(messageOf([&] { readInterfaceSpec(c); }, "--checkUnloadFrom").find("above 0"),
+              std::string::npos);
+    c.set("checkUnloadFrom", 5e7).set("check", false);
+    EXPECT_NE(messageOf([&] { readInterfaceSpec(c); }, "--checkUnloadFrom").find("needs check yes"),
+              std::string::npos);
 }
 
 // A source that can say where an entry is written (as a dictionary gives its line).

@@ -821,8 +821,17 @@ TEST(SurfaceCheck, UnloadedFromAPeakTheExactAnswerIsTheLoadPath)
         both.report().find("misses the exact unloading conductance by more than 25 % at 1 of 2 counted"),
         std::string::npos)
         << both.report();
+    // The warnings a front-end gives: one for the unloading miss, naming the peak as it is asked.
+    const std::vector<std::string> warned = both.missWarnings("checkUnloadFrom");
+    ASSERT_EQ(warned.size(), c.chosenMisses().empty() ? 1U : 2U);
+    EXPECT_NE(warned.back().find(
+                  "unloaded from checkUnloadFrom 1.6e+08 Pa, the conductance law fittedElastoPlastic is "
+                  "off the exact unloading conductance of this surface by more than 25 % at 1 of 2"),
+              std::string::npos)
+        << warned.back();
     both.exactTrusted = {true, false}; // an untrusted pressure counts for no verdict
     EXPECT_TRUE(both.chosenUnloadingMisses().empty());
+    EXPECT_EQ(both.missWarnings("checkUnloadFrom").size(), c.chosenMisses().empty() ? 0U : 1U);
     // Without it, none of that; a peak at the cap or without one is refused, named as the options say.
     const SurfaceCheck plain = checkSurface(spec, small());
     EXPECT_FALSE(plain.unloadFrom.has_value());

@@ -157,6 +157,10 @@ struct InterfaceSpec {
     /// > 0); empty: the front-end's (the condition: the pressures the patch carries at its first
     /// evaluation). ContactInterface does not use it.
     std::vector<double> checkPressures;
+    /// Front-ends, with check: the peak [Pa] the joint carried; the check also unloads each
+    /// surface from it and judges the chosen law on unloading (SurfaceCheckOptions::unloadFrom).
+    /// Unset: loading only. ContactInterface does not use it.
+    std::optional<double> checkUnloadFrom;
     /// Front-ends: the threads of the boundary-element solves of this entry's table and check
     /// (setThreads, parallel/Threads.hpp); unset: the front-end's default (the condition: 1 in a
     /// parallel run, where every core has a rank, else what the machine has). ContactInterface

@@ -162,11 +162,32 @@ const std::vector<std::string>& gasEntries()
 
 const std::vector<std::string>& interfaceEntries()
 {
-    static const std::vector<std::string> names{
-        "model",     "surface",        "surfaces",  "side1",    "side2",   "conductance",     "microhardness",
-        "vickers",   "minPressure",    "maxPressure", "pointsPerDecade", "synthesize", "seed", "periodic",
-        "mirror",    "detrend",   "hardness",       "hardnessFromYield", "gap", "check", "checkPeriods",
-        "checkPressures", "threads", "tableRanks", "loadHistory"};
+    static const std::vector<std::string> names{"model",
+                                                "surface",
+                                                "surfaces",
+                                                "side1",
+                                                "side2",
+                                                "conductance",
+                                                "microhardness",
+                                                "vickers",
+                                                "minPressure",
+                                                "maxPressure",
+                                                "pointsPerDecade",
+                                                "synthesize",
+                                                "seed",
+                                                "periodic",
+                                                "mirror",
+                                                "detrend",
+                                                "hardness",
+                                                "hardnessFromYield",
+                                                "gap",
+                                                "check",
+                                                "checkPeriods",
+                                                "checkPressures",
+                                                "checkUnloadFrom",
+                                                "threads",
+                                                "tableRanks",
+                                                "loadHistory"};
     return names;
 }
 
@@ -468,6 +489,18 @@ void readInterfaceSettings(const SpecSource& source, InterfaceSpec& spec)
                                                ": give nominal pressures above 0 in Pa");
             }
         }
+    }
+    if (source.has("checkUnloadFrom")) {
+        const std::string name = source.name("checkUnloadFrom");
+        if (!spec.check) {
+            throw ParameterError(name, "is the peak the check unloads from; it needs check yes");
+        }
+        const double peak = source.number("checkUnloadFrom");
+        if (!(peak > 0.0) || !std::isfinite(peak)) {
+            throw ParameterError(name, "is " + limits::valueText(peak, "Pa") +
+                                           ": give the joint's peak nominal pressure above 0 in Pa");
+        }
+        spec.checkUnloadFrom = peak; // below the cap: the check says so, naming the entry
     }
     if (source.has("threads")) {
         const std::uint64_t t = source.whole("threads");

@@ -148,6 +148,35 @@ std::vector<double> SurfaceCheck::chosenUnloadingMisses() const
     return out;
 }
 
+std::vector<std::string> SurfaceCheck::missWarnings(const std::string& peakName) const
+{
+    std::vector<std::string> out;
+    const int tolerance = int(checkTolerance * 100 + 0.5);
+    const std::size_t counted = pressures.size() - untrusted().size();
+    const std::vector<double> misses = chosenMisses();
+    if (!misses.empty()) {
+        std::ostringstream os;
+        os << "the conductance law " << chosenLaw
+           << " is off the exact conductance of this surface by more than " << tolerance << " % at "
+           << misses.size() << " of " << counted << " counted pressures; "
+           << (closestHolds() ? "the closest law here is " + closestLaw + " (within " +
+                                    std::to_string(tolerance) + " % at every counted pressure)"
+                              : std::string("no law holds at every counted pressure: the exact model (model "
+                                            "boundaryElement) is the answer to trust here"));
+        out.push_back(os.str());
+    }
+    const std::vector<double> unloading = chosenUnloadingMisses();
+    if (unloadFrom && !unloading.empty()) {
+        std::ostringstream os;
+        os << "unloaded from " << peakName << " " << number(*unloadFrom) << " Pa, the conductance law "
+           << chosenLaw << " is off the exact unloading conductance of this surface by more than "
+           << tolerance << " % at " << unloading.size() << " of " << counted
+           << " counted pressures; model boundaryElement with a cap follows the exact unloading";
+        out.push_back(os.str());
+    }
+    return out;
+}
+
 std::vector<double> SurfaceCheck::untrusted() const
 {
     std::vector<double> out;

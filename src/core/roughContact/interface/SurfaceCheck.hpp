@@ -204,6 +204,11 @@ struct SurfaceCheck {
     /// With a peak (unloadFrom): the counted pressures at which the chosen law's h on unloading
     /// misses the exact unloading conductance by more than checkTolerance; empty without one.
     std::vector<double> chosenUnloadingMisses() const;
+    /// What a front-end warns of after the check, one message each (none when the chosen law
+    /// holds): the chosen law off the exact conductance at counted pressures, with the closest
+    /// law if that one holds; with a peak, off the exact unloading conductance (`peakName`: how
+    /// the front-end names the peak, as "checkUnloadFrom").
+    std::vector<std::string> missWarnings(const std::string& peakName) const;
     /// The pressures whose exact answer is not trusted (exactTrusted false).
     std::vector<double> untrusted() const;
     /// Whether the closest law holds (within checkTolerance) at every counted pressure: then it is
