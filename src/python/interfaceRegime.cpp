@@ -59,34 +59,26 @@ void bindInterfaceRegime(py::module_& m)
                                       vectorize(P, "pressures", [&](double p) { return band(p, true); }));
             },
             py::arg("pressures"),
-            "(low, high): the smallest and largest h/exact the studies measured for this interface's law at "
-            "the "
-            "nominal pressures [Pa] (docs/checking.md); NaN where nothing was measured, for P <= 0 and for "
-            "the "
-            "exact model.")
+            "(low, high): the smallest and largest h/exact the studies measured for this interface's law "
+            "at the nominal pressures [Pa] (docs/checking.md); NaN where nothing was measured, for P <= 0 "
+            "and for the exact model.")
         .def(
             "unloading_accuracy_band",
             [](const ContactInterface& ci, const py::object& peaks) {
-                const InterfaceRegime& r = ci.regime();
-                const bool branch =
-                    ci.remembersLoad() && ci.unloading().empty() && r.law == "fittedElastoPlastic";
                 const auto band = [&](double peak, bool high) {
-                    const auto b = branch && peak > 0.0 ? r.unloadingBand(peak, peak) : std::nullopt;
+                    const auto b =
+                        ci.lawUnloads() && peak > 0.0 ? ci.regime().unloadingBand(peak, peak) : std::nullopt;
                     return b ? (high ? b->high : b->low) : std::numeric_limits<double>::quiet_NaN();
                 };
                 return py::make_tuple(vectorize(peaks, "peaks", [&](double p) { return band(p, false); }),
                                       vectorize(peaks, "peaks", [&](double p) { return band(p, true); }));
             },
             py::arg("peaks"),
-            "(low, high): the smallest and largest R / exact R the unloading study measured for the default "
-            "law's "
-            "unloading branch at joints loaded to the peak pressures [Pa] (docs/checking.md): h below the "
-            "peak "
-            "carries it on top of accuracy_band at the pressure of the moment; NaN where it was not "
-            "measured, "
-            "for peak <= 0, and where the interface has no unloading branch (another law, no cap, "
-            "loadHistory "
-            "off, or the exact model's own unloading curves).");
+            "(low, high): the smallest and largest R / exact R the unloading studies measured for the "
+            "default law's unloading branch at joints loaded to the peak pressures [Pa] (docs/checking.md): "
+            "h below the peak carries it on top of accuracy_band at the pressure of the moment; NaN where it "
+            "was not measured, for peak <= 0, and where the interface has no unloading branch (another law, "
+            "no cap, loadHistory off, or the exact model's own unloading curves).");
 }
 
 } // namespace roughcontact_py

@@ -258,6 +258,9 @@ public:
     /// curves) or a law with an unloading branch (ConductanceLaw::unloads): a joint below the
     /// heaviest load it carried then conducts as they say.
     bool remembersLoad() const noexcept { return !unloading_.empty() || lawUnloads(); }
+    /// True with loadHistory when below a peak h_c follows the law's unloading branch (the
+    /// default law with a cap: the branch whose measured band InterfaceRegime::unloadingBand gives).
+    bool lawUnloads() const noexcept { return loadHistory_ && law_ && law_->unloads(); }
     /// The spec's loadHistory: a front-end keeps each face's peak pressure (and gives it to
     /// couple(), CouplingInputs::peakPressure) when it is on.
     bool loadHistory() const noexcept { return loadHistory_; }
@@ -331,8 +334,6 @@ private:
     bool cappedTable_ = false; ///< boundaryElement with a cap (for loadHistoryNote)
     /// A multi-scale model's conductance law (its unloading branch); none for boundaryElement.
     std::unique_ptr<ConductanceLaw> law_;
-
-    bool lawUnloads() const noexcept { return loadHistory_ && law_ && law_->unloads(); }
 
     /// Builds gap_ from spec.gap (after the table).
     void buildGap(const InterfaceSpec& spec);

@@ -151,7 +151,7 @@ std::string FaceRegimeLog::describe(const ContactInterface& iface, const FaceSum
         if (!iface.unloading().empty()) {
             os << "h_c from the exact unloading curves, interpolated between their peaks (docs/theory.md "
                   "§7.6)";
-        } else if (iface.remembersLoad() && regime.law == "fittedElastoPlastic") {
+        } else if (iface.lawUnloads()) {
             const auto band = regime.unloadingBand(all.unloadingPeakMin, all.unloadingPeakMax);
             os << "h_c is the loading h_c at P times the unloading branch's R (docs/theory.md §5.7c); "
                << regime.describeUnloading(all.unloadingPeakMin, all.unloadingPeakMax);
@@ -159,6 +159,7 @@ std::string FaceRegimeLog::describe(const ContactInterface& iface, const FaceSum
                 os << (band->outside == 0 ? ": sign h there with the band at P times R's"
                                           : ": wider than 25 % there; check your surface with its peak (the "
                                             "check's --unload-from) or take model boundaryElement");
+                // (1e-9: the table's leastFraction is printed to 4 digits; an equal depth is no deeper.)
                 if (all.unloadingFractionMin < band->leastFraction * (1.0 - 1e-9)) {
                     os << " (unloaded deeper than measured)";
                 }
